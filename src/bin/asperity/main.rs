@@ -1,0 +1,2 @@
+//! The `asperity` command line. A thin layer: parsing, printing, exit codes.
+fn main() {}

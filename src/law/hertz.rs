@@ -1,0 +1,130 @@
+//! Hertz (1882): elastic sphere on a flat, no adhesion.
+//!
+//! `a^2 = R delta`, `P = (4/3) E* R^(1/2) delta^(3/2) = K a^3 / R` for
+//! `delta > 0`, zero otherwise (Johnson, *Contact Mechanics*, eq. 4.22-4.23).
+
+use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use crate::error::{positive, Result};
+
+/// Hertz law for a sphere of radius `R` (m) with contact modulus `E*` (Pa).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hertz {
+    radius: f64,
+    /// `(4/3) E* R^(1/2)` (N/m^(3/2)).
+    stiffness: f64,
+}
+
+impl Hertz {
+    /// Sphere radius `R` (m) and contact modulus `E*` (Pa), both finite and > 0.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfRange`] naming `radius` or `contact_modulus`.
+    pub fn new(radius: f64, contact_modulus: f64) -> Result<Self> {
+        positive("radius", radius)?;
+        positive("contact_modulus", contact_modulus)?;
+        Ok(Hertz {
+            radius,
+            stiffness: 4.0 / 3.0 * contact_modulus * radius.sqrt(),
+        })
+    }
+
+    /// Load `P = (4/3) E* R^(1/2) delta^(3/2)` (N), 0 for `delta <= 0`.
+    #[inline]
+    pub fn load_at(&self, delta: f64) -> f64 {
+        if delta > 0.0 {
+            self.stiffness * delta * delta.sqrt()
+        } else {
+            0.0
+        }
+    }
+
+    /// Contact radius `a = (R delta)^(1/2)` (m), 0 for `delta <= 0`.
+    #[inline]
+    pub fn radius_at(&self, delta: f64) -> f64 {
+        if delta > 0.0 {
+            (self.radius * delta).sqrt()
+        } else {
+            0.0
+        }
+    }
+}
+
+impl AsperityLaw for Hertz {
+    fn name(&self) -> &'static str {
+        "hertz"
+    }
+
+    #[inline]
+    fn state(&self, delta: f64, _branch: Branch) -> ContactState {
+        ContactState {
+            load: self.load_at(delta),
+            radius: self.radius_at(delta),
+        }
+    }
+
+    #[inline]
+    fn load(&self, delta: f64, _branch: Branch) -> f64 {
+        self.load_at(delta)
+    }
+
+    fn attach_interference(&self) -> f64 {
+        0.0
+    }
+
+    fn detach_interference(&self) -> f64 {
+        0.0
+    }
+
+    fn cutoff_interference(&self) -> f64 {
+        0.0
+    }
+
+    fn breakpoints(&self, _branch: Branch) -> Vec<f64> {
+        vec![0.0]
+    }
+
+    /// Load control: the most tensile load on the curve is 0 at `delta = 0`.
+    /// Displacement control: nothing snaps (`None`).
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        match control {
+            Control::Load => Some(Instability {
+                load: 0.0,
+                interference: 0.0,
+                radius: 0.0,
+            }),
+            Control::Displacement => None,
+        }
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn textbook_values() {
+        // R = 1 mm, E* = 100 GPa, delta = 1 um: a = 31.6 um, P = (4/3) 1e11 sqrt(1e-3) 1e-9.
+        let h = Hertz::new(1e-3, 1e11).unwrap();
+        let s = h.state(1e-6, Branch::Approach);
+        assert!((s.radius - 1e-9f64.sqrt()).abs() < 1e-18);
+        let p = 4.0 / 3.0 * 1e11 * 1e-3f64.sqrt() * 1e-9;
+        assert!((s.load / p - 1.0).abs() < 1e-14);
+        // P = K a^3 / R
+        let k = 4.0 / 3.0 * 1e11;
+        assert!((s.load / (k * s.radius.powi(3) / 1e-3) - 1.0).abs() < 1e-13);
+        assert_eq!(h.state(-1e-9, Branch::Retract), ContactState::FREE);
+    }
+
+    #[test]
+    fn rejects_bad_input() {
+        assert_eq!(Hertz::new(0.0, 1.0).unwrap_err().field(), Some("radius"));
+        assert_eq!(
+            Hertz::new(1.0, f64::NAN).unwrap_err().field(),
+            Some("contact_modulus")
+        );
+    }
+}

@@ -1,0 +1,255 @@
+//! Single-asperity laws: a sphere of radius `R` against a flat.
+//!
+//! Every law implements [`AsperityLaw`], the interface the rough-surface
+//! integrator and the Monte Carlo summation call millions of times. A law
+//! gives the load `P` (N, > 0 compressive) and contact radius `a` (m) at an
+//! interference `delta` (m, > 0 when the undeformed bodies would overlap) on a
+//! [`Branch`]: adhesive laws are multi-valued, and which value applies depends
+//! on the loading history.
+//!
+//! Under displacement control (the rough-surface case: a rigid flat at a
+//! set separation), an asperity approaching from far away stays detached
+//! until the *attach* interference (jump-in), then follows the stable contact
+//! branch; on retraction it stays attached down to the *detach* interference
+//! (jump-out), below which it is free again. [`AsperityLaw::state_after`]
+//! gives the state for any approach-then-retract history.
+//!
+//! | law | module | attach | detach | pull-off (load control) |
+//! |---|---|---|---|---|
+//! | Hertz | [`hertz`] | 0 | 0 | 0 |
+//! | Bradley (rigid, LJ 9-3) | [`bradley`] | none (rigid) | none | `-2 pi w R` at `delta = 0` |
+//! | DMT | [`dmt`] | 0 | 0 | `-2 pi w R` |
+//! | JKR | [`jkr`] | 0 | `-(3/4)(pi^2 w^2 R/E*^2)^(1/3)` | `-1.5 pi w R` |
+
+pub mod bradley;
+pub mod dmt;
+pub mod hertz;
+pub mod jkr;
+
+pub use bradley::Bradley;
+pub use dmt::Dmt;
+pub use hertz::Hertz;
+pub use jkr::Jkr;
+
+use crate::error::{Error, Result};
+use crate::material::AsperityContact;
+use std::f64::consts::PI;
+use std::fmt;
+
+/// Which way the interference is moving.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Branch {
+    /// Interference increasing from far apart: the asperity is detached until
+    /// it jumps in.
+    Approach,
+    /// Interference decreasing after deep contact: the asperity stays attached
+    /// until it jumps out.
+    Retract,
+}
+
+/// What the experiment holds fixed when the asperity is pulled off.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Control {
+    /// Load held, interference free: pull-off at the most tensile load.
+    Load,
+    /// Interference held (rigid machine): jump-out where the stable branch ends.
+    Displacement,
+}
+
+/// Load and contact radius of one asperity.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactState {
+    /// Load `P` (N): > 0 compressive, < 0 tensile (adhesive pull).
+    pub load: f64,
+    /// Contact radius `a` (m); 0 when not in contact (an adhesive force may
+    /// still act, e.g. the Maugis-Dugdale non-contact branch).
+    pub radius: f64,
+}
+
+impl ContactState {
+    /// The detached state: no load, no contact.
+    pub const FREE: ContactState = ContactState {
+        load: 0.0,
+        radius: 0.0,
+    };
+
+    /// Contact area `pi a^2` (m^2).
+    pub fn area(&self) -> f64 {
+        PI * self.radius * self.radius
+    }
+
+    /// Whether the asperity is in contact (`a > 0`).
+    pub fn in_contact(&self) -> bool {
+        self.radius > 0.0
+    }
+}
+
+/// A point where the asperity snaps or is pulled off.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Instability {
+    /// Load at the instability (N), on the attached side.
+    pub load: f64,
+    /// Interference at the instability (m).
+    pub interference: f64,
+    /// Contact radius on the attached side (m).
+    pub radius: f64,
+}
+
+/// A single-asperity contact law. Object-safe, `Send + Sync`.
+///
+/// Evaluation never fails and never returns NaN for finite `delta` below
+/// [`max_interference`](AsperityLaw::max_interference): inputs are validated
+/// when the law is built.
+pub trait AsperityLaw: Send + Sync + fmt::Debug {
+    /// Short lower-case name (`"hertz"`, `"jkr"`, ...).
+    fn name(&self) -> &'static str;
+
+    /// Load and contact radius at interference `delta` (m) on `branch`.
+    fn state(&self, delta: f64, branch: Branch) -> ContactState;
+
+    /// Load `P` (N) at `delta` on `branch`.
+    fn load(&self, delta: f64, branch: Branch) -> f64 {
+        self.state(delta, branch).load
+    }
+
+    /// State at `delta` (m) on retraction after the interference reached
+    /// `delta_max` (m) on approach (`delta <= delta_max`). An asperity that
+    /// never reached [`attach_interference`](AsperityLaw::attach_interference)
+    /// stays on the approach branch.
+    fn state_after(&self, delta: f64, delta_max: f64) -> ContactState {
+        if delta_max >= self.attach_interference() {
+            self.state(delta, Branch::Retract)
+        } else {
+            self.state(delta, Branch::Approach)
+        }
+    }
+
+    /// Values of `delta_max` at which [`state_after`](AsperityLaw::state_after)
+    /// changes character (default: the attach interference). Integrators
+    /// split their quadrature there.
+    fn history_breakpoints(&self) -> Vec<f64> {
+        vec![self.attach_interference()]
+    }
+
+    /// Interference (m) at which an approaching asperity jumps onto the
+    /// contact branch. `-inf` for laws with no hysteresis (Bradley).
+    fn attach_interference(&self) -> f64;
+
+    /// Interference (m) at which a retracting asperity jumps off (the end
+    /// of the attached branch). `-inf` for laws with no hysteresis.
+    fn detach_interference(&self) -> f64;
+
+    /// Interference (m) below which the load is exactly zero on every branch.
+    /// `-inf` for laws whose force never vanishes (Bradley).
+    fn cutoff_interference(&self) -> f64;
+
+    /// Largest admissible interference (m); `+inf` except for rigid laws
+    /// (Bradley: `z0`, where the gap closes and the load diverges).
+    fn max_interference(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    /// Interferences (m) where the load on `branch` is discontinuous or has a
+    /// discontinuous slope, ascending. Quadrature splits there.
+    fn breakpoints(&self, branch: Branch) -> Vec<f64>;
+
+    /// Pull-off: under [`Control::Load`] the most tensile load on the curve;
+    /// under [`Control::Displacement`] the point where the attached branch
+    /// ends and the asperity snaps off. `None` when nothing snaps (Hertz,
+    /// rigid Bradley under displacement control): the load then follows the
+    /// curve continuously back to zero.
+    fn pull_off(&self, control: Control) -> Option<Instability>;
+
+    /// Contact radius (m) at zero load on the attached branch; `None` for laws
+    /// with no adhesion (Hertz) or no contact radius (rigid Bradley).
+    fn zero_load_radius(&self) -> Option<f64>;
+}
+
+/// The laws the CLI and scenes can name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LawKind {
+    /// [`Hertz`]: no adhesion.
+    Hertz,
+    /// [`Bradley`]: rigid sphere, Lennard-Jones 9-3 surface force.
+    Bradley,
+    /// [`Dmt`]: Hertz profile plus a constant adhesive pull `2 pi w R`.
+    Dmt,
+    /// [`Jkr`]: short-range adhesion, surface energy inside the contact.
+    Jkr,
+}
+
+impl LawKind {
+    /// Every kind, in the order tables list them.
+    pub const ALL: [LawKind; 4] = [LawKind::Hertz, LawKind::Bradley, LawKind::Dmt, LawKind::Jkr];
+
+    /// Lower-case name as used on the command line and in scenes.
+    pub fn name(self) -> &'static str {
+        match self {
+            LawKind::Hertz => "hertz",
+            LawKind::Bradley => "bradley",
+            LawKind::Dmt => "dmt",
+            LawKind::Jkr => "jkr",
+        }
+    }
+
+    /// Parses a lower-case name.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `law` and listing the known names.
+    pub fn parse(name: &str) -> Result<Self> {
+        LawKind::ALL
+            .iter()
+            .copied()
+            .find(|k| k.name() == name)
+            .ok_or_else(|| {
+                let known: Vec<_> = LawKind::ALL.iter().map(|k| k.name()).collect();
+                Error::invalid("law", format!("unknown law {name:?}; known: {}", known.join(", ")))
+            })
+    }
+
+    /// Whether the law needs a work of adhesion `w > 0`.
+    pub fn is_adhesive(self) -> bool {
+        !matches!(self, LawKind::Hertz)
+    }
+
+    /// Builds the law for one asperity contact.
+    ///
+    /// # Errors
+    /// When the contact lacks what the law needs (e.g. `w = 0` for JKR).
+    pub fn build(self, contact: &AsperityContact) -> Result<Box<dyn AsperityLaw>> {
+        let r = contact.radius;
+        let e = contact.contact_modulus;
+        let w = contact.adhesion.work();
+        Ok(match self {
+            LawKind::Hertz => Box::new(Hertz::new(r, e)?),
+            LawKind::Bradley => Box::new(Bradley::new(r, w, contact.adhesion.range())?),
+            LawKind::Dmt => Box::new(Dmt::new(r, e, w)?),
+            LawKind::Jkr => Box::new(Jkr::new(r, e, w)?),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn law_kind_round_trips_and_rejects_unknown() {
+        for k in LawKind::ALL {
+            assert_eq!(LawKind::parse(k.name()).unwrap(), k);
+        }
+        let e = LawKind::parse("hertzz").unwrap_err();
+        assert_eq!(e.field(), Some("law"));
+        assert!(e.to_string().contains("hertzz"));
+    }
+
+    #[test]
+    fn laws_are_send_sync_and_object_safe() {
+        fn assert_send_sync<T: Send + Sync + ?Sized>() {}
+        assert_send_sync::<dyn AsperityLaw>();
+        let c = AsperityContact::gold_microswitch();
+        let laws: Vec<Box<dyn AsperityLaw>> =
+            LawKind::ALL.iter().map(|k| k.build(&c).unwrap()).collect();
+        assert_eq!(laws.len(), 4);
+    }
+}

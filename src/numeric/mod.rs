@@ -1,0 +1,4 @@
+//! Small numerical building blocks shared by the laws, the integrators and
+//! the solvers: bracketed root finding and minimisation.
+
+pub mod roots;
