@@ -25,6 +25,7 @@
 #![forbid(unsafe_code)]
 
 pub mod error;
+pub mod heights;
 pub mod law;
 pub mod material;
 pub mod numeric;

@@ -1,2 +1,79 @@
-//! The `asperity` command line. A thin layer: parsing, printing, exit codes.
-fn main() {}
+//! The `asperity` command line: a thin layer over the library. Parsing,
+//! printing and exit codes live here; no physics does.
+//!
+//! Exit codes: 0 success, 2 bad input (one line on stderr naming the
+//! argument), 1 a computation that failed.
+
+mod default_study;
+mod law_cmd;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Adhesive contact between rough surfaces.
+#[derive(Parser, Debug)]
+#[command(name = "asperity", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Dimensionless facts of one single-asperity law (Maugis units).
+    Law(law_cmd::LawArgs),
+}
+
+/// Result of a subcommand.
+pub type CliResult = std::result::Result<(), CliError>;
+
+/// A failure to report: bad input (exit 2) or a failed computation (exit 1).
+#[derive(Debug)]
+pub enum CliError {
+    /// Bad input: the message names the argument.
+    Usage(String),
+    /// The computation failed.
+    Failed(String),
+}
+
+impl From<asperity::Error> for CliError {
+    fn from(e: asperity::Error) -> Self {
+        match e {
+            asperity::Error::NoConvergence { .. } => CliError::Failed(e.to_string()),
+            _ => CliError::Usage(e.to_string()),
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+                let _ = e.print();
+                return ExitCode::SUCCESS;
+            }
+            // One line naming the argument, not clap's multi-line usage.
+            let text = e.render().to_string();
+            let first = text.lines().next().unwrap_or("error: bad arguments");
+            eprintln!("{first}");
+            return ExitCode::from(2);
+        }
+    };
+    let result = match cli.command {
+        None => default_study::run(),
+        Some(Command::Law(args)) => law_cmd::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(CliError::Usage(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(2)
+        }
+        Err(CliError::Failed(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(1)
+        }
+    }
+}
