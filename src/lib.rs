@@ -25,6 +25,7 @@
 #![forbid(unsafe_code)]
 
 pub mod error;
+pub mod gw;
 pub mod heights;
 pub mod law;
 pub mod material;
@@ -39,7 +40,5 @@ pub mod prelude {
     #[doc(no_inline)]
     pub use crate::law::{AsperityLaw, Branch, ContactState, Control, Instability, LawKind};
     #[doc(no_inline)]
-    pub use crate::material::{
-        contact_modulus, Adhesion, AsperityContact, MaugisScales, Material,
-    };
+    pub use crate::material::{contact_modulus, Adhesion, AsperityContact, Material, MaugisScales};
 }

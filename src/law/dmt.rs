@@ -10,9 +10,10 @@
 //! asperity just out of contact is the `lambda -> 0` limit of the
 //! Maugis–Dugdale non-contact branch; use that law when it matters.)
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, PowerForm};
 use crate::error::Result;
 use crate::material::MaugisScales;
+use std::f64::consts::PI;
 
 /// `A0 = 2^(1/3)`: DMT contact radius at zero load (Maugis units).
 pub const ZERO_LOAD_RADIUS: f64 = 1.259_921_049_894_873_2;
@@ -93,6 +94,15 @@ impl AsperityLaw for Dmt {
 
     fn zero_load_radius(&self) -> Option<f64> {
         Some(ZERO_LOAD_RADIUS * self.scales.radius)
+    }
+
+    /// `P = (4/3) E* R^(1/2) delta^(3/2) - 2 pi w R`, `pi a^2 = pi R delta`.
+    fn power_form(&self) -> Option<PowerForm> {
+        Some(PowerForm {
+            onset: 0.0,
+            load: vec![(self.stiffness, 1.5), (-2.0 * self.scales.load, 0.0)],
+            area: vec![(PI * self.radius, 1.0)],
+        })
     }
 }
 

@@ -3,8 +3,9 @@
 //! `a^2 = R delta`, `P = (4/3) E* R^(1/2) delta^(3/2) = K a^3 / R` for
 //! `delta > 0`, zero otherwise (Johnson, *Contact Mechanics*, eq. 4.22-4.23).
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, PowerForm};
 use crate::error::{positive, Result};
+use std::f64::consts::PI;
 
 /// Hertz law for a sphere of radius `R` (m) with contact modulus `E*` (Pa).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -98,6 +99,15 @@ impl AsperityLaw for Hertz {
 
     fn zero_load_radius(&self) -> Option<f64> {
         None
+    }
+
+    /// `P = (4/3) E* R^(1/2) delta^(3/2)`, `pi a^2 = pi R delta`.
+    fn power_form(&self) -> Option<PowerForm> {
+        Some(PowerForm {
+            onset: 0.0,
+            load: vec![(self.stiffness, 1.5)],
+            area: vec![(PI * self.radius, 1.0)],
+        })
     }
 }
 

@@ -163,6 +163,28 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     /// Contact radius (m) at zero load on the attached branch; `None` for laws
     /// with no adhesion (Hertz) or no contact radius (rigid Bradley).
     fn zero_load_radius(&self) -> Option<f64>;
+
+    /// The law as a sum of powers, when it is one on both branches (no
+    /// hysteresis): statistical integration then uses closed forms `F_n`.
+    /// `None` (the default) means "integrate numerically".
+    fn power_form(&self) -> Option<PowerForm> {
+        None
+    }
+}
+
+/// A law that is zero for `delta < onset` and, for `delta >= onset` on both
+/// branches, `P = sum c_k (delta - onset)^n_k`, `pi a^2 = sum d_k (delta -
+/// onset)^m_k`; every asperity past `onset` counts as a contact. Over heights
+/// `z = sigma s` at separation `d`, each term integrates to
+/// `c sigma^n F_n((d + onset)/sigma)` (Greenwood & Williamson 1966).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PowerForm {
+    /// Interference (m) where the terms start.
+    pub onset: f64,
+    /// Load terms `(c, n)`: `c (delta - onset)^n` in N, `c` in N/m^n.
+    pub load: Vec<(f64, f64)>,
+    /// Area terms `(d, m)`: `d (delta - onset)^m` in m^2.
+    pub area: Vec<(f64, f64)>,
 }
 
 /// The laws the CLI and scenes can name.
@@ -203,7 +225,10 @@ impl LawKind {
             .find(|k| k.name() == name)
             .ok_or_else(|| {
                 let known: Vec<_> = LawKind::ALL.iter().map(|k| k.name()).collect();
-                Error::invalid("law", format!("unknown law {name:?}; known: {}", known.join(", ")))
+                Error::invalid(
+                    "law",
+                    format!("unknown law {name:?}; known: {}", known.join(", ")),
+                )
             })
     }
 

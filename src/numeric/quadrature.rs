@@ -55,6 +55,10 @@ pub struct QuadOptions {
     pub abs_tol: f64,
     /// Most subintervals before giving up (each costs 21 evaluations).
     pub max_intervals: usize,
+    /// Measure the relative tolerance against `int |f|` instead of `|int f|`,
+    /// so an integral that cancels to near zero (a total load crossing zero
+    /// under adhesion) keeps a meaningful target.
+    pub relative_to_magnitude: bool,
 }
 
 impl Default for QuadOptions {
@@ -63,6 +67,7 @@ impl Default for QuadOptions {
             rel_tol: 1e-10,
             abs_tol: 0.0,
             max_intervals: 2000,
+            relative_to_magnitude: false,
         }
     }
 }
@@ -93,67 +98,106 @@ pub struct Quadrature {
 /// One K21 panel on `[a, b]`: (Kronrod value, error estimate).
 #[inline]
 pub fn kronrod21<F: FnMut(f64) -> f64>(f: &mut F, a: f64, b: f64) -> (f64, f64) {
+    let (v, e, _) = kronrod21_n(&mut |x| [f(x)], a, b);
+    (v[0], e[0])
+}
+
+/// One K21 panel of a vector integrand: per component (value, error,
+/// `int |f|`).
+/// The error is QUADPACK's: `resasc min(1, (200 |K - G| / resasc)^1.5)`,
+/// floored at `50 eps resabs`.
+#[inline]
+pub fn kronrod21_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
+    f: &mut F,
+    a: f64,
+    b: f64,
+) -> ([f64; N], [f64; N], [f64; N]) {
     let c = 0.5 * (a + b);
     let h = 0.5 * (b - a);
-    let fc = f(c);
-    let mut resk = WGK[10] * fc;
-    let mut resg = 0.0;
-    let mut resabs = resk.abs();
-    let mut fv1 = [0.0; 10];
-    let mut fv2 = [0.0; 10];
+    let mut fv = [[0.0; N]; 21];
+    fv[20] = f(c);
     for j in 0..10 {
         let dx = h * XGK[j];
-        let f1 = f(c - dx);
-        let f2 = f(c + dx);
-        fv1[j] = f1;
-        fv2[j] = f2;
-        resk += WGK[j] * (f1 + f2);
-        resabs += WGK[j] * (f1.abs() + f2.abs());
-        if j % 2 == 1 {
-            resg += WG[j / 2] * (f1 + f2);
+        fv[2 * j] = f(c - dx);
+        fv[2 * j + 1] = f(c + dx);
+    }
+    let mut value = [0.0; N];
+    let mut error = [0.0; N];
+    let mut magnitude = [0.0; N];
+    for i in 0..N {
+        let fc = fv[20][i];
+        let mut resk = WGK[10] * fc;
+        let mut resg = 0.0;
+        let mut resabs = resk.abs();
+        for j in 0..10 {
+            let (f1, f2) = (fv[2 * j][i], fv[2 * j + 1][i]);
+            resk += WGK[j] * (f1 + f2);
+            resabs += WGK[j] * (f1.abs() + f2.abs());
+            if j % 2 == 1 {
+                resg += WG[j / 2] * (f1 + f2);
+            }
         }
+        let mean = 0.5 * resk;
+        let mut resasc = WGK[10] * (fc - mean).abs();
+        for j in 0..10 {
+            resasc += WGK[j] * ((fv[2 * j][i] - mean).abs() + (fv[2 * j + 1][i] - mean).abs());
+        }
+        let resabs = resabs * h.abs();
+        let resasc = resasc * h.abs();
+        let mut err = ((resk - resg) * h).abs();
+        if resasc != 0.0 && err != 0.0 {
+            err = resasc * (200.0 * err / resasc).powf(1.5).min(1.0);
+        }
+        if resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON) {
+            err = err.max(50.0 * f64::EPSILON * resabs);
+        }
+        value[i] = resk * h;
+        error[i] = err;
+        magnitude[i] = resabs;
     }
-    let mean = 0.5 * resk;
-    let mut resasc = WGK[10] * (fc - mean).abs();
-    for j in 0..10 {
-        resasc += WGK[j] * ((fv1[j] - mean).abs() + (fv2[j] - mean).abs());
-    }
-    let value = resk * h;
-    let resabs = resabs * h.abs();
-    let resasc = resasc * h.abs();
-    let mut err = ((resk - resg) * h).abs();
-    if resasc != 0.0 && err != 0.0 {
-        err = resasc * (200.0 * err / resasc).powf(1.5).min(1.0);
-    }
-    if resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON) {
-        err = err.max(50.0 * f64::EPSILON * resabs);
-    }
-    (value, err)
+    (value, error, magnitude)
 }
 
 #[derive(Debug, Clone, Copy)]
-struct Panel {
+struct Panel<const N: usize> {
     a: f64,
     b: f64,
-    value: f64,
-    error: f64,
+    value: [f64; N],
+    error: [f64; N],
+    magnitude: [f64; N],
+    /// Refinement priority: the largest component error relative to its
+    /// current target.
+    key: f64,
 }
 
-impl PartialEq for Panel {
+impl<const N: usize> PartialEq for Panel<N> {
     fn eq(&self, other: &Self) -> bool {
-        self.error == other.error
+        self.key == other.key
     }
 }
-impl Eq for Panel {}
-impl PartialOrd for Panel {
+impl<const N: usize> Eq for Panel<N> {}
+impl<const N: usize> PartialOrd for Panel<N> {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
     }
 }
-impl Ord for Panel {
+impl<const N: usize> Ord for Panel<N> {
     fn cmp(&self, other: &Self) -> Ordering {
-        self.error.total_cmp(&other.error)
+        self.key.total_cmp(&other.key)
     }
+}
+
+/// Outcome of an adaptive integration of a vector integrand.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct QuadratureN<const N: usize> {
+    /// The integrals.
+    pub value: [f64; N],
+    /// Estimated absolute errors.
+    pub error: [f64; N],
+    /// Integrand evaluations spent.
+    pub evaluations: usize,
+    /// Whether every component met its tolerance within `max_intervals`.
+    pub converged: bool,
 }
 
 /// Integrates `f` over `[a, b]` adaptively.
@@ -169,25 +213,52 @@ pub fn integrate_pieces<F: FnMut(f64) -> f64>(
     points: &[f64],
     opts: &QuadOptions,
 ) -> Quadrature {
-    let mut heap = BinaryHeap::new();
+    let q = integrate_pieces_n(|x| [f(x)], points, opts);
+    Quadrature {
+        value: q.value[0],
+        error: q.error[0],
+        evaluations: q.evaluations,
+        converged: q.converged,
+    }
+}
+
+/// Vector version of [`integrate_pieces`]: every component must meet
+/// `max(abs_tol, rel_tol |I_i|)` (or `rel_tol int |f_i|`, see
+/// [`QuadOptions::relative_to_magnitude`]); the panel whose worst component
+/// is furthest from its target is bisected first. One evaluation of `f`
+/// serves all components (a law evaluated once gives load, area and count).
+pub fn integrate_pieces_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
+    mut f: F,
+    points: &[f64],
+    opts: &QuadOptions,
+) -> QuadratureN<N> {
+    let mut heap: BinaryHeap<Panel<N>> = BinaryHeap::new();
     let mut evaluations = 0;
-    let (mut total, mut err) = (0.0, 0.0);
+    let mut sums = Sums::<N>::default();
+    let mut fresh = Vec::with_capacity(points.len());
     for w in points.windows(2) {
         if w[1] > w[0] {
-            let (v, e) = kronrod21(&mut f, w[0], w[1]);
+            let (value, error, magnitude) = kronrod21_n(&mut f, w[0], w[1]);
             evaluations += 21;
-            total += v;
-            err += e;
-            heap.push(Panel {
+            let p = Panel {
                 a: w[0],
                 b: w[1],
-                value: v,
-                error: e,
-            });
+                value,
+                error,
+                magnitude,
+                key: 0.0,
+            };
+            sums.add(&p, 1.0);
+            fresh.push(p);
         }
     }
-    let target = |total: f64| opts.abs_tol.max(opts.rel_tol * total.abs());
-    while err > target(total) && heap.len() < opts.max_intervals {
+    for mut p in fresh {
+        p.key = sums.key(&p, opts);
+        heap.push(p);
+    }
+    // Priorities are relative to the totals when a panel is pushed; totals
+    // change little once refinement starts, so the order stays a good guide.
+    while !sums.done(opts) && heap.len() < opts.max_intervals {
         let Some(worst) = heap.pop() else { break };
         let mid = 0.5 * (worst.a + worst.b);
         if !(mid > worst.a && mid < worst.b) {
@@ -195,33 +266,83 @@ pub fn integrate_pieces<F: FnMut(f64) -> f64>(
             heap.push(worst);
             break;
         }
-        let (v1, e1) = kronrod21(&mut f, worst.a, mid);
-        let (v2, e2) = kronrod21(&mut f, mid, worst.b);
+        sums.add(&worst, -1.0);
+        let mut halves = [worst; 2];
+        for (half, (a, b)) in halves.iter_mut().zip([(worst.a, mid), (mid, worst.b)]) {
+            let (value, error, magnitude) = kronrod21_n(&mut f, a, b);
+            *half = Panel {
+                a,
+                b,
+                value,
+                error,
+                magnitude,
+                key: 0.0,
+            };
+            sums.add(half, 1.0);
+        }
         evaluations += 42;
-        total += v1 + v2 - worst.value;
-        err += e1 + e2 - worst.error;
-        heap.push(Panel {
-            a: worst.a,
-            b: mid,
-            value: v1,
-            error: e1,
-        });
-        heap.push(Panel {
-            a: mid,
-            b: worst.b,
-            value: v2,
-            error: e2,
-        });
+        for mut h in halves {
+            h.key = sums.key(&h, opts);
+            heap.push(h);
+        }
     }
     // Re-sum to shed the drift of the running updates.
-    let (value, error) = heap
-        .iter()
-        .fold((0.0, 0.0), |(v, e), p| (v + p.value, e + p.error));
-    Quadrature {
-        value,
-        error,
+    let mut total = Sums::<N>::default();
+    for p in heap.iter() {
+        total.add(p, 1.0);
+    }
+    QuadratureN {
+        value: total.value,
+        error: total.error,
         evaluations,
-        converged: error <= target(value),
+        converged: total.done(opts),
+    }
+}
+
+/// Running totals over the panels.
+#[derive(Debug, Clone, Copy)]
+struct Sums<const N: usize> {
+    value: [f64; N],
+    error: [f64; N],
+    magnitude: [f64; N],
+}
+
+impl<const N: usize> Default for Sums<N> {
+    fn default() -> Self {
+        Sums {
+            value: [0.0; N],
+            error: [0.0; N],
+            magnitude: [0.0; N],
+        }
+    }
+}
+
+impl<const N: usize> Sums<N> {
+    fn add(&mut self, p: &Panel<N>, sign: f64) {
+        for i in 0..N {
+            self.value[i] += sign * p.value[i];
+            self.error[i] += sign * p.error[i];
+            self.magnitude[i] += sign * p.magnitude[i];
+        }
+    }
+
+    fn target(&self, i: usize, opts: &QuadOptions) -> f64 {
+        let reference = if opts.relative_to_magnitude {
+            self.magnitude[i].abs()
+        } else {
+            self.value[i].abs()
+        };
+        opts.abs_tol.max(opts.rel_tol * reference)
+    }
+
+    fn done(&self, opts: &QuadOptions) -> bool {
+        (0..N).all(|i| self.error[i] <= self.target(i, opts))
+    }
+
+    fn key(&self, p: &Panel<N>, opts: &QuadOptions) -> f64 {
+        (0..N)
+            .map(|i| p.error[i] / self.target(i, opts).max(f64::MIN_POSITIVE))
+            .fold(0.0, f64::max)
     }
 }
 
@@ -260,7 +381,12 @@ mod tests {
     #[test]
     fn meets_tolerance_on_hard_integrands() {
         // int_0^1 sqrt(x) ln(x) dx = -4/9 (endpoint singularity).
-        let q = integrate(|x: f64| x.sqrt() * x.ln(), 0.0, 1.0, &QuadOptions::relative(1e-10));
+        let q = integrate(
+            |x: f64| x.sqrt() * x.ln(),
+            0.0,
+            1.0,
+            &QuadOptions::relative(1e-10),
+        );
         assert!(q.converged);
         assert!((q.value + 4.0 / 9.0).abs() < 1e-10 * 4.0 / 9.0, "{q:?}");
         assert!(q.error < 1e-10);
@@ -275,11 +401,31 @@ mod tests {
     }
 
     #[test]
+    fn vector_integrand_meets_every_component_tolerance() {
+        // Components of very different size: each must meet its own target.
+        let q = integrate_pieces_n(
+            |x: f64| [x.exp(), 1e-9 * x.sqrt(), (10.0 * x).cos()],
+            &[0.0, 1.0],
+            &QuadOptions::relative(1e-12),
+        );
+        assert!(q.converged);
+        let exact = [1f64.exp() - 1.0, 1e-9 * 2.0 / 3.0, 10f64.sin() / 10.0];
+        for i in 0..3 {
+            assert!(
+                (q.value[i] - exact[i]).abs() <= 1e-12 * exact[i].abs(),
+                "{i}: {} vs {}",
+                q.value[i],
+                exact[i]
+            );
+        }
+    }
+
+    #[test]
     fn reports_non_convergence() {
         let opts = QuadOptions {
             rel_tol: 1e-14,
-            abs_tol: 0.0,
             max_intervals: 3,
+            ..Default::default()
         };
         let q = integrate(|x: f64| (1.0 / x).sin(), 1e-6, 1.0, &opts);
         assert!(!q.converged);

@@ -69,10 +69,17 @@ pub fn run(args: &LawArgs) -> crate::CliResult {
         let s = serde_json::to_string(&facts).map_err(|e| CliError::Failed(e.to_string()))?;
         println!("{s}");
     } else {
-        let show = |x: Option<f64>| x.map_or("none (nothing snaps)".to_string(), |v| format!("{v:.6}"));
+        let show =
+            |x: Option<f64>| x.map_or("none (nothing snaps)".to_string(), |v| format!("{v:.6}"));
         println!("law                          {}", facts.law);
-        println!("pull-off, load control       {:.6}  [pi w R]", facts.pull_off_load_control);
-        println!("jump-out load                {}  [pi w R]", show(facts.jump_out_load));
+        println!(
+            "pull-off, load control       {:.6}  [pi w R]",
+            facts.pull_off_load_control
+        );
+        println!(
+            "jump-out load                {}  [pi w R]",
+            show(facts.jump_out_load)
+        );
         println!(
             "jump-out interference        {}  [(pi^2 w^2 R/K^2)^(1/3)]",
             show(facts.jump_out_interference)

@@ -1,0 +1,159 @@
+//! Machinery checks with a minimal exponential distribution whose `F_n` is
+//! exact (`Gamma(n+1) e^-h`, h >= 0); the full distributions are tested in
+//! `tests/`.
+
+use super::*;
+use crate::heights::HeightDistribution;
+use crate::law::{AsperityLaw, Hertz, Jkr};
+use std::sync::Arc;
+
+#[derive(Debug)]
+struct Exp;
+
+fn gamma_plus_one(n: f64) -> f64 {
+    // Exact for the n used here.
+    match n {
+        x if x == 0.0 => 1.0,
+        x if x == 1.0 => 1.0,
+        x if x == 1.5 => 0.75 * std::f64::consts::PI.sqrt(),
+        _ => f64::NAN,
+    }
+}
+
+impl HeightDistribution for Exp {
+    fn name(&self) -> &'static str {
+        "test-exponential"
+    }
+    fn pdf(&self, s: f64) -> f64 {
+        if s >= 0.0 {
+            (-s).exp()
+        } else {
+            0.0
+        }
+    }
+    fn tail(&self, s: f64) -> f64 {
+        (-s.max(0.0)).exp()
+    }
+    fn support(&self) -> (f64, f64) {
+        (0.0, f64::INFINITY)
+    }
+    fn moment_above(&self, n: f64, h: f64) -> f64 {
+        assert!(h >= 0.0);
+        gamma_plus_one(n) * (-h).exp()
+    }
+    fn quantile(&self, p: f64) -> f64 {
+        -(1.0 - p).ln()
+    }
+    fn numerical_support(&self, eps: f64) -> (f64, f64) {
+        (0.0, -eps.ln())
+    }
+    fn closed_form_moment(&self, n: f64) -> bool {
+        gamma_plus_one(n).is_finite()
+    }
+}
+
+fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
+    GwModel::new(RoughSurface::gold_microswitch(), Arc::new(Exp), law).unwrap()
+}
+
+#[test]
+fn quadrature_reproduces_closed_form_for_hertz() {
+    let s = RoughSurface::gold_microswitch();
+    let m = model(Arc::new(Hertz::new(s.radius, 4.8e10).unwrap()));
+    for tol in [1e-3, 1e-6, 1e-10] {
+        let acc = Accuracy::new(tol).unwrap();
+        for h in [0.0, 0.5, 2.0, 6.0] {
+            let d = h * s.sigma;
+            let exact = m.state(d, History::Approach, Outputs::ALL, &acc).unwrap();
+            assert_eq!(exact.method, MethodUsed::ClosedForm);
+            let quad = m
+                .state(
+                    d,
+                    History::Approach,
+                    Outputs::ALL,
+                    &acc.with_method(Method::Quadrature),
+                )
+                .unwrap();
+            for (a, b) in [
+                (exact.load, quad.load),
+                (exact.area, quad.area),
+                (exact.count, quad.count),
+            ] {
+                let (a, b) = (a.unwrap(), b.unwrap());
+                assert!(
+                    (a - b).abs() <= tol * a.abs(),
+                    "tol {tol} h {h}: {a} vs {b}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn exponential_hertz_ratios_are_constant() {
+    let s = RoughSurface::gold_microswitch();
+    let m = model(Arc::new(Hertz::new(s.radius, 4.8e10).unwrap()));
+    let acc = Accuracy::new(1e-12).unwrap();
+    let r0 = m.state(0.0, History::Approach, Outputs::ALL, &acc).unwrap();
+    for h in [0.3, 1.0, 4.0, 20.0] {
+        let r = m
+            .state(h * s.sigma, History::Approach, Outputs::ALL, &acc)
+            .unwrap();
+        let q0 = r0.load.unwrap() / r0.area.unwrap();
+        let q = r.load.unwrap() / r.area.unwrap();
+        assert!((q / q0 - 1.0).abs() < 1e-12);
+        let c0 = r0.load.unwrap() / r0.count.unwrap();
+        let c = r.load.unwrap() / r.count.unwrap();
+        assert!((c / c0 - 1.0).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn jkr_retraction_is_more_tensile_than_approach() {
+    let s = RoughSurface::gold_microswitch();
+    // Soft, sticky: strong hysteresis.
+    let m = model(Arc::new(Jkr::new(s.radius, 1e9, 0.5).unwrap()));
+    let acc = Accuracy::new(1e-8).unwrap();
+    let program = LoadingProgram::new(8.0 * s.sigma, 0.5 * s.sigma, 40).unwrap();
+    let c = m.curve(&program, Outputs::ALL, &acc).unwrap();
+    for (a, r) in c.approach.iter().zip(&c.retract) {
+        assert!(
+            r.load.unwrap() <= a.load.unwrap() + a.error[0] + r.error[0],
+            "{a:?} {r:?}"
+        );
+    }
+    assert!(c.hysteresis_energy().unwrap() > 0.0);
+    let pull = m.pull_off(0.5 * s.sigma, 60, &acc).unwrap().unwrap();
+    assert!(pull.load < 0.0);
+    assert!(pull.load <= c.sampled_pull_off().unwrap().load + 1e-12);
+}
+
+#[test]
+fn bad_inputs_are_rejected() {
+    let s = RoughSurface::gold_microswitch();
+    let m = model(Arc::new(Hertz::new(s.radius, 4.8e10).unwrap()));
+    let acc = Accuracy::new(1e-6).unwrap();
+    assert!(m
+        .state(f64::NAN, History::Approach, Outputs::ALL, &acc)
+        .is_err());
+    let e = m
+        .state(0.0, History::Retract { closest: 1e-9 }, Outputs::ALL, &acc)
+        .unwrap_err();
+    assert_eq!(e.field(), Some("separation"));
+    assert_eq!(Accuracy::new(0.5).unwrap_err().field(), Some("rel_tol"));
+    assert_eq!(Accuracy::new(1e-16).unwrap_err().field(), Some("rel_tol"));
+    let bradley = crate::law::Bradley::new(s.radius, 0.5, 3e-10).unwrap();
+    let e = GwModel::new(s, Arc::new(Exp), Arc::new(bradley)).unwrap_err();
+    assert_eq!(e.field(), Some("law"));
+}
+
+#[test]
+fn unrequested_outputs_are_none() {
+    let s = RoughSurface::gold_microswitch();
+    let m = model(Arc::new(Jkr::new(s.radius, 1e9, 0.5).unwrap()));
+    let acc = Accuracy::new(1e-6).unwrap();
+    let st = m
+        .state(s.sigma, History::Approach, Outputs::LOAD, &acc)
+        .unwrap();
+    assert!(st.load.is_some() && st.area.is_none() && st.count.is_none());
+}
