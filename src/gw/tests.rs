@@ -12,11 +12,12 @@ struct Exp;
 
 fn gamma_plus_one(n: f64) -> f64 {
     // Exact for the n used here.
-    match n {
-        x if x == 0.0 => 1.0,
-        x if x == 1.0 => 1.0,
-        x if x == 1.5 => 0.75 * std::f64::consts::PI.sqrt(),
-        _ => f64::NAN,
+    if n == 0.0 || n == 1.0 {
+        1.0
+    } else if n == 1.5 {
+        0.75 * std::f64::consts::PI.sqrt()
+    } else {
+        f64::NAN
     }
 }
 

@@ -410,13 +410,8 @@ mod tests {
         );
         assert!(q.converged);
         let exact = [1f64.exp() - 1.0, 1e-9 * 2.0 / 3.0, 10f64.sin() / 10.0];
-        for i in 0..3 {
-            assert!(
-                (q.value[i] - exact[i]).abs() <= 1e-12 * exact[i].abs(),
-                "{i}: {} vs {}",
-                q.value[i],
-                exact[i]
-            );
+        for (v, e) in q.value.iter().zip(exact) {
+            assert!((v - e).abs() <= 1e-12 * e.abs(), "{v} vs {e}");
         }
     }
 
