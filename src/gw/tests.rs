@@ -158,3 +158,35 @@ fn unrequested_outputs_are_none() {
         .unwrap();
     assert!(st.load.is_some() && st.area.is_none() && st.count.is_none());
 }
+
+#[test]
+fn fixed_rule_converges_as_panels_grow() {
+    let s = RoughSurface::gold_microswitch();
+    let m = model(Arc::new(Hertz::new(s.radius, 4.8e10).unwrap()));
+    let acc = Accuracy::new(1e-12).unwrap();
+    let d = 0.7 * s.sigma;
+    let exact = m
+        .state(d, History::Approach, Outputs::LOAD, &acc)
+        .unwrap()
+        .load
+        .unwrap();
+    let mut last = f64::INFINITY;
+    for panels in [1, 2, 8, 32] {
+        let st = m
+            .state(
+                d,
+                History::Approach,
+                Outputs::LOAD,
+                &acc.with_method(Method::Fixed { panels }),
+            )
+            .unwrap();
+        assert_eq!(st.method, MethodUsed::Fixed);
+        let err = (st.load.unwrap() - exact).abs() / exact;
+        assert!(
+            err < last || err < 1e-14,
+            "panels {panels}: {err} after {last}"
+        );
+        last = err;
+    }
+    assert!(last < 1e-10, "{last}");
+}
