@@ -34,6 +34,7 @@ pub mod heights;
 pub mod law;
 pub mod material;
 pub mod numeric;
+pub mod scene;
 
 pub use error::{Error, Result};
 

@@ -1,0 +1,81 @@
+//! Scenes: one TOML file describes a contact study (materials, surface,
+//! adhesion, law, loading program, outputs, accuracy).
+//!
+//! [`Scene::from_toml`] parses and validates; field errors name the dotted
+//! path (`surface.sigma`) and, for parse errors, the line.
+
+mod parse;
+mod schema;
+
+pub use schema::{
+    AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, OutputsSpec, ProgramSpec, Scene,
+    SurfaceSpec,
+};
+
+/// The default scene (`examples/scenes/mems-gold.toml`), embedded so that
+/// `asperity` with no arguments runs anywhere.
+pub const DEFAULT_SCENE: &str = include_str!("../../examples/scenes/mems-gold.toml");
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn with(old: &str, new: &str) -> String {
+        assert!(DEFAULT_SCENE.contains(old), "{old}");
+        DEFAULT_SCENE.replacen(old, new, 1)
+    }
+
+    fn field_of(text: &str) -> (String, String) {
+        let e = Scene::from_toml(text).unwrap_err();
+        (e.field().unwrap_or("").to_string(), e.to_string())
+    }
+
+    #[test]
+    fn default_scene_parses_and_round_trips() {
+        let s = Scene::from_toml(DEFAULT_SCENE).unwrap();
+        assert_eq!(s.surface.sigma, 5e-9);
+        assert_eq!(s.law.kind, "auto");
+        let back = Scene::from_toml(&s.to_toml()).unwrap();
+        assert_eq!(back, s);
+    }
+
+    #[test]
+    fn bad_scenes_name_their_field() {
+        let cases = [
+            (with("sigma = 5e-9", "sigma = -5e-9"), "surface.sigma"),
+            (with("sigma = 5e-9", "sigma = nan"), "surface.sigma"),
+            (with("sigma = 5e-9", "sigmaa = 5e-9"), "surface.sigmaa"),
+            (with("sigma = 5e-9            #", "#"), "surface.sigma"),
+            (with("kind = \"auto\"", "kind = \"hertzz\""), "law.kind"),
+            (with("nu1 = 0.42", "nu1 = 0.5"), "materials.nu1"),
+            (with("e2 = 79e9", "e2 = \"stiff\""), "materials.e2"),
+            (with("rtol = 1e-6", "rtol = 0.5"), "accuracy.rtol"),
+            (with("points = 200", "points = 1"), "program.points"),
+            (with("w = 0.5", "w = -0.5"), "adhesion.w"),
+            (
+                with("distribution = \"gaussian\"", "distribution = \"lorentz\""),
+                "surface.distribution",
+            ),
+        ];
+        for (text, field) in cases {
+            let (got, msg) = field_of(&text);
+            assert_eq!(got, field, "{msg}");
+        }
+    }
+
+    #[test]
+    fn parse_errors_carry_the_line() {
+        let text = with("sigma = 5e-9", "sigmaa = 5e-9");
+        let line = text.lines().position(|l| l.starts_with("sigmaa")).unwrap() + 1;
+        let (_, msg) = field_of(&text);
+        assert!(msg.contains(&format!("line {line}")), "{msg}");
+    }
+
+    #[test]
+    fn program_needs_exactly_one_target() {
+        let both = with("points = 200", "points = 200\nmax_load = 1e-4");
+        assert_eq!(field_of(&both).0, "program");
+        let none = with("closest_separation = 5e-9", "");
+        assert_eq!(field_of(&none).0, "program");
+    }
+}

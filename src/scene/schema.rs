@@ -1,0 +1,197 @@
+//! The scene file: what a user wants computed, in SI units.
+//!
+//! Every table rejects unknown keys (a typo must not be silently ignored).
+//! Defaults are stated on each field; a scene needs at least `[materials]`,
+//! `[surface]`, `[adhesion]` and `[program]`.
+
+use serde::{Deserialize, Serialize};
+
+/// A whole scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// Optional title, printed in summaries.
+    #[serde(default)]
+    pub title: Option<String>,
+    /// Elastic constants of both bodies.
+    pub materials: MaterialsSpec,
+    /// Summit statistics of the rough surface.
+    pub surface: SurfaceSpec,
+    /// Surface interaction.
+    pub adhesion: AdhesionSpec,
+    /// Asperity law (default `auto`).
+    #[serde(default)]
+    pub law: LawSpec,
+    /// Loading program.
+    pub program: ProgramSpec,
+    /// Outputs wanted (defaults: load, area, count, pull-off on; hysteresis
+    /// energy off).
+    #[serde(default)]
+    pub outputs: OutputsSpec,
+    /// Accuracy target (default `rtol = 1e-6`).
+    #[serde(default)]
+    pub accuracy: AccuracySpec,
+}
+
+/// `[materials]`: Young's moduli (Pa) and Poisson ratios of body 1 (the
+/// rough one) and body 2 (the flat).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialsSpec {
+    /// Young's modulus of body 1 (Pa), > 0.
+    pub e1: f64,
+    /// Poisson ratio of body 1, in [0, 0.5).
+    pub nu1: f64,
+    /// Young's modulus of body 2 (Pa), > 0.
+    pub e2: f64,
+    /// Poisson ratio of body 2, in [0, 0.5).
+    pub nu2: f64,
+}
+
+/// `[surface]`: the summits.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceSpec {
+    /// Summit areal density `eta` (1/m^2), > 0.
+    pub density: f64,
+    /// Summit radius `R` (m), > 0.
+    pub radius: f64,
+    /// Summit-height standard deviation `sigma` (m), > 0 (the decay length
+    /// for the exponential distribution).
+    pub sigma: f64,
+    /// Height distribution: `"gaussian"` (default), `"exponential"`,
+    /// `"weibull"`, `"truncated-gaussian"`, `"empirical"`.
+    #[serde(default = "default_distribution")]
+    pub distribution: String,
+    /// Nominal area `A_n` (m^2), > 0.
+    pub nominal_area: f64,
+    /// Weibull shape `k` (> 0), for `distribution = "weibull"`.
+    #[serde(default)]
+    pub weibull_shape: Option<f64>,
+    /// Truncation at `k sigma` (> 0), for `"truncated-gaussian"`.
+    #[serde(default)]
+    pub truncation: Option<f64>,
+    /// Measured summit heights (m), for `"empirical"`.
+    #[serde(default)]
+    pub heights: Option<Vec<f64>>,
+}
+
+fn default_distribution() -> String {
+    "gaussian".to_string()
+}
+
+/// `[adhesion]`: work of adhesion and force range.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AdhesionSpec {
+    /// Work of adhesion `w` (J/m^2), >= 0; 0 switches adhesion off.
+    pub w: f64,
+    /// Equilibrium separation `z0` of the Lennard-Jones law (m), > 0.
+    pub z0: f64,
+}
+
+/// `[law]`: the single-asperity law.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LawSpec {
+    /// `"auto"` (default: the planner picks the cheapest law that meets the
+    /// tolerance for this Tabor parameter), `"hertz"`, `"dmt"`, `"jkr"`,
+    /// `"maugis"`, `"cos"` or `"calibrated"`.
+    #[serde(default = "default_law")]
+    pub kind: String,
+}
+
+fn default_law() -> String {
+    "auto".to_string()
+}
+
+impl Default for LawSpec {
+    fn default() -> Self {
+        LawSpec {
+            kind: default_law(),
+        }
+    }
+}
+
+/// `[program]`: approach to a closest separation or to a maximum load, then
+/// retract back out through the same separations.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProgramSpec {
+    /// Closest separation of the flat from the mean summit plane (m).
+    /// Exactly one of `closest_separation` and `max_load` must be given.
+    #[serde(default)]
+    pub closest_separation: Option<f64>,
+    /// Maximum compressive load on approach (N, > 0).
+    #[serde(default)]
+    pub max_load: Option<f64>,
+    /// Separation where the program starts and ends (m); default: where
+    /// the first asperity comes within range of the flat.
+    #[serde(default)]
+    pub start_separation: Option<f64>,
+    /// Points per leg (approach, retraction), >= 2; default 200.
+    #[serde(default = "default_points")]
+    pub points: usize,
+}
+
+fn default_points() -> usize {
+    200
+}
+
+/// `[outputs]`: what to compute; everything not asked for is skipped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputsSpec {
+    /// Total load against separation (default true).
+    #[serde(default = "yes")]
+    pub load: bool,
+    /// Real contact area (default true).
+    #[serde(default = "yes")]
+    pub area: bool,
+    /// Number of contacts (default true).
+    #[serde(default = "yes")]
+    pub count: bool,
+    /// Pull-off force of the rough surface (default true).
+    #[serde(default = "yes")]
+    pub pull_off: bool,
+    /// Energy lost per approach–retract cycle (default false).
+    #[serde(default)]
+    pub hysteresis_energy: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Default for OutputsSpec {
+    fn default() -> Self {
+        OutputsSpec {
+            load: true,
+            area: true,
+            count: true,
+            pull_off: true,
+            hysteresis_energy: false,
+        }
+    }
+}
+
+/// `[accuracy]`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AccuracySpec {
+    /// Relative tolerance of every output, in [1e-12, 1e-2]; default 1e-6.
+    #[serde(default = "default_rtol")]
+    pub rtol: f64,
+}
+
+fn default_rtol() -> f64 {
+    1e-6
+}
+
+impl Default for AccuracySpec {
+    fn default() -> Self {
+        AccuracySpec {
+            rtol: default_rtol(),
+        }
+    }
+}
