@@ -34,7 +34,9 @@ pub mod heights;
 pub mod law;
 pub mod material;
 pub mod numeric;
+pub mod plot;
 pub mod scene;
+pub mod sweep;
 
 pub use error::{Error, Result};
 

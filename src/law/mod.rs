@@ -23,6 +23,7 @@
 
 pub mod bradley;
 pub mod dmt;
+pub mod errors;
 pub mod hertz;
 pub mod jkr;
 

@@ -2,10 +2,24 @@
 //! adhesion, law, loading program, outputs, accuracy).
 //!
 //! [`Scene::from_toml`] parses and validates; field errors name the dotted
-//! path (`surface.sigma`) and, for parse errors, the line.
+//! path (`surface.sigma`) and, for parse errors, the line. [`Plan::new`]
+//! decides what to compute and what to skip (printable: `asperity run
+//! SCENE --plan`); [`Plan::run`] computes; [`write_outputs`] writes tables
+//! and charts.
 
+mod build;
+mod figures;
+mod output;
 mod parse;
+mod plan;
+mod run;
 mod schema;
+
+pub use build::{build_contact, build_distribution, build_surface};
+pub use figures::{charts, si_prefix, write_outputs};
+pub use output::{curve_csv, Summary};
+pub use plan::{start_separation, Decision, LawChoice, Plan, PlanMode, Target};
+pub use run::Results;
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, OutputsSpec, ProgramSpec, Scene,

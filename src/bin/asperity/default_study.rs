@@ -1,12 +1,32 @@
-//! `asperity` with no arguments: the built-in default study, a gold-on-gold
-//! microswitch asperity compared under every law.
+//! `asperity` with no arguments: the built-in default study of a gold-on-gold
+//! microswitch — every single-asperity law compared for one summit, then the
+//! embedded default scene (examples/scenes/mems-gold.toml) run on the rough
+//! surface, with its outputs written to `./asperity-out/`.
 
 use asperity::law::LawKind;
 use asperity::prelude::*;
+use asperity::scene::{si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_SCENE};
+use std::path::Path;
+
+/// Rows of the printed load–separation table.
+const TABLE_ROWS: usize = 12;
 
 pub fn run() -> crate::CliResult {
+    laws_table()?;
+    println!();
+    let scene = Scene::from_toml(DEFAULT_SCENE)?;
+    let plan = Plan::new(&scene, PlanMode::Planned)?;
+    let results = plan.run()?;
+    separation_table(&results);
+    println!();
+    crate::run_cmd::report(&plan, &results, Path::new("asperity-out"), false)
+}
+
+fn laws_table() -> crate::CliResult {
     let c = AsperityContact::gold_microswitch();
-    println!("asperity default study: gold-on-gold microswitch asperity");
+    println!("asperity default study: gold-on-gold microswitch");
+    println!();
+    println!("One summit:");
     println!(
         "  R = {:.3e} m, E* = {:.4e} Pa (E = 79 GPa, nu = 0.42 both sides), w = {} J/m^2, z0 = {:.2e} m",
         c.radius,
@@ -19,7 +39,6 @@ pub fn run() -> crate::CliResult {
         c.tabor(),
         c.lambda()
     );
-    println!();
     println!(
         "  {:<10} {:>22} {:>24} {:>22}",
         "law", "pull-off, load ctl [N]", "jump-out, displ. ctl [N]", "a at zero load [m]"
@@ -36,4 +55,33 @@ pub fn run() -> crate::CliResult {
         );
     }
     Ok(())
+}
+
+/// A compact load–separation table: every k-th point of both legs.
+fn separation_table(results: &Results) {
+    let c = &results.curve;
+    let (ls, lp) = si_prefix(c.approach.iter().chain(&c.retract).filter_map(|s| s.load));
+    println!("Rough surface (100 um x 100 um, eta = 1e12 m^-2, sigma = 5 nm):");
+    println!(
+        "  {:>16} {:>18} {:>18} {:>14} {:>14}",
+        "separation [nm]",
+        format!("approach P [{lp}N]"),
+        format!("retract P [{lp}N]"),
+        "area [um^2]",
+        "contacts"
+    );
+    let n = c.approach.len();
+    let step = (n / TABLE_ROWS).max(1);
+    let show = |x: Option<f64>, s: f64| x.map_or("-".into(), |v| format!("{:.5}", v / s));
+    for i in (0..n).rev().step_by(step) {
+        let (a, r) = (&c.approach[i], &c.retract[i]);
+        println!(
+            "  {:>16.3} {:>18} {:>18} {:>14} {:>14}",
+            a.separation * 1e9,
+            show(a.load, ls),
+            show(r.load, ls),
+            show(a.area, 1e-12),
+            a.count.map_or("-".into(), |v| format!("{v:.2}"))
+        );
+    }
 }

@@ -6,6 +6,9 @@
 
 mod default_study;
 mod law_cmd;
+mod map_cmd;
+mod run_cmd;
+mod sweep_cmd;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -22,6 +25,14 @@ struct Cli {
 enum Command {
     /// Dimensionless facts of one single-asperity law (Maugis units).
     Law(law_cmd::LawArgs),
+    /// Run a scene file: tables, JSON summary and SVG charts.
+    Run(run_cmd::RunArgs),
+    /// Sweep scene fields over a grid or a Latin hypercube (resumable).
+    Sweep(sweep_cmd::SweepArgs),
+    /// Join the results of sweep shards.
+    Merge(sweep_cmd::MergeArgs),
+    /// Adhesion map: where each law is within a tolerance of the full solution.
+    Map(map_cmd::MapArgs),
 }
 
 /// Result of a subcommand.
@@ -64,6 +75,10 @@ fn main() -> ExitCode {
     let result = match cli.command {
         None => default_study::run(),
         Some(Command::Law(args)) => law_cmd::run(&args),
+        Some(Command::Run(args)) => run_cmd::run(&args),
+        Some(Command::Sweep(args)) => sweep_cmd::run(&args),
+        Some(Command::Merge(args)) => sweep_cmd::run_merge(&args),
+        Some(Command::Map(args)) => map_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,97 @@
+//! `asperity run SCENE.toml [--out DIR] [--json] [--plan]`, and the default
+//! run of the embedded gold-microswitch scene.
+
+use crate::CliError;
+use asperity::scene::{write_outputs, Plan, PlanMode, Results, Scene, Summary};
+use clap::Args;
+use std::path::{Path, PathBuf};
+
+/// Arguments of `asperity run`.
+#[derive(Args, Debug)]
+pub struct RunArgs {
+    /// The scene file (TOML).
+    scene: PathBuf,
+    /// Directory for curve.csv, summary.json and the SVG charts.
+    #[arg(long, default_value = "asperity-out")]
+    out: PathBuf,
+    /// Print the JSON summary to stdout instead of the text summary.
+    #[arg(long)]
+    json: bool,
+    /// Print the plan (methods, skips and reasons) and stop.
+    #[arg(long)]
+    plan: bool,
+    /// Switch every skip off (for comparison with the planned run).
+    #[arg(long)]
+    everything: bool,
+}
+
+pub fn run(args: &RunArgs) -> crate::CliResult {
+    let text = std::fs::read_to_string(&args.scene).map_err(|e| {
+        CliError::Usage(format!("scene: cannot read {}: {e}", args.scene.display()))
+    })?;
+    let scene = Scene::from_toml(&text)?;
+    let mode = if args.everything {
+        PlanMode::EverythingOn
+    } else {
+        PlanMode::Planned
+    };
+    execute(&scene, mode, &args.out, args.json, args.plan)
+}
+
+/// Plans, runs and writes one scene; prints the plan, a summary or JSON.
+pub fn execute(
+    scene: &Scene,
+    mode: PlanMode,
+    out: &Path,
+    json: bool,
+    plan_only: bool,
+) -> crate::CliResult {
+    let plan = Plan::new(scene, mode)?;
+    if plan_only {
+        print!("{plan}");
+        return Ok(());
+    }
+    let results = plan.run()?;
+    report(&plan, &results, out, json)
+}
+
+/// Writes a run's files and prints its summary (text or JSON).
+pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::CliResult {
+    let (plan, results) = (plan, results);
+    let files = write_outputs(plan, results, out)?;
+    let summary = Summary::new(plan, results);
+    if json {
+        println!("{}", summary.to_json());
+        return Ok(());
+    }
+    let show = |x: Option<f64>, unit: &str| x.map_or("-".into(), |v| format!("{v:.4e} {unit}"));
+    println!(
+        "{} — law {}, mu = {:.4}, lambda = {:.4}, {} summits",
+        summary.title.as_deref().unwrap_or("scene"),
+        summary.law,
+        summary.tabor_mu,
+        summary.maugis_lambda,
+        summary.summits
+    );
+    println!(
+        "  separations {:.3e} .. {:.3e} m, {} points per leg, rtol {:e}",
+        summary.closest_separation, summary.start_separation, summary.points, summary.rtol
+    );
+    println!("  max load           {}", show(summary.max_load, "N"));
+    println!("  max real area      {}", show(summary.max_area, "m^2"));
+    println!("  max contacts       {}", show(summary.max_count, ""));
+    println!("  pull-off force     {}", show(summary.pull_off_load, "N"));
+    println!(
+        "  hysteresis energy  {}",
+        show(summary.hysteresis_energy, "J")
+    );
+    println!(
+        "  run time           {:.3} s ({} law evaluations)",
+        summary.seconds, summary.evaluations
+    );
+    println!("  wrote:");
+    for f in files {
+        println!("    {}", f.display());
+    }
+    Ok(())
+}

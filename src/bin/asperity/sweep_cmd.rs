@@ -1,0 +1,114 @@
+//! `asperity sweep` and `asperity merge`.
+
+use crate::CliError;
+use asperity::scene::Scene;
+use asperity::sweep::{merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::PathBuf;
+
+/// Arguments of `asperity sweep`.
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// The base scene file (TOML).
+    scene: PathBuf,
+    /// A varied field, `PATH=FROM:TO:N` (repeatable), e.g.
+    /// `surface.sigma=2e-9:8e-9:6`.
+    #[arg(long = "vary", required = true)]
+    vary: Vec<String>,
+    /// Geometric spacing for every varied field.
+    #[arg(long)]
+    log: bool,
+    /// Latin-hypercube sample of this many points instead of a grid.
+    #[arg(long)]
+    samples: Option<usize>,
+    /// Base seed (Latin-hypercube draws and per-point seeds).
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Run only slice K of N (`K/N`), e.g. for a Slurm job array.
+    #[arg(long)]
+    shard: Option<String>,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Results directory (results.csv, sweep.json).
+    #[arg(long, default_value = "sweep-out")]
+    out: PathBuf,
+}
+
+/// Arguments of `asperity merge`.
+#[derive(Args, Debug)]
+pub struct MergeArgs {
+    /// Shard directories to join.
+    #[arg(required = true)]
+    dirs: Vec<PathBuf>,
+    /// Directory for the merged results.
+    #[arg(long)]
+    out: PathBuf,
+}
+
+pub fn run(args: &SweepArgs) -> crate::CliResult {
+    let text = std::fs::read_to_string(&args.scene).map_err(|e| {
+        CliError::Usage(format!("scene: cannot read {}: {e}", args.scene.display()))
+    })?;
+    let scene = Scene::from_toml(&text)?;
+    let vary = args
+        .vary
+        .iter()
+        .map(|v| Vary::parse(v))
+        .collect::<asperity::Result<Vec<_>>>()?;
+    let spec = SweepSpec {
+        vary,
+        design: match args.samples {
+            Some(samples) => Design::Latin { samples },
+            None => Design::Grid,
+        },
+        log: args.log,
+        seed: args.seed,
+    };
+    let shard = args.shard.as_deref().map(Shard::parse).transpose()?;
+    if args.threads == Some(0) {
+        return Err(CliError::Usage("--threads = 0: give at least 1".into()));
+    }
+    let bar = ProgressBar::new(0);
+    bar.set_style(
+        ProgressStyle::with_template(
+            "{bar:40} {pos}/{len} points  {per_sec}  elapsed {elapsed}  eta {eta}",
+        )
+        .map_err(|e| CliError::Failed(e.to_string()))?,
+    );
+    let progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let options = SweepOptions {
+        shard,
+        threads: args.threads,
+    };
+    let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress)?;
+    bar.finish_and_clear();
+    eprintln!(
+        "{} points: {} already done, {} computed now ({} failed){}; results in {}",
+        outcome.planned,
+        outcome.resumed,
+        outcome.computed,
+        outcome.failed,
+        if outcome.repaired {
+            ", a half-written last row was redone"
+        } else {
+            ""
+        },
+        outcome.path.display()
+    );
+    Ok(())
+}
+
+pub fn run_merge(args: &MergeArgs) -> crate::CliResult {
+    let path = merge(&args.dirs, &args.out)?;
+    eprintln!(
+        "merged {} directories into {}",
+        args.dirs.len(),
+        path.display()
+    );
+    Ok(())
+}

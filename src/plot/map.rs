@@ -1,0 +1,155 @@
+//! The adhesion map (after Johnson & Greenwood 1997): over Tabor parameter
+//! and load, where each analytic law stays within a tolerance of the full
+//! Lennard-Jones solution. Drawn from [`LawErrorTable`], the same measured
+//! errors the planner chooses laws by.
+
+use crate::error::{Error, Result};
+use crate::law::errors::LawErrorTable;
+use crate::law::LawKind;
+use plotters::prelude::*;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Laws shown on the map, one panel each.
+pub const MAP_LAWS: [LawKind; 5] = [
+    LawKind::Hertz,
+    LawKind::Bradley,
+    LawKind::Dmt,
+    LawKind::Jkr,
+    LawKind::Maugis,
+];
+
+/// The map as CSV: `mu,load_bar,<law>...` with 1 where the law is within
+/// `tol` (relative load error, see [`crate::law::errors`]), 0 where not.
+pub fn adhesion_map_csv(table: &LawErrorTable, tol: f64) -> String {
+    let mut out = String::from("mu,load_bar");
+    for k in MAP_LAWS {
+        out.push(',');
+        out.push_str(k.name());
+    }
+    out.push('\n');
+    for (i, mu) in table.mu.iter().enumerate() {
+        for (j, p) in table.load_bar.iter().enumerate() {
+            let _ = write!(out, "{mu:e},{p:e}");
+            for k in MAP_LAWS {
+                let _ = write!(out, ",{}", u8::from(table.within(k, i, j, tol)));
+            }
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// Cell edges of a tabulated axis: midpoints, the ends extended by half a
+/// step (geometric midpoints for a log axis).
+fn edges(x: &[f64], log: bool) -> Vec<f64> {
+    let n = x.len();
+    let mid = |a: f64, b: f64| if log { (a * b).sqrt() } else { 0.5 * (a + b) };
+    let mut e = Vec::with_capacity(n + 1);
+    if n == 1 {
+        return if log {
+            vec![x[0] / 1.5, x[0] * 1.5]
+        } else {
+            vec![x[0] - 0.5, x[0] + 0.5]
+        };
+    }
+    e.push(if log {
+        x[0] * x[0] / mid(x[0], x[1])
+    } else {
+        2.0 * x[0] - mid(x[0], x[1])
+    });
+    for w in x.windows(2) {
+        e.push(mid(w[0], w[1]));
+    }
+    e.push(if log {
+        x[n - 1] * x[n - 1] / mid(x[n - 2], x[n - 1])
+    } else {
+        2.0 * x[n - 1] - mid(x[n - 2], x[n - 1])
+    });
+    e
+}
+
+/// Draws the map as an SVG: one panel per law, Tabor parameter `mu` (log)
+/// across, load `P/(pi w R)` up, cells filled where the law is within
+/// `tol` of the full solution.
+///
+/// # Errors
+/// [`Error::Invalid`] naming `map` for an empty table or a write failure.
+pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Result<()> {
+    if table.mu.is_empty() || table.load_bar.is_empty() {
+        return Err(Error::invalid("map", "the error table is empty"));
+    }
+    let fail = |e: String| Error::invalid("map", format!("{}: {e}", path.display()));
+    let xe = edges(&table.mu, true);
+    let ye = edges(&table.load_bar, false);
+    let (x0, x1) = (xe[0], xe[xe.len() - 1]);
+    let (y0, y1) = (ye[0], ye[ye.len() - 1]);
+    let root = SVGBackend::new(path, (1500, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
+    let root = root
+        .titled(
+            &format!(
+                "Adhesion map: where each law is within {tol:e} of the Lennard-Jones sphere solution"
+            ),
+            ("sans-serif", 20),
+        )
+        .map_err(|e| fail(e.to_string()))?;
+    let panels = root.split_evenly((1, MAP_LAWS.len()));
+    let colours = [
+        RGBColor(120, 120, 120),
+        RGBColor(148, 103, 189),
+        RGBColor(31, 119, 180),
+        RGBColor(214, 39, 40),
+        RGBColor(44, 160, 44),
+    ];
+    for ((panel, kind), colour) in panels.iter().zip(MAP_LAWS).zip(colours) {
+        let mut chart = ChartBuilder::on(panel)
+            .caption(kind.name(), ("sans-serif", 18))
+            .margin(8)
+            .x_label_area_size(40)
+            .y_label_area_size(48)
+            .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
+            .map_err(|e| fail(e.to_string()))?;
+        chart
+            .configure_mesh()
+            .x_desc("Tabor parameter mu")
+            .y_desc("load P / (pi w R)")
+            .label_style(("sans-serif", 12))
+            .axis_desc_style(("sans-serif", 14))
+            .x_label_formatter(&|v| super::tick(*v))
+            .y_label_formatter(&|v| super::tick(*v))
+            .draw()
+            .map_err(|e| fail(e.to_string()))?;
+        let mut cells = Vec::new();
+        for i in 0..table.mu.len() {
+            for j in 0..table.load_bar.len() {
+                if table.within(kind, i, j, tol) {
+                    cells.push(Rectangle::new(
+                        [(xe[i], ye[j]), (xe[i + 1], ye[j + 1])],
+                        colour.mix(0.7).filled(),
+                    ));
+                }
+            }
+        }
+        chart.draw_series(cells).map_err(|e| fail(e.to_string()))?;
+    }
+    root.present().map_err(|e| fail(e.to_string()))?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn edges_bracket_every_value() {
+        let x = [0.01, 0.1, 1.0];
+        let e = edges(&x, true);
+        assert_eq!(e.len(), 4);
+        for (i, v) in x.iter().enumerate() {
+            assert!(e[i] < *v && *v < e[i + 1]);
+        }
+        let e = edges(&[-2.0, 0.0, 4.0], false);
+        assert_eq!(e, vec![-3.0, -1.0, 2.0, 6.0]);
+    }
+}

@@ -1,0 +1,210 @@
+//! Running a sweep: each missing point of this shard is planned and run in
+//! parallel (rayon) and its row appended as soon as it is finished.
+
+use super::edit::set_field;
+use super::spec::{Shard, SweepPoint, SweepSpec};
+use super::store::{ResultsFile, SweepMeta};
+use crate::error::{Error, Result};
+use crate::scene::{Plan, PlanMode, Scene, Summary};
+use rayon::prelude::*;
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// How to run a sweep.
+#[derive(Debug, Clone, Default)]
+pub struct SweepOptions {
+    /// The slice to run (`None`: all points).
+    pub shard: Option<Shard>,
+    /// Worker threads (`None`: rayon's default, one per core).
+    pub threads: Option<usize>,
+}
+
+/// What a sweep run did.
+#[derive(Debug, Clone)]
+pub struct PointOutcome {
+    /// Points of this shard.
+    pub planned: usize,
+    /// Points found already done (resumed).
+    pub resumed: usize,
+    /// Points computed now.
+    pub computed: usize,
+    /// Points whose scene failed (their row says why).
+    pub failed: usize,
+    /// Whether a half-written last row was repaired.
+    pub repaired: bool,
+    /// The results file.
+    pub path: PathBuf,
+}
+
+/// Output columns of a scene's scalar results, by its `[outputs]`.
+fn output_columns(scene: &Scene) -> Vec<&'static str> {
+    let o = scene.outputs;
+    let mut cols = Vec::new();
+    if o.load {
+        cols.push("max_load_N");
+    }
+    if o.area {
+        cols.push("max_area_m2");
+    }
+    if o.count {
+        cols.push("max_count");
+    }
+    if o.pull_off {
+        cols.extend(["pull_off_N", "pull_off_separation_m"]);
+    }
+    if o.hysteresis_energy {
+        cols.push("hysteresis_energy_J");
+    }
+    cols
+}
+
+fn cell(x: Option<f64>) -> String {
+    x.map_or(String::new(), |v| format!("{v:e}"))
+}
+
+/// Computes one point's row: `index, values.., seed, status, outputs..`.
+fn point_row(
+    base: &toml::Value,
+    spec: &SweepSpec,
+    cols: &[&str],
+    p: &SweepPoint,
+) -> (String, bool) {
+    let mut row: Vec<String> = vec![p.index.to_string()];
+    row.extend(p.values.iter().map(|v| format!("{v:e}")));
+    row.push(p.seed.to_string());
+    let outcome = (|| -> Result<Summary> {
+        let mut scene_value = base.clone();
+        for (v, x) in spec.vary.iter().zip(&p.values) {
+            set_field(&mut scene_value, &v.path, *x)?;
+        }
+        let scene = Scene::deserialize(scene_value)
+            .map_err(|e| Error::invalid("scene", e.message().to_string()))?;
+        scene.validate()?;
+        let plan = Plan::new(&scene, PlanMode::Planned)?;
+        let results = plan.run()?;
+        Ok(Summary::new(&plan, &results))
+    })();
+    let ok = outcome.is_ok();
+    match outcome {
+        Ok(s) => {
+            row.push("ok".into());
+            for c in cols {
+                row.push(cell(match *c {
+                    "max_load_N" => s.max_load,
+                    "max_area_m2" => s.max_area,
+                    "max_count" => s.max_count,
+                    "pull_off_N" => s.pull_off_load,
+                    "pull_off_separation_m" => s.pull_off_separation,
+                    _ => s.hysteresis_energy,
+                }));
+            }
+        }
+        Err(e) => {
+            let msg: String = e
+                .to_string()
+                .chars()
+                .map(|c| {
+                    if matches!(c, ',' | '\n' | '\r' | '"') {
+                        ';'
+                    } else {
+                        c
+                    }
+                })
+                .collect();
+            row.push(format!("error: {msg}"));
+            row.extend(cols.iter().map(|_| String::new()));
+        }
+    }
+    (row.join(","), ok)
+}
+
+/// Runs the points of `spec` over the scene `base` that are not yet in
+/// `out/results.csv`, calling `progress(done, total)` as points finish.
+///
+/// # Errors
+/// Invalid specs or scenes (naming the field) and I/O failures (naming
+/// `--out`). A point whose scene fails does not stop the sweep: its row
+/// records the error.
+pub fn run_sweep(
+    base: &Scene,
+    spec: &SweepSpec,
+    out: &Path,
+    options: &SweepOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<PointOutcome> {
+    spec.validate()?;
+    base.validate()?;
+    let normalised = base.to_toml();
+    let base_value: toml::Value = toml::from_str(&normalised)
+        .map_err(|e| Error::invalid("scene", e.message().to_string()))?;
+    for v in &spec.vary {
+        // Fail early on a bad path, before any point runs.
+        set_field(&mut base_value.clone(), &v.path, v.from)?;
+    }
+    let cols = output_columns(base);
+    let mut header: Vec<String> = vec!["index".into()];
+    header.extend(spec.vary.iter().map(|v| v.path.clone()));
+    header.extend(["seed".into(), "status".into()]);
+    header.extend(cols.iter().map(|c| c.to_string()));
+    let header = header.join(",");
+    let points = spec.points();
+    let meta = SweepMeta {
+        scene: normalised,
+        spec: spec.clone(),
+        total: points.len(),
+        shard: options.shard,
+        header: header.clone(),
+    };
+    let file = ResultsFile::open(out, &meta)?;
+    let repaired = file.repaired;
+    let mine: Vec<&SweepPoint> = points
+        .iter()
+        .filter(|p| options.shard.is_none_or(|s| s.contains(p.index)))
+        .collect();
+    let todo: Vec<&SweepPoint> = mine
+        .iter()
+        .copied()
+        .filter(|p| !file.is_done(p.index))
+        .collect();
+    let resumed = mine.len() - todo.len();
+    let total = mine.len();
+    let done = AtomicUsize::new(resumed);
+    let failed = AtomicUsize::new(0);
+    progress(resumed, total);
+    let file = Mutex::new(file);
+    let work = || {
+        todo.par_iter().try_for_each(|p| -> Result<()> {
+            let (row, ok) = point_row(&base_value, spec, &cols, p);
+            if !ok {
+                failed.fetch_add(1, Ordering::Relaxed);
+            }
+            file.lock()
+                .map_err(|_| Error::invalid("--out", "results file lock poisoned"))?
+                .append(p.index, &row)?;
+            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+            Ok(())
+        })
+    };
+    match options.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build()
+            .map_err(|e| Error::invalid("--threads", e.to_string()))?
+            .install(work)?,
+        None => work()?,
+    }
+    let file = file
+        .into_inner()
+        .map_err(|_| Error::invalid("--out", "results file lock poisoned"))?;
+    let path = file.finish(&header)?;
+    Ok(PointOutcome {
+        planned: total,
+        resumed,
+        computed: todo.len(),
+        failed: failed.into_inner(),
+        repaired,
+        path,
+    })
+}

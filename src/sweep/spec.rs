@@ -1,0 +1,369 @@
+//! What a sweep varies and which points it visits.
+
+use crate::error::{Allowed, Error, Result};
+use rand::rngs::StdRng;
+use rand::seq::SliceRandom;
+use rand::{RngExt, SeedableRng};
+use serde::{Deserialize, Serialize};
+
+/// One varied scene field: `PATH=FROM:TO:N`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Vary {
+    /// Dotted scene path, e.g. `surface.sigma`.
+    pub path: String,
+    /// First value (scene units).
+    pub from: f64,
+    /// Last value.
+    pub to: f64,
+    /// Grid points (ignored by Latin-hypercube designs).
+    pub n: usize,
+}
+
+impl Vary {
+    /// Parses `PATH=FROM:TO:N` (or `PATH=FROM:TO` for Latin-hypercube
+    /// designs, where `N` is not used).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `--vary` with the text and what is wrong.
+    pub fn parse(text: &str) -> Result<Vary> {
+        let bad = |why: &str| {
+            Error::invalid(
+                "--vary",
+                format!("{text:?}: {why} (expected PATH=FROM:TO:N)"),
+            )
+        };
+        let (path, range) = text.split_once('=').ok_or_else(|| bad("no '='"))?;
+        let parts: Vec<&str> = range.split(':').collect();
+        if path.trim().is_empty() || !(2..=3).contains(&parts.len()) {
+            return Err(bad("malformed"));
+        }
+        let num = |s: &str| -> Result<f64> {
+            let x: f64 = s
+                .trim()
+                .parse()
+                .map_err(|_| bad(&format!("{s:?} is not a number")))?;
+            Allowed::FINITE.check("--vary", x)
+        };
+        let n = match parts.get(2) {
+            Some(s) => s
+                .trim()
+                .parse::<usize>()
+                .ok()
+                .filter(|&n| n >= 1)
+                .ok_or_else(|| bad(&format!("N = {s:?} must be a whole number >= 1")))?,
+            None => 1,
+        };
+        Ok(Vary {
+            path: path.trim().to_string(),
+            from: num(parts[0])?,
+            to: num(parts[1])?,
+            n,
+        })
+    }
+
+    /// Value at fraction `t` in `[0, 1]` of the range, linear or geometric.
+    fn at(&self, t: f64, log: bool) -> f64 {
+        if log {
+            (self.from.ln() + t * (self.to.ln() - self.from.ln())).exp()
+        } else {
+            self.from + t * (self.to - self.from)
+        }
+    }
+}
+
+/// How points are placed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub enum Design {
+    /// Full grid: every combination of each field's `N` values, the first
+    /// `--vary` slowest.
+    Grid,
+    /// Latin-hypercube sample of `samples` points drawn with `seed`: each
+    /// field's range split into `samples` strata, each stratum used once,
+    /// a uniform jitter inside it.
+    Latin {
+        /// Number of points.
+        samples: usize,
+    },
+}
+
+/// A whole sweep: fields, design, spacing and the base seed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepSpec {
+    /// The varied fields.
+    pub vary: Vec<Vary>,
+    /// Grid or Latin hypercube.
+    pub design: Design,
+    /// Geometric (log) spacing for every field (ranges must be > 0).
+    pub log: bool,
+    /// Base seed: Latin-hypercube draws and each point's own seed.
+    pub seed: u64,
+}
+
+/// One point of a sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepPoint {
+    /// Position in the sweep (0-based); rows are sorted by it.
+    pub index: usize,
+    /// Values of the varied fields, in `--vary` order.
+    pub values: Vec<f64>,
+    /// The point's own seed (for Monte Carlo scenes), from the base seed
+    /// and the index (SplitMix64), so it does not depend on threads or
+    /// shards.
+    pub seed: u64,
+}
+
+/// SplitMix64 finaliser: a well-mixed 64-bit hash.
+pub fn splitmix64(x: u64) -> u64 {
+    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Most points a sweep may have.
+pub const MAX_POINTS: usize = 100_000_000;
+
+impl SweepSpec {
+    /// Checks the fields are distinct, the grid is not empty or huge, and
+    /// log ranges are positive.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `--vary`, `--samples` or `--log`.
+    pub fn validate(&self) -> Result<()> {
+        if self.vary.is_empty() {
+            return Err(Error::invalid(
+                "--vary",
+                "give at least one --vary PATH=FROM:TO:N",
+            ));
+        }
+        for (i, v) in self.vary.iter().enumerate() {
+            if self.vary[..i].iter().any(|w| w.path == v.path) {
+                return Err(Error::invalid(
+                    "--vary",
+                    format!("{} is varied twice", v.path),
+                ));
+            }
+            if self.log && !(v.from > 0.0 && v.to > 0.0) {
+                return Err(Error::invalid(
+                    "--log",
+                    format!(
+                        "{}: a log range needs FROM and TO > 0, got {}:{}",
+                        v.path, v.from, v.to
+                    ),
+                ));
+            }
+        }
+        let total = match self.design {
+            Design::Grid => self
+                .vary
+                .iter()
+                .try_fold(1usize, |acc, v| acc.checked_mul(v.n))
+                .unwrap_or(usize::MAX),
+            Design::Latin { samples } => samples,
+        };
+        if total == 0 || total > MAX_POINTS {
+            return Err(Error::invalid(
+                if matches!(self.design, Design::Grid) {
+                    "--vary"
+                } else {
+                    "--samples"
+                },
+                format!("{total} points; allowed 1 ..= {MAX_POINTS}"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Every point, in index order.
+    pub fn points(&self) -> Vec<SweepPoint> {
+        let values: Vec<Vec<f64>> = match self.design {
+            Design::Grid => {
+                let total: usize = self.vary.iter().map(|v| v.n).product();
+                (0..total)
+                    .map(|mut i| {
+                        let mut vals = vec![0.0; self.vary.len()];
+                        for (k, v) in self.vary.iter().enumerate().rev() {
+                            let j = i % v.n;
+                            i /= v.n;
+                            let t = if v.n == 1 {
+                                0.0
+                            } else {
+                                j as f64 / (v.n - 1) as f64
+                            };
+                            vals[k] = v.at(t, self.log);
+                        }
+                        vals
+                    })
+                    .collect()
+            }
+            Design::Latin { samples } => {
+                let mut rng = StdRng::seed_from_u64(self.seed);
+                let mut cols = Vec::with_capacity(self.vary.len());
+                for v in &self.vary {
+                    let mut strata: Vec<usize> = (0..samples).collect();
+                    strata.shuffle(&mut rng);
+                    let col: Vec<f64> = strata
+                        .iter()
+                        .map(|&s| {
+                            let u: f64 = rng.random();
+                            v.at((s as f64 + u) / samples as f64, self.log)
+                        })
+                        .collect();
+                    cols.push(col);
+                }
+                (0..samples)
+                    .map(|i| cols.iter().map(|c| c[i]).collect())
+                    .collect()
+            }
+        };
+        values
+            .into_iter()
+            .enumerate()
+            .map(|(index, values)| SweepPoint {
+                index,
+                values,
+                seed: splitmix64(self.seed.wrapping_add(index as u64)),
+            })
+            .collect()
+    }
+}
+
+/// One slice of a sweep, `K/N`: the points whose index `i` has
+/// `i mod N = K - 1`, so `N` slices cover the sweep exactly once.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Shard {
+    /// Which slice, 1-based.
+    pub k: usize,
+    /// How many slices.
+    pub n: usize,
+}
+
+impl Shard {
+    /// Parses `K/N` with `1 <= K <= N`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `--shard`.
+    pub fn parse(text: &str) -> Result<Shard> {
+        let bad = || {
+            Error::invalid(
+                "--shard",
+                format!("{text:?}: expected K/N with 1 <= K <= N"),
+            )
+        };
+        let (k, n) = text.split_once('/').ok_or_else(bad)?;
+        let k: usize = k.trim().parse().map_err(|_| bad())?;
+        let n: usize = n.trim().parse().map_err(|_| bad())?;
+        if k == 0 || k > n {
+            return Err(bad());
+        }
+        Ok(Shard { k, n })
+    }
+
+    /// Whether point `index` belongs to this slice.
+    pub fn contains(&self, index: usize) -> bool {
+        index % self.n == self.k - 1
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn vary_parses_and_rejects() {
+        let v = Vary::parse("surface.sigma=2e-9:8e-9:6").unwrap();
+        assert_eq!(
+            (v.path.as_str(), v.from, v.to, v.n),
+            ("surface.sigma", 2e-9, 8e-9, 6)
+        );
+        for bad in [
+            "sigma",
+            "a=1:2:0",
+            "a=1:x:3",
+            "a=1",
+            "=1:2:3",
+            "a=nan:1:2",
+            "a=1:2:3:4",
+        ] {
+            assert_eq!(
+                Vary::parse(bad).unwrap_err().field(),
+                Some("--vary"),
+                "{bad}"
+            );
+        }
+    }
+
+    #[test]
+    fn grid_is_row_major_and_log_is_geometric() {
+        let spec = SweepSpec {
+            vary: vec![
+                Vary::parse("a=1:3:3").unwrap(),
+                Vary::parse("b=10:1000:3").unwrap(),
+            ],
+            design: Design::Grid,
+            log: true,
+            seed: 7,
+        };
+        spec.validate().unwrap();
+        let p = spec.points();
+        assert_eq!(p.len(), 9);
+        assert_eq!(p[1].values[0], 1.0);
+        assert!((p[1].values[1] - 100.0).abs() < 1e-12);
+        assert!((p[3].values[0] - 3f64.sqrt()).abs() < 1e-12);
+        assert_ne!(p[0].seed, p[1].seed);
+    }
+
+    #[test]
+    fn latin_hypercube_uses_each_stratum_once_and_is_seeded() {
+        let spec = SweepSpec {
+            vary: vec![
+                Vary::parse("a=0:1").unwrap(),
+                Vary::parse("b=0:10").unwrap(),
+            ],
+            design: Design::Latin { samples: 50 },
+            log: false,
+            seed: 3,
+        };
+        let p = spec.points();
+        for (k, scale) in [(0, 1.0), (1, 10.0)] {
+            let mut strata: Vec<usize> = p
+                .iter()
+                .map(|q| (q.values[k] / scale * 50.0) as usize)
+                .collect();
+            strata.sort_unstable();
+            assert_eq!(strata, (0..50).collect::<Vec<_>>());
+        }
+        assert_eq!(spec.points(), p);
+        let other = SweepSpec {
+            seed: 4,
+            ..spec.clone()
+        }
+        .points();
+        assert_ne!(other, p);
+    }
+
+    #[test]
+    fn bad_specs_and_shards_are_rejected() {
+        let mut spec = SweepSpec {
+            vary: vec![],
+            design: Design::Grid,
+            log: false,
+            seed: 0,
+        };
+        assert_eq!(spec.validate().unwrap_err().field(), Some("--vary"));
+        spec.vary = vec![Vary::parse("a=-1:1:3").unwrap()];
+        spec.log = true;
+        assert_eq!(spec.validate().unwrap_err().field(), Some("--log"));
+        spec.log = false;
+        spec.vary.push(Vary::parse("a=0:1:2").unwrap());
+        assert_eq!(spec.validate().unwrap_err().field(), Some("--vary"));
+        spec.vary.pop();
+        spec.design = Design::Latin { samples: 0 };
+        assert_eq!(spec.validate().unwrap_err().field(), Some("--samples"));
+        for bad in ["0/3", "4/3", "x/2", "1"] {
+            assert_eq!(Shard::parse(bad).unwrap_err().field(), Some("--shard"));
+        }
+        let s = Shard::parse("2/3").unwrap();
+        assert!(s.contains(1) && s.contains(4) && !s.contains(0));
+    }
+}

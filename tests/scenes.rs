@@ -1,0 +1,159 @@
+//! Scenes end to end: every example scene parses, runs and matches direct
+//! library calls; the planner's skips pay and cost nothing.
+
+use asperity::gw::{Accuracy, GwModel, History, Method, Outputs};
+use asperity::law::LawKind;
+use asperity::scene::{build_contact, build_distribution, build_surface, Plan, PlanMode, Scene};
+use std::sync::Arc;
+
+fn example(name: &str) -> Scene {
+    let path = format!("{}/examples/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    Scene::from_toml(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+fn all_examples() -> Vec<String> {
+    let dir = format!("{}/examples/scenes", env!("CARGO_MANIFEST_DIR"));
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n.ends_with(".toml"))
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn every_example_scene_runs_and_matches_library_calls() {
+    let names = all_examples();
+    assert!(names.len() >= 5, "{names:?}");
+    for name in names {
+        let scene = example(&name);
+        let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
+        let res = plan.run().unwrap();
+        // The same numbers straight from the library.
+        let contact = build_contact(&scene).unwrap();
+        let law = LawKind::parse(&plan.law.name)
+            .unwrap()
+            .build(&contact)
+            .unwrap();
+        let model = GwModel::new(
+            build_surface(&scene).unwrap(),
+            build_distribution(&scene.surface).unwrap(),
+            Arc::from(law),
+        )
+        .unwrap();
+        let acc = Accuracy::new(scene.accuracy.rtol).unwrap();
+        let closest = res.curve.program.closest;
+        for k in [
+            0,
+            res.curve.approach.len() / 3,
+            res.curve.approach.len() - 1,
+        ] {
+            for (leg, history) in [
+                (&res.curve.approach, History::Approach),
+                (&res.curve.retract, History::Retract { closest }),
+            ] {
+                let got = leg[k];
+                let want = model
+                    .state(got.separation, history, Outputs::ALL, &acc)
+                    .unwrap();
+                for (g, w, asked, e) in [
+                    (got.load, want.load, scene.outputs.load, want.error[0]),
+                    (got.area, want.area, scene.outputs.area, want.error[1]),
+                    (got.count, want.count, scene.outputs.count, want.error[2]),
+                ] {
+                    if asked {
+                        let (g, w) = (g.unwrap(), w.unwrap());
+                        // Same method and tolerance: equal up to the error estimates.
+                        let tol = 2.0 * e + got.error.iter().sum::<f64>() + 1e-12 * w.abs();
+                        assert!((g - w).abs() <= tol, "{name} {k}: {g} vs {w} (tol {tol})");
+                    }
+                }
+            }
+        }
+        if scene.outputs.pull_off && scene.adhesion.w > 0.0 {
+            let p = res.pull_off.expect("adhesive scene has a pull-off");
+            let direct = model.pull_off(closest, 64, &acc).unwrap().unwrap();
+            assert!(
+                (p.load - direct.load).abs() <= 1e-9 * direct.load.abs(),
+                "{name}"
+            );
+        } else {
+            assert!(res.pull_off.is_none(), "{name}");
+        }
+        if !scene.outputs.count {
+            assert!(
+                res.curve.approach.iter().all(|s| s.count.is_none()),
+                "{name}"
+            );
+        }
+    }
+}
+
+/// Relative difference of two optional outputs, against the larger
+/// magnitude of the curve (adhesive loads cross zero).
+fn worst_gap(a: &[Option<f64>], b: &[Option<f64>]) -> f64 {
+    let scale = a
+        .iter()
+        .chain(b)
+        .flatten()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    a.iter()
+        .zip(b)
+        .filter_map(|(x, y)| Some((x.as_ref()? - y.as_ref()?).abs() / scale))
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn planned_runs_do_less_work_and_agree_within_tolerance() {
+    for name in ["hertz-exponential.toml", "soft-jkr.toml", "dmt-stiff.toml"] {
+        let mut scene = example(name);
+        // Same separations for both runs.
+        if scene.program.start_separation.is_none() {
+            let p = Plan::new(&scene, PlanMode::Planned).unwrap();
+            scene.program.start_separation = Some(p.start);
+        }
+        let planned = Plan::new(&scene, PlanMode::Planned).unwrap();
+        let full = Plan::new(&scene, PlanMode::EverythingOn).unwrap();
+        let (rp, rf) = (planned.run().unwrap(), full.run().unwrap());
+        assert!(
+            rp.evaluations < rf.evaluations,
+            "{name}: planned {} vs everything-on {} law evaluations",
+            rp.evaluations,
+            rf.evaluations
+        );
+        let rtol = scene.accuracy.rtol;
+        for (pa, fa) in [
+            (&rp.curve.approach, &rf.curve.approach),
+            (&rp.curve.retract, &rf.curve.retract),
+        ] {
+            let loads =
+                |v: &Vec<asperity::gw::GwState>| v.iter().map(|s| s.load).collect::<Vec<_>>();
+            let areas =
+                |v: &Vec<asperity::gw::GwState>| v.iter().map(|s| s.area).collect::<Vec<_>>();
+            let gap = worst_gap(&loads(pa), &loads(fa)).max(worst_gap(&areas(pa), &areas(fa)));
+            assert!(
+                gap <= rtol,
+                "{name}: planned and everything-on differ by {gap:e} > {rtol:e}"
+            );
+        }
+        eprintln!(
+            "{name}: planned {:.4} s / {} evals, everything-on {:.4} s / {} evals",
+            rp.seconds, rp.evaluations, rf.seconds, rf.evaluations
+        );
+    }
+}
+
+#[test]
+fn plans_say_what_they_skip() {
+    let plan = Plan::new(&example("hertz-exponential.toml"), PlanMode::Planned).unwrap();
+    let text = plan.to_string();
+    assert!(text.contains("closed form"), "{text}");
+    assert!(text.contains("copied from approach"), "{text}");
+    assert!(text.contains("w = 0"), "{text}");
+    assert!(!plan.pull_off && !plan.compute_retraction);
+    assert_eq!(plan.accuracy.method, Method::Auto);
+    let plan = Plan::new(&example("max-load.toml"), PlanMode::Planned).unwrap();
+    assert!(!plan.curve_outputs.count);
+    assert!(plan.to_string().contains("not asked for"));
+}
