@@ -25,6 +25,7 @@ pub mod bradley;
 pub mod dmt;
 pub mod errors;
 pub mod hertz;
+pub mod interpolated;
 pub mod jkr;
 
 pub use bradley::Bradley;

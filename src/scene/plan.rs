@@ -25,6 +25,7 @@ use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
 use crate::heights::HeightDistribution;
 use crate::law::errors::LawErrorTable;
+use crate::law::interpolated::InterpolatedLaw;
 use crate::law::{AsperityLaw, LawKind};
 use crate::material::AsperityContact;
 use crate::numeric::roots::brent;
@@ -241,6 +242,7 @@ impl Plan {
             }
         }
 
+        let law = tabulate_if_worth_it(law, &model, start, target, rtol, mode, &mut decide)?;
         let hysteresis_free = law.law.attach_interference() == law.law.detach_interference();
         let compute_retraction = mode == PlanMode::EverythingOn || !hysteresis_free;
         if compute_retraction {
@@ -376,6 +378,57 @@ impl Plan {
         }
         root.ok_or_else(|| Error::invalid("program.max_load", "could not bracket the load"))
     }
+}
+
+/// Laws whose exact evaluation is expensive enough that a Chebyshev table
+/// pays for itself on a curve (an exact Maugis–Dugdale state costs ~1 us,
+/// a table lookup ~20 ns; the table costs a few thousand exact states).
+const TABULATE: [&str; 2] = ["maugis", "cos"];
+
+/// Replaces an expensive law by an [`InterpolatedLaw`] accurate to
+/// `rtol / 10` over the interferences the program can reach.
+fn tabulate_if_worth_it(
+    law: LawChoice,
+    model: &GwModel,
+    start: f64,
+    target: Target,
+    rtol: f64,
+    mode: PlanMode,
+    decide: &mut impl FnMut(&str, String, String),
+) -> Result<LawChoice> {
+    if mode == PlanMode::EverythingOn || !TABULATE.contains(&law.name.as_str()) {
+        return Ok(law);
+    }
+    let sigma = model.surface().sigma;
+    let (_, s_top) = model.distribution().numerical_support(1e-300);
+    // Deepest separation: given, or (max-load programs) a generous guess;
+    // interferences beyond the table fall back to the exact law.
+    let d_min = match target {
+        Target::Separation(d) => d,
+        Target::Load(_) => start - 10.0 * sigma,
+    };
+    let lo = law.law.cutoff_interference().max(-10.0 * sigma);
+    let hi = sigma * s_top.min(40.0) - d_min;
+    if !(hi > lo) {
+        return Ok(law);
+    }
+    let table = InterpolatedLaw::new(law.law.clone(), lo, hi, rtol / 10.0)?;
+    let (pa, pr) = table.panels();
+    decide(
+        "law evaluation",
+        format!("Chebyshev table, {} panels", pa + pr),
+        format!(
+            "exact {} replaced by degree-16 interpolants to rtol/10 = {:e} on [{lo:.3e}, {hi:.3e}] m \
+             ({} exact evaluations to build; exact law outside)",
+            law.name,
+            rtol / 10.0,
+            table.build_evaluations()
+        ),
+    );
+    Ok(LawChoice {
+        law: Arc::new(table),
+        ..law
+    })
 }
 
 /// Default start of the program (m): the separation `d` beyond which the
