@@ -20,18 +20,24 @@
 //! | Bradley (rigid, LJ 9-3) | [`bradley`] | none (rigid) | none | `-2 pi w R` at `delta = 0` |
 //! | DMT | [`dmt`] | 0 | 0 | `-2 pi w R` |
 //! | JKR | [`jkr`] | 0 | `-(3/4)(pi^2 w^2 R/E*^2)^(1/3)` | `-1.5 pi w R` |
+//! | Maugis–Dugdale (exact, with the non-contact branch) | [`maugis`] | `-w/sigma0` | end of the stable branch (non-contact for `lambda < 0.938`) | `-2 .. -1.5 pi w R` |
+//! | COS (fit to MD, paired with an interference relation) | [`cos`] | 0 | JKR-like fold (0 at `alpha = 0`) | exact MD value |
 
 pub mod bradley;
+pub mod cos;
 pub mod dmt;
 pub mod errors;
 pub mod hertz;
 pub mod interpolated;
 pub mod jkr;
+pub mod maugis;
 
 pub use bradley::Bradley;
+pub use cos::Cos;
 pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
+pub use maugis::{Maugis, MaugisCurve};
 
 use crate::error::{Error, Result};
 use crate::material::AsperityContact;
@@ -200,11 +206,23 @@ pub enum LawKind {
     Dmt,
     /// [`Jkr`]: short-range adhesion, surface energy inside the contact.
     Jkr,
+    /// [`Maugis`]: exact Maugis–Dugdale, Dugdale stress matched to
+    /// Lennard-Jones (`lambda = 1.1570 mu`, [`AsperityContact::lambda`]).
+    Maugis,
+    /// [`Cos`]: the Carpick–Ogletree–Salmeron fit at the same `lambda`.
+    Cos,
 }
 
 impl LawKind {
     /// Every kind, in the order tables list them.
-    pub const ALL: [LawKind; 4] = [LawKind::Hertz, LawKind::Bradley, LawKind::Dmt, LawKind::Jkr];
+    pub const ALL: [LawKind; 6] = [
+        LawKind::Hertz,
+        LawKind::Bradley,
+        LawKind::Dmt,
+        LawKind::Jkr,
+        LawKind::Maugis,
+        LawKind::Cos,
+    ];
 
     /// Lower-case name as used on the command line and in scenes.
     pub fn name(self) -> &'static str {
@@ -213,6 +231,8 @@ impl LawKind {
             LawKind::Bradley => "bradley",
             LawKind::Dmt => "dmt",
             LawKind::Jkr => "jkr",
+            LawKind::Maugis => "maugis",
+            LawKind::Cos => "cos",
         }
     }
 
@@ -242,16 +262,28 @@ impl LawKind {
     /// Builds the law for one asperity contact.
     ///
     /// # Errors
-    /// When the contact lacks what the law needs (e.g. `w = 0` for JKR).
+    /// [`Error::Invalid`] naming `work_of_adhesion` when an adhesive law is
+    /// asked for with `w = 0`; otherwise what the law's constructor reports.
     pub fn build(self, contact: &AsperityContact) -> Result<Box<dyn AsperityLaw>> {
         let r = contact.radius;
         let e = contact.contact_modulus;
         let w = contact.adhesion.work();
+        if self.is_adhesive() && !(w > 0.0) {
+            return Err(Error::invalid(
+                "work_of_adhesion",
+                format!(
+                    "the {} law needs adhesion (w > 0, got {w}); use hertz for w = 0",
+                    self.name()
+                ),
+            ));
+        }
         Ok(match self {
             LawKind::Hertz => Box::new(Hertz::new(r, e)?),
             LawKind::Bradley => Box::new(Bradley::new(r, w, contact.adhesion.range())?),
             LawKind::Dmt => Box::new(Dmt::new(r, e, w)?),
             LawKind::Jkr => Box::new(Jkr::new(r, e, w)?),
+            LawKind::Maugis => Box::new(Maugis::new(r, e, w, contact.lambda())?),
+            LawKind::Cos => Box::new(Cos::new(r, e, w, contact.lambda())?),
         })
     }
 }
@@ -277,6 +309,22 @@ mod tests {
         let c = AsperityContact::gold_microswitch();
         let laws: Vec<Box<dyn AsperityLaw>> =
             LawKind::ALL.iter().map(|k| k.build(&c).unwrap()).collect();
-        assert_eq!(laws.len(), 4);
+        assert_eq!(laws.len(), LawKind::ALL.len());
+    }
+
+    #[test]
+    fn adhesive_laws_reject_zero_work_of_adhesion() {
+        let mut c = AsperityContact::gold_microswitch();
+        c.adhesion = crate::material::Adhesion::new(0.0, 3e-10).unwrap();
+        for k in LawKind::ALL {
+            let r = k.build(&c);
+            if k.is_adhesive() {
+                let e = r.unwrap_err();
+                assert_eq!(e.field(), Some("work_of_adhesion"), "{k:?}");
+                assert!(e.to_string().contains(k.name()), "{e}");
+            } else {
+                assert!(r.is_ok());
+            }
+        }
     }
 }

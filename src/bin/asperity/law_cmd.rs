@@ -10,10 +10,11 @@ use std::f64::consts::PI;
 /// Arguments of `asperity law`.
 #[derive(Args, Debug)]
 pub struct LawArgs {
-    /// The law: hertz, bradley, dmt, jkr.
+    /// The law: hertz, bradley, dmt, jkr, maugis, cos.
     #[arg(long)]
     law: String,
-    /// Maugis parameter lambda (> 0) for laws that depend on it; default 1.
+    /// Maugis parameter lambda (> 0) for laws that depend on it (maugis,
+    /// cos); default 1.
     #[arg(long, allow_negative_numbers = true)]
     lambda: Option<f64>,
     /// Print one JSON object instead of a table.
