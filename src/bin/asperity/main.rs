@@ -5,6 +5,7 @@
 //! argument), 1 a computation that failed.
 
 mod default_study;
+mod fn_cmd;
 mod law_cmd;
 
 use clap::{Parser, Subcommand};
@@ -22,6 +23,8 @@ struct Cli {
 enum Command {
     /// Dimensionless facts of one single-asperity law (Maugis units).
     Law(law_cmd::LawArgs),
+    /// Greenwood–Williamson integrals F_n(h) of a height distribution.
+    Fn(fn_cmd::FnArgs),
 }
 
 /// Result of a subcommand.
@@ -56,14 +59,20 @@ fn main() -> ExitCode {
             }
             // One line naming the argument, not clap's multi-line usage.
             let text = e.render().to_string();
-            let first = text.lines().next().unwrap_or("error: bad arguments");
-            eprintln!("{first}");
+            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+            let first = lines.next().unwrap_or("error: bad arguments");
+            // "...not provided:" names the argument on the next line.
+            match lines.next().filter(|_| first.ends_with(':')) {
+                Some(what) => eprintln!("{first} {what}"),
+                None => eprintln!("{first}"),
+            }
             return ExitCode::from(2);
         }
     };
     let result = match cli.command {
         None => default_study::run(),
         Some(Command::Law(args)) => law_cmd::run(&args),
+        Some(Command::Fn(args)) => fn_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
