@@ -37,6 +37,7 @@ pub mod numeric;
 pub mod plot;
 pub mod scene;
 pub mod sweep;
+pub mod special;
 
 pub use error::{Error, Result};
 

@@ -47,3 +47,107 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
         false
     }
 }
+
+mod empirical;
+mod exponential;
+mod gaussian;
+mod quad;
+mod truncated;
+mod weibull;
+
+pub use empirical::Empirical;
+pub use exponential::Exponential;
+pub use gaussian::Gaussian;
+pub use truncated::TruncatedGaussian;
+pub use weibull::Weibull;
+
+use crate::error::{Error, Result};
+use std::sync::Arc;
+
+/// Names accepted by [`by_name`].
+pub const NAMES: [&str; 5] = [
+    "gaussian",
+    "exponential",
+    "weibull",
+    "truncated-gaussian",
+    "empirical",
+];
+
+/// Parameters of the distributions built by [`by_name`], as in the scene's
+/// `[surface]` table; each is needed only by its distribution.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct DistributionParams {
+    /// Weibull shape `k` in `[0.1, 100]` (`"weibull"`).
+    pub weibull_shape: Option<f64>,
+    /// Truncation `k > 0` in standard deviations (`"truncated-gaussian"`).
+    pub truncation: Option<f64>,
+    /// Measured summit heights (m), at least 2 (`"empirical"`).
+    pub heights: Option<Vec<f64>>,
+}
+
+/// Builds the distribution called `name` (one of [`NAMES`]).
+///
+/// Errors name the scene field (`surface.distribution`,
+/// `surface.weibull_shape`, `surface.truncation`, `surface.heights`).
+///
+/// # Errors
+/// [`Error::Invalid`] for an unknown name or a missing parameter;
+/// the constructor's error (renamed to the scene field) for a bad one.
+pub fn by_name(name: &str, params: &DistributionParams) -> Result<Arc<dyn HeightDistribution>> {
+    let field = |e: Error, f: &str| rename(e, f);
+    let missing = |f: &str| {
+        Error::invalid(
+            format!("surface.{f}"),
+            format!("required for distribution = {name:?}"),
+        )
+    };
+    Ok(match name {
+        "gaussian" => Arc::new(Gaussian::new()),
+        "exponential" => Arc::new(Exponential::new()),
+        "weibull" => {
+            let k = params
+                .weibull_shape
+                .ok_or_else(|| missing("weibull_shape"))?;
+            Arc::new(Weibull::new(k).map_err(|e| field(e, "surface.weibull_shape"))?)
+        }
+        "truncated-gaussian" => {
+            let k = params.truncation.ok_or_else(|| missing("truncation"))?;
+            Arc::new(TruncatedGaussian::new(k).map_err(|e| field(e, "surface.truncation"))?)
+        }
+        "empirical" => {
+            let h = params.heights.as_ref().ok_or_else(|| missing("heights"))?;
+            Arc::new(Empirical::new(h).map_err(|e| field(e, "surface.heights"))?)
+        }
+        other => {
+            return Err(Error::invalid(
+                "surface.distribution",
+                format!(
+                    "unknown distribution {other:?}; known: {}",
+                    NAMES.join(", ")
+                ),
+            ))
+        }
+    })
+}
+
+/// Prefixes the error's field with the scene path (`heights[3]` ->
+/// `surface.heights[3]`).
+fn rename(e: Error, field: &str) -> Error {
+    let prefix = field.rsplit_once('.').map_or("", |(p, _)| p);
+    match e {
+        Error::OutOfRange {
+            name,
+            value,
+            allowed,
+        } => Error::OutOfRange {
+            name: format!("{prefix}.{name}"),
+            value,
+            allowed,
+        },
+        Error::Invalid { name, reason } => Error::Invalid {
+            name: format!("{prefix}.{name}"),
+            reason,
+        },
+        other => other,
+    }
+}

@@ -61,7 +61,12 @@ pub fn build_surface(scene: &Scene) -> Result<RoughSurface> {
 /// # Errors
 /// Unknown names or bad parameters, naming the scene field.
 pub fn build_distribution(spec: &SurfaceSpec) -> Result<Arc<dyn HeightDistribution>> {
-    crate::heights::from_scene(spec).map_err(|e| {
+    let params = crate::heights::DistributionParams {
+        weibull_shape: spec.weibull_shape,
+        truncation: spec.truncation,
+        heights: spec.heights.clone(),
+    };
+    crate::heights::by_name(&spec.distribution, &params).map_err(|e| {
         if e.field().is_some_and(|f| f.starts_with("surface.")) {
             e
         } else {

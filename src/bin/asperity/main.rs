@@ -5,6 +5,7 @@
 //! argument), 1 a computation that failed.
 
 mod default_study;
+mod fn_cmd;
 mod law_cmd;
 mod map_cmd;
 mod run_cmd;
@@ -33,6 +34,8 @@ enum Command {
     Merge(sweep_cmd::MergeArgs),
     /// Adhesion map: where each law is within a tolerance of the full solution.
     Map(map_cmd::MapArgs),
+    /// Greenwood–Williamson integrals F_n(h) of a height distribution.
+    Fn(fn_cmd::FnArgs),
 }
 
 /// Result of a subcommand.
@@ -84,6 +87,7 @@ fn main() -> ExitCode {
         Some(Command::Sweep(args)) => sweep_cmd::run(&args),
         Some(Command::Merge(args)) => sweep_cmd::run_merge(&args),
         Some(Command::Map(args)) => map_cmd::run(&args),
+        Some(Command::Fn(args)) => fn_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
