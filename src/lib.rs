@@ -36,8 +36,8 @@ pub mod material;
 pub mod numeric;
 pub mod plot;
 pub mod scene;
-pub mod sweep;
 pub mod special;
+pub mod sweep;
 
 pub use error::{Error, Result};
 

@@ -116,11 +116,13 @@ fn planned_runs_do_less_work_and_agree_within_tolerance() {
         let planned = Plan::new(&scene, PlanMode::Planned).unwrap();
         let full = Plan::new(&scene, PlanMode::EverythingOn).unwrap();
         let (rp, rf) = (planned.run().unwrap(), full.run().unwrap());
+        // Closed forms and cheaper laws: several times faster, so a loaded
+        // machine's noise cannot reverse the order.
         assert!(
-            rp.evaluations < rf.evaluations,
-            "{name}: planned {} vs everything-on {} law evaluations",
-            rp.evaluations,
-            rf.evaluations
+            rp.seconds < rf.seconds,
+            "{name}: planned {} s vs everything-on {} s",
+            rp.seconds,
+            rf.seconds
         );
         let rtol = scene.accuracy.rtol;
         for (pa, fa) in [

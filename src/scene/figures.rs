@@ -38,6 +38,13 @@ pub fn si_prefix(values: impl Iterator<Item = f64>) -> (f64, &'static str) {
         .unwrap_or(PREFIXES[0])
 }
 
+/// A display unit for areas: the length prefix that puts the largest
+/// `sqrt(area)` in `[1, 1000)`, squared, e.g. `(1e-12, "u")` for um^2.
+pub fn si_prefix_area(values: impl Iterator<Item = f64>) -> (f64, &'static str) {
+    let (s, p) = si_prefix(values.map(|v| v.abs().sqrt()));
+    (s * s, p)
+}
+
 /// Writes `curve.csv`, `summary.json` and the charts the scene's outputs
 /// allow into `dir` (created if missing). Returns the files written.
 ///
@@ -94,7 +101,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
         ));
     }
     if o.load && o.area {
-        let (s_a, p_a) = si_prefix(all().filter_map(|s| s.area));
+        let (s_a, p_a) = si_prefix_area(all().filter_map(|s| s.area));
         let series = legs
             .iter()
             .map(|(name, leg)| Series {
@@ -143,5 +150,8 @@ mod tests {
         assert_eq!(si_prefix([999e-9].into_iter()), (1e-9, "n"));
         assert_eq!(si_prefix([0.0].into_iter()), (1.0, ""));
         assert_eq!(si_prefix([f64::NAN, 3.0].into_iter()), (1.0, ""));
+        let (s, p) = si_prefix_area([2.2e-11].into_iter());
+        assert_eq!(p, "u");
+        assert!((s - 1e-12).abs() < 1e-27);
     }
 }

@@ -16,7 +16,7 @@ mod run;
 mod schema;
 
 pub use build::{build_contact, build_distribution, build_surface};
-pub use figures::{charts, si_prefix, write_outputs};
+pub use figures::{charts, si_prefix, si_prefix_area, write_outputs};
 pub use output::{curve_csv, Summary};
 pub use plan::{start_separation, Decision, LawChoice, Plan, PlanMode, Target};
 pub use run::Results;

@@ -138,7 +138,7 @@ impl Scene {
                 allowed: Allowed::closed(2.0, 1e6),
             });
         }
-        Allowed::closed(1e-12, 1e-2).check("accuracy.rtol", self.accuracy.rtol)?;
+        Allowed::closed(1e-12, 0.1).check("accuracy.rtol", self.accuracy.rtol)?;
         Ok(())
     }
 }

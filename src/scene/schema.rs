@@ -179,7 +179,7 @@ impl Default for OutputsSpec {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AccuracySpec {
-    /// Relative tolerance of every output, in [1e-12, 1e-2]; default 1e-6.
+    /// Relative tolerance of every output, in [1e-12, 0.1]; default 1e-6.
     #[serde(default = "default_rtol")]
     pub rtol: f64,
 }

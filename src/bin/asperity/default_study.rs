@@ -72,7 +72,7 @@ fn separation_table(results: &Results) {
     );
     let n = c.approach.len();
     let step = (n / TABLE_ROWS).max(1);
-    let show = |x: Option<f64>, s: f64| x.map_or("-".into(), |v| format!("{:.5}", v / s));
+    let show = |x: Option<f64>, s: f64| x.map_or("-".into(), |v| format!("{:.4e}", v / s));
     for i in (0..n).rev().step_by(step) {
         let (a, r) = (&c.approach[i], &c.retract[i]);
         println!(
