@@ -35,6 +35,7 @@ pub mod law;
 pub mod material;
 pub mod numeric;
 pub mod scene;
+pub mod special;
 
 pub use error::{Error, Result};
 

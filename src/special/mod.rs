@@ -1,0 +1,2 @@
+//! Special functions whose accuracy we promise, each tested against mpmath.
+pub mod elliptic;
