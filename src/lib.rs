@@ -36,6 +36,7 @@ pub mod material;
 pub mod numeric;
 pub mod scene;
 pub mod special;
+pub mod sphere;
 
 pub use error::{Error, Result};
 
