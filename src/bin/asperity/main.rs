@@ -6,6 +6,7 @@
 
 mod default_study;
 mod law_cmd;
+mod sphere_cmd;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -22,6 +23,8 @@ struct Cli {
 enum Command {
     /// Dimensionless facts of one single-asperity law (Maugis units).
     Law(law_cmd::LawArgs),
+    /// Full Lennard-Jones sphere solver: pull-off facts and the S-curve.
+    Sphere(sphere_cmd::SphereArgs),
 }
 
 /// Result of a subcommand.
@@ -64,6 +67,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         None => default_study::run(),
         Some(Command::Law(args)) => law_cmd::run(&args),
+        Some(Command::Sphere(args)) => sphere_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
