@@ -37,6 +37,7 @@ pub mod numeric;
 pub mod plot;
 pub mod scene;
 pub mod special;
+pub mod sphere;
 pub mod sweep;
 
 pub use error::{Error, Result};

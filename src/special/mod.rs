@@ -7,9 +7,11 @@
 //! - [`gaussian_fn`]: the Greenwood–Williamson integrals
 //!   `F_n(h) = int_h^inf (s-h)^n phi(s) ds` of the standard normal for
 //!   `n = 0, 1/2, 1, 3/2, 2, 5/2`;
-//! - [`gamma`]: `Gamma(x)` and `ln Gamma(x)` for real `x`.
+//! - [`gamma`]: `Gamma(x)` and `ln Gamma(x)` for real `x`;
+//! - [`elliptic`]: complete elliptic integrals `K(m)`, `E(m)`.
 
 mod chebyshev;
+pub mod elliptic;
 pub mod gamma;
 pub mod gaussian_fn;
 #[allow(missing_docs)]

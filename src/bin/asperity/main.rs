@@ -9,6 +9,7 @@ mod fn_cmd;
 mod law_cmd;
 mod map_cmd;
 mod run_cmd;
+mod sphere_cmd;
 mod sweep_cmd;
 
 use clap::{Parser, Subcommand};
@@ -36,6 +37,8 @@ enum Command {
     Map(map_cmd::MapArgs),
     /// Greenwood–Williamson integrals F_n(h) of a height distribution.
     Fn(fn_cmd::FnArgs),
+    /// Full Lennard-Jones sphere solver: pull-off facts and the S-curve.
+    Sphere(sphere_cmd::SphereArgs),
 }
 
 /// Result of a subcommand.
@@ -88,6 +91,7 @@ fn main() -> ExitCode {
         Some(Command::Merge(args)) => sweep_cmd::run_merge(&args),
         Some(Command::Map(args)) => map_cmd::run(&args),
         Some(Command::Fn(args)) => fn_cmd::run(&args),
+        Some(Command::Sphere(args)) => sphere_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,131 @@
+//! `asperity sphere`: the full Lennard-Jones sphere solver's pull-off facts
+//! (Maugis units) and, on request, the traced load–approach curve as CSV.
+
+use crate::CliError;
+use asperity::sphere::{Shape, SolverOptions, SphereProblem, MIN_SIZE_RATIO};
+use clap::Args;
+use serde::Serialize;
+use std::io::Write;
+
+/// Arguments of `asperity sphere`.
+#[derive(Args, Debug)]
+pub struct SphereArgs {
+    /// Tabor parameter mu = (R w^2/(E*^2 z0^3))^(1/3), in [0.005, 20].
+    #[arg(long, allow_negative_numbers = true)]
+    mu: f64,
+    /// Size ratio rho = R/z0 (>= 10) for a true sphere; paraboloid if absent.
+    #[arg(long, allow_negative_numbers = true)]
+    rho: Option<f64>,
+    /// Mesh resolution multiplier (default 1).
+    #[arg(long, allow_negative_numbers = true)]
+    resolution: Option<f64>,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    json: bool,
+    /// Write the traced curve (CSV with a header) to this file.
+    #[arg(long)]
+    curve: Option<std::path::PathBuf>,
+}
+
+/// The facts printed, in Maugis units; `None` prints as JSON `null`.
+#[derive(Serialize, Debug)]
+struct SphereFactsOut {
+    mu: f64,
+    rho: Option<f64>,
+    /// Most tensile load, units of `pi w R`.
+    pull_off_load_control: f64,
+    /// Load where the contact snaps off under displacement control (units
+    /// `pi w R`); null when the curve has no S (small mu).
+    jump_out_load: Option<f64>,
+    /// Interference of that snap, units `(pi^2 w^2 R/K^2)^(1/3)`.
+    jump_out_interference: Option<f64>,
+    /// Interference where the approaching sphere jumps in, same units.
+    jump_in_interference: Option<f64>,
+    /// Zero-load contact radius, units `(pi w R^2/K)^(1/3)`.
+    contact_radius_zero_load: Option<f64>,
+    /// Mesh nodes at the pull-off.
+    nodes: usize,
+}
+
+pub fn run(args: &SphereArgs) -> crate::CliResult {
+    asperity::error::Allowed::closed(0.005, 20.0).check("--mu", args.mu)?;
+    let shape = match args.rho {
+        Some(rho) => {
+            asperity::error::Allowed::closed(MIN_SIZE_RATIO, 1e12).check("--rho", rho)?;
+            Shape::Sphere { rho }
+        }
+        None => Shape::Paraboloid,
+    };
+    let mut opts = SolverOptions::default();
+    if let Some(r) = args.resolution {
+        opts.resolution = asperity::error::positive("--resolution", r)?;
+    }
+    let problem = SphereProblem::new(args.mu, shape, opts)?;
+    let f = problem.facts()?;
+    let out = SphereFactsOut {
+        mu: args.mu,
+        rho: args.rho,
+        pull_off_load_control: f.pull_off.load_bar,
+        jump_out_load: f.jump_out.map(|j| j.load_bar),
+        jump_out_interference: f.jump_out.map(|j| j.interference_bar),
+        jump_in_interference: f.jump_in.map(|j| j.interference_bar),
+        contact_radius_zero_load: f.zero_load_radius_bar,
+        nodes: f.nodes,
+    };
+    if let Some(path) = &args.curve {
+        let curve = problem.trace()?;
+        let mut file = std::fs::File::create(path)
+            .map_err(|e| CliError::Usage(format!("--curve {}: {e}", path.display())))?;
+        let mut text = String::from(
+            "central_gap,approach,load_bar,interference_bar,radius,radius_bar,d_approach,d_load\n",
+        );
+        for p in &curve {
+            text.push_str(&format!(
+                "{},{},{},{},{},{},{},{}\n",
+                p.central_gap,
+                p.approach,
+                p.load_bar,
+                p.interference_bar,
+                p.radius,
+                p.radius_bar,
+                p.d_approach,
+                p.d_load
+            ));
+        }
+        file.write_all(text.as_bytes())
+            .map_err(|e| CliError::Failed(format!("--curve {}: {e}", path.display())))?;
+    }
+    if args.json {
+        let s = serde_json::to_string(&out).map_err(|e| CliError::Failed(e.to_string()))?;
+        println!("{s}");
+    } else {
+        let show =
+            |x: Option<f64>| x.map_or("none (no S-curve)".to_string(), |v| format!("{v:.6}"));
+        let shape = args
+            .rho
+            .map_or("paraboloid".to_string(), |r| format!("sphere, rho = {r}"));
+        println!("full LJ sphere solver        mu = {}, {shape}", out.mu);
+        println!(
+            "pull-off, load control       {:.6}  [pi w R]",
+            out.pull_off_load_control
+        );
+        println!(
+            "jump-out load                {}  [pi w R]",
+            show(out.jump_out_load)
+        );
+        println!(
+            "jump-out interference        {}  [(pi^2 w^2 R/K^2)^(1/3)]",
+            show(out.jump_out_interference)
+        );
+        println!(
+            "jump-in interference         {}  [(pi^2 w^2 R/K^2)^(1/3)]",
+            show(out.jump_in_interference)
+        );
+        println!(
+            "contact radius at zero load  {}  [(pi w R^2/K)^(1/3)]",
+            show(out.contact_radius_zero_load)
+        );
+        println!("mesh nodes at pull-off       {}", out.nodes);
+    }
+    Ok(())
+}

@@ -1,0 +1,116 @@
+//! Complete elliptic integrals of the first and second kind, parameter
+//! convention (`m = k^2`, as in DLMF 19.2 and mpmath's `ellipk`, `ellipe`):
+//!
+//! ```text
+//! K(m) = int_0^(pi/2) dt / sqrt(1 - m sin^2 t)
+//! E(m) = int_0^(pi/2) sqrt(1 - m sin^2 t) dt
+//! ```
+//!
+//! Near `m = 1`, `K` has a logarithmic singularity, `K ~ ln(4/k') = ln 4 - ln(m1)/2`
+//! with `m1 = 1 - m`, and `m` itself has lost the digits of `m1`: the `*_comp`
+//! functions take the complementary parameter `m1` and keep full relative
+//! accuracy all the way to `m1 -> 0`.
+//!
+//! Method: for `m1 >= 0.1` the arithmetic–geometric mean (DLMF 19.8.1, 19.8.6);
+//! for `m1 < 0.1` the logarithmic series in `m1` (DLMF 19.12.1, 19.12.2),
+//! which converges like `m1^n` (24 terms give 1e-17 at `m1 = 0.1`). Tested
+//! against mpmath (tests/data/elliptic.py) to ~1e-15 relative.
+
+use std::f64::consts::{FRAC_PI_2, LN_2};
+
+/// Below this complementary parameter the log series is used.
+const SERIES_BELOW: f64 = 0.1;
+
+/// `K(m)` and `E(m)` from the complementary parameter `m1 = 1 - m`
+/// (`m1 > 0`), by the AGM: `K = pi / (2 M(1, sqrt(m1)))`,
+/// `E = K (1 - sum_n 2^(n-1) c_n^2)` with `c_0^2 = m`.
+fn agm_ke(m1: f64) -> (f64, f64) {
+    let mut a = 1.0f64;
+    let mut b = m1.sqrt();
+    let mut sum = 0.5 * (1.0 - m1);
+    let mut pow2 = 0.5;
+    for _ in 0..40 {
+        let c = 0.5 * (a - b);
+        let a_next = 0.5 * (a + b);
+        let b_next = (a * b).sqrt();
+        pow2 *= 2.0;
+        sum += pow2 * c * c;
+        a = a_next;
+        b = b_next;
+        if c.abs() <= 1e-17 * a {
+            break;
+        }
+    }
+    let k = FRAC_PI_2 / a;
+    (k, k * (1.0 - sum))
+}
+
+/// Log series in `q = m1` (DLMF 19.12.1-2) with `L = ln(1/k') = -ln(q)/2`:
+/// `K = sum a_n q^n (L + d_n)`, `E = 1 + (1/2) sum b_n q^(n+1) (L + d_n - 1/((2n+1)(2n+2)))`,
+/// `a_n = ((1/2)_n/n!)^2`, `b_n = (1/2)_n (3/2)_n / ((2)_n n!)`,
+/// `d_0 = 2 ln 2`, `d_(n+1) = d_n - 1/((n+1)(2n+1))`.
+fn series_ke(q: f64) -> (f64, f64) {
+    let l = -0.5 * q.ln();
+    let (mut a, mut b, mut d, mut qn) = (1.0f64, 1.0f64, 2.0 * LN_2, 1.0f64);
+    let (mut k, mut e) = (0.0f64, 0.0f64);
+    for n in 0..60 {
+        let nf = n as f64;
+        let tk = a * qn * (l + d);
+        let te = b * qn * q * (l + d - 1.0 / ((2.0 * nf + 1.0) * (2.0 * nf + 2.0)));
+        k += tk;
+        e += te;
+        if tk.abs() <= 1e-18 * k.abs() && te.abs() <= 1e-18 * e.abs().max(1e-300) {
+            break;
+        }
+        a *= ((nf + 0.5) / (nf + 1.0)).powi(2);
+        b *= (nf + 0.5) * (nf + 1.5) / ((nf + 2.0) * (nf + 1.0));
+        d -= 1.0 / ((nf + 1.0) * (2.0 * nf + 1.0));
+        qn *= q;
+    }
+    (k, 1.0 + 0.5 * e)
+}
+
+/// `(K, E)` at complementary parameter `m1 = 1 - m`, for `m1` in `[0, inf)`
+/// (`m <= 1`). `m1 = 0` gives `(inf, 1)`; NaN or negative `m1` gives NaN.
+pub fn ellip_ke_comp(m1: f64) -> (f64, f64) {
+    if !(m1 >= 0.0) {
+        (f64::NAN, f64::NAN)
+    } else if m1 == 0.0 {
+        (f64::INFINITY, 1.0)
+    } else if m1 < SERIES_BELOW {
+        series_ke(m1)
+    } else {
+        agm_ke(m1)
+    }
+}
+
+/// `(K(m), E(m))` for `m <= 1`; NaN for `m > 1` or NaN.
+pub fn ellip_ke(m: f64) -> (f64, f64) {
+    if !(m <= 1.0) {
+        return (f64::NAN, f64::NAN);
+    }
+    ellip_ke_comp(1.0 - m)
+}
+
+/// Complete elliptic integral of the first kind `K(m)` (`m <= 1`).
+pub fn ellip_k(m: f64) -> f64 {
+    ellip_ke(m).0
+}
+
+/// Complete elliptic integral of the second kind `E(m)` (`m <= 1`).
+pub fn ellip_e(m: f64) -> f64 {
+    ellip_ke(m).1
+}
+
+/// `K` from the complementary parameter `m1 = 1 - m >= 0`, accurate as `m1 -> 0`.
+pub fn ellip_k_comp(m1: f64) -> f64 {
+    ellip_ke_comp(m1).0
+}
+
+/// `E` from the complementary parameter `m1 = 1 - m >= 0`, accurate as `m1 -> 0`.
+pub fn ellip_e_comp(m1: f64) -> f64 {
+    ellip_ke_comp(m1).1
+}
+
+#[cfg(test)]
+mod tests;

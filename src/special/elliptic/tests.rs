@@ -1,0 +1,114 @@
+use super::*;
+use proptest::prelude::*;
+
+#[derive(serde::Deserialize)]
+struct RawRow {
+    m1: String,
+    k_comp: String,
+    e_comp: String,
+    m: String,
+    k: Option<String>,
+    e: String,
+}
+
+struct Row {
+    m1: f64,
+    k_comp: f64,
+    e_comp: f64,
+    m: f64,
+    k: Option<f64>,
+    e: f64,
+}
+
+#[derive(serde::Deserialize)]
+struct Data {
+    rows: Vec<RawRow>,
+}
+
+fn rows() -> Vec<Row> {
+    let text = include_str!("../../../tests/data/elliptic.json");
+    let p = |s: &str| s.parse::<f64>().unwrap();
+    serde_json::from_str::<Data>(text)
+        .unwrap()
+        .rows
+        .iter()
+        .map(|r| Row {
+            m1: p(&r.m1),
+            k_comp: p(&r.k_comp),
+            e_comp: p(&r.e_comp),
+            m: p(&r.m),
+            k: r.k.as_deref().map(p),
+            e: p(&r.e),
+        })
+        .collect()
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    ((a - b) / b).abs()
+}
+
+/// Against mpmath (330 digits): AGM and the log series are both good to a few
+/// ulps; 2e-15 relative allows ~9 ulps of rounding in the sums.
+#[test]
+fn matches_mpmath_including_m_to_one() {
+    let rows = rows();
+    assert!(rows.len() > 60);
+    let mut worst = 0.0f64;
+    for r in &rows {
+        let (k, e) = ellip_ke_comp(r.m1);
+        worst = worst.max(rel(k, r.k_comp)).max(rel(e, r.e_comp));
+        assert!(
+            rel(k, r.k_comp) < 2e-15,
+            "K m1={}: {k} vs {}",
+            r.m1,
+            r.k_comp
+        );
+        assert!(
+            rel(e, r.e_comp) < 2e-15,
+            "E m1={}: {e} vs {}",
+            r.m1,
+            r.e_comp
+        );
+        let (k2, e2) = ellip_ke(r.m);
+        match r.k {
+            Some(kr) => assert!(rel(k2, kr) < 2e-15, "K m={}: {k2} vs {kr}", r.m),
+            None => assert_eq!(k2, f64::INFINITY),
+        }
+        assert!(rel(e2, r.e) < 2e-15, "E m={}", r.m);
+    }
+    // The log singularity: K(1 - 1e-300) = ln 4 + 150 ln 10 = 346.77...
+    assert!(rel(ellip_k_comp(1e-300), 346.774_058_310_226_74) < 1e-15);
+    eprintln!("worst relative error against mpmath: {worst:e}");
+}
+
+#[test]
+fn special_values_and_bad_input() {
+    use std::f64::consts::FRAC_PI_2;
+    assert_eq!(ellip_k(0.0), FRAC_PI_2);
+    assert_eq!(ellip_e(0.0), FRAC_PI_2);
+    assert_eq!(ellip_k(1.0), f64::INFINITY);
+    assert_eq!(ellip_e(1.0), 1.0);
+    assert!(ellip_k(1.5).is_nan() && ellip_e(1.0 + 1e-15).is_nan());
+    assert!(ellip_k(f64::NAN).is_nan() && ellip_e_comp(f64::NAN).is_nan());
+    assert!(ellip_k_comp(-1e-300).is_nan());
+}
+
+proptest! {
+    /// Legendre's relation `E K' + E' K - K K' = pi/2` (DLMF 19.7.1) couples the
+    /// two branches of the implementation (m and m1 on opposite sides of 0.1).
+    #[test]
+    fn legendre_relation(m in 0.0f64..1.0) {
+        let (k, e) = ellip_ke(m);
+        let (kp, ep) = ellip_ke_comp(m);
+        let lhs = e * kp + ep * k - k * kp;
+        prop_assert!((lhs - std::f64::consts::FRAC_PI_2).abs() < 4e-15 * k * kp, "{lhs}");
+    }
+
+    /// The two methods agree where both converge fast (either side of the switch).
+    #[test]
+    fn series_and_agm_agree(q in 0.02f64..0.3) {
+        let (k1, e1) = series_ke(q);
+        let (k2, e2) = agm_ke(q);
+        prop_assert!(rel(k1, k2) < 3e-15 && rel(e1, e2) < 3e-15);
+    }
+}

@@ -1,0 +1,385 @@
+//! The full single-sphere adhesive solver (Greenwood 1997, Feng 2000,
+//! Greenwood 2009 appendix 1): an elastic half-space and a rigid paraboloid or
+//! true sphere interacting through the Lennard-Jones (Derjaguin 9-3) traction
+//! `sigma(h) = (8w/(3 z0)) [(z0/h)^9 - (z0/h)^3]` (Derjaguin approximation).
+//!
+//! The problem depends only on the Tabor parameter
+//! `mu = (R w^2/(E*^2 z0^3))^(1/3)` (and, for a true sphere, on `rho = R/z0`).
+//! Internally radii are in `(R^2 w/E*)^(1/3)`, gaps in `z0`, pressures in
+//! `(w E*^2/R)^(1/3)` (physics.md); results are also given in Maugis units
+//! (`Pbar = P/(pi w R)`, `Dbar = delta/(pi^2 w^2 R/K^2)^(1/3)`,
+//! `A = a/(pi w R^2/K)^(1/3)`, `K = 4E*/3`) to compare with [`crate::law`].
+//!
+//! Method: piecewise-linear pressure on a radial mesh graded towards the
+//! contact edge ([`mesh`]), the compliance matrix of
+//! [`compliance`] (elliptic integrals with the log singularity treated
+//! exactly), Newton–Raphson on the gaps at a prescribed central gap `H(0)`
+//! ([`newton`](self)), and continuation in `H(0)` so that the whole S-shaped
+//! load–approach curve, unstable parts included, is traced. The mesh is
+//! rebuilt around the edge as it moves.
+//!
+//! ```
+//! use asperity::sphere::{Shape, SolverOptions, SphereProblem};
+//! let p = SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::coarse())?;
+//! let facts = p.facts()?;
+//! // Between JKR (-1.5) and DMT/Bradley (-2) in units of pi w R.
+//! assert!(facts.pull_off.load_bar < -1.5 && facts.pull_off.load_bar > -2.0);
+//! # Ok::<(), asperity::Error>(())
+//! ```
+
+pub mod calibrate;
+pub mod compliance;
+pub mod force_law;
+pub mod mesh;
+mod newton;
+mod quadrature;
+mod trace;
+
+pub use calibrate::{Calibration, CalibrationCache};
+
+use crate::error::{positive, Allowed, Error, Result};
+use mesh::MeshSpec;
+use serde::{Deserialize, Serialize};
+use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
+
+/// Bump when a change alters solver results: calibrations cached on disk are
+/// keyed by it.
+pub const SOLVER_VERSION: u32 = 1;
+
+/// Smallest size ratio `rho = R/z0` accepted for the true sphere.
+pub const MIN_SIZE_RATIO: f64 = 10.0;
+
+/// The undeformed shape of the rigid body.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub enum Shape {
+    /// `f(r) = r^2/(2R)` (Hertz).
+    Paraboloid,
+    /// True sphere `f(r) = R - sqrt(R^2 - r^2)`, integrated out to `r = R`,
+    /// with size ratio `rho = R/z0 >= 10` (Greenwood 2009).
+    Sphere {
+        /// `rho = R/z0`.
+        rho: f64,
+    },
+}
+
+/// Numerical controls; [`Default`] meets the accuracy targets of
+/// docs/performance.md (pull-off converged to < 1e-3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverOptions {
+    /// Mesh resolution multiplier (> 0): spacing at the edge and grading
+    /// scale as `1/resolution`. Default 1.
+    pub resolution: f64,
+    /// Rigid gap (units `z0`) at the outer mesh radius; the force beyond is
+    /// added in closed form. Default 60.
+    pub far_gap: f64,
+    /// Central gap `H(0)/z0` where tracing starts (far apart). Default 6.
+    pub start_gap: f64,
+    /// Tracing stops once the load exceeds this, in units of `pi w R`. Default 2.
+    pub max_load_bar: f64,
+    /// Step along the curve in Maugis units (`hypot(dPbar, dDbar)`). Default 0.02.
+    pub arc_step: f64,
+    /// Smallest central gap `H(0)/z0` traced. Default 0.3.
+    pub min_gap: f64,
+    /// Newton tolerance on the gap residual (units `z0`). Default 1e-10.
+    pub tolerance: f64,
+    /// Newton iterations before a step is retried smaller. Default 30.
+    pub max_newton_iterations: usize,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        SolverOptions {
+            resolution: 1.0,
+            far_gap: 60.0,
+            start_gap: 6.0,
+            max_load_bar: 2.0,
+            arc_step: 0.02,
+            min_gap: 0.3,
+            tolerance: 1e-10,
+            max_newton_iterations: 30,
+        }
+    }
+}
+
+impl SolverOptions {
+    /// A coarse, fast setting for tests and examples (~1% accuracy).
+    pub fn coarse() -> Self {
+        SolverOptions {
+            resolution: 0.5,
+            far_gap: 30.0,
+            arc_step: 0.1,
+            ..Self::default()
+        }
+    }
+
+    fn validate(&self) -> Result<()> {
+        positive("resolution", self.resolution)?;
+        Allowed::open(2.0, 1e6).check("far_gap", self.far_gap)?;
+        Allowed::open(1.3, 1e3).check("start_gap", self.start_gap)?;
+        positive("max_load_bar", self.max_load_bar)?;
+        positive("arc_step", self.arc_step)?;
+        Allowed::open(0.05, 1.0).check("min_gap", self.min_gap)?;
+        Allowed::open(0.0, 1e-3).check("tolerance", self.tolerance)?;
+        if self.max_newton_iterations == 0 {
+            return Err(Error::invalid("max_newton_iterations", "must be >= 1"));
+        }
+        Ok(())
+    }
+}
+
+/// One point of the load–approach curve.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SpherePoint {
+    /// Central gap `H(0)/z0` (the continuation parameter).
+    pub central_gap: f64,
+    /// Approach (interference) `alpha/z0`; 0 when the rigid sphere's apex
+    /// is at `z0` from the undeformed half-space.
+    pub approach: f64,
+    /// Load `P/(pi w R)`, > 0 compressive.
+    pub load_bar: f64,
+    /// Contact radius (radius of maximum tension) in `(R^2 w/E*)^(1/3)`.
+    pub radius: f64,
+    /// Interference in Maugis units `Dbar = alpha/(pi^2 w^2 R/K^2)^(1/3)`
+    /// `= (alpha/z0) / (mu (9 pi^2/16)^(1/3))`.
+    pub interference_bar: f64,
+    /// Contact radius in Maugis units `A = a/(pi w R^2/K)^(1/3)`.
+    pub radius_bar: f64,
+    /// `d(alpha/z0)/dH(0)`: > 0 on parts unstable under displacement control.
+    pub d_approach: f64,
+    /// `d(P/(pi w R))/dH(0)`.
+    pub d_load: f64,
+}
+
+/// A critical point in Maugis units.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Critical {
+    /// Load `P/(pi w R)`.
+    pub load_bar: f64,
+    /// Interference `Dbar`.
+    pub interference_bar: f64,
+    /// Contact radius `A`.
+    pub radius_bar: f64,
+    /// Central gap `H(0)/z0`.
+    pub central_gap: f64,
+}
+
+/// The derived facts of one solver curve.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SphereFacts {
+    /// Pull-off under load control: the minimum load.
+    pub pull_off: Critical,
+    /// Jump-out under displacement control (`d alpha/dH(0) = 0`, local
+    /// minimum of the approach); `None` when the curve has no S (small mu).
+    pub jump_out: Option<Critical>,
+    /// Jump-in on approach (local maximum of the approach); `None` without S.
+    pub jump_in: Option<Critical>,
+    /// Contact radius `A` at zero load on the contact branch.
+    pub zero_load_radius_bar: Option<f64>,
+    /// Mesh nodes at the pull-off.
+    pub nodes: usize,
+}
+
+/// Gap and pressure profiles at one central gap.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Profile {
+    /// Radii in `(R^2 w/E*)^(1/3)`.
+    pub radius: Vec<f64>,
+    /// Gaps `h/z0`.
+    pub gap: Vec<f64>,
+    /// Pressures `p/(w E*^2/R)^(1/3)` (> 0 compressive).
+    pub pressure: Vec<f64>,
+    /// The curve point.
+    pub point: SpherePoint,
+}
+
+/// A single-sphere problem: Tabor parameter, shape and numerical options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SphereProblem {
+    mu: f64,
+    shape: Shape,
+    options: SolverOptions,
+}
+
+impl SphereProblem {
+    /// A problem with Tabor parameter `mu` in `[0.005, 20]` and a shape
+    /// (true sphere: `rho >= 10`).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `mu`, `rho` or the bad option.
+    pub fn new(mu: f64, shape: Shape, options: SolverOptions) -> Result<Self> {
+        positive("mu", mu)?;
+        Allowed::closed(0.005, 20.0).check("mu", mu)?;
+        if let Shape::Sphere { rho } = shape {
+            Allowed::closed(MIN_SIZE_RATIO, 1e12).check("rho", rho)?;
+        }
+        options.validate()?;
+        Ok(SphereProblem { mu, shape, options })
+    }
+
+    /// Tabor parameter.
+    pub fn mu(&self) -> f64 {
+        self.mu
+    }
+
+    /// Shape.
+    pub fn shape(&self) -> Shape {
+        self.shape
+    }
+
+    /// Options.
+    pub fn options(&self) -> &SolverOptions {
+        &self.options
+    }
+
+    /// Width of the cohesive zone at the edge in solver radius units:
+    /// the Dugdale estimate `(pi/4) E* w/sigma0^2 = 0.75 mu^-2`, capped by the
+    /// rigid (Bradley) scale `sqrt(2/mu)` at small mu.
+    fn zone(&self) -> f64 {
+        (0.75 / (self.mu * self.mu)).min((2.0 / self.mu).sqrt())
+    }
+
+    pub(crate) fn mesh_spec(&self, edge: f64) -> MeshSpec {
+        let zone = self.zone();
+        let res = self.options.resolution;
+        let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
+        let r_max = r_far
+            .max(1.5 * edge + 4.0 * zone)
+            .min(newton::sphere_edge(self.shape, self.mu));
+        MeshSpec {
+            edge,
+            h0: zone / (8.0 * res),
+            growth: 0.12 / res,
+            inner: 2.0 * zone,
+            outer: 3.0 * zone,
+            r_max,
+        }
+    }
+
+    fn states(&self, arc_step: f64, stop: impl Fn(&[State]) -> bool) -> Result<Vec<State>> {
+        Tracer::new(self).run(arc_step, stop)
+    }
+
+    /// The whole load–approach curve from far apart (`start_gap`) until the
+    /// load exceeds `max_load_bar`, unstable parts included, ordered by
+    /// decreasing central gap.
+    ///
+    /// # Errors
+    /// [`Error::NoConvergence`] when Newton fails even with tiny steps.
+    pub fn trace(&self) -> Result<Vec<SpherePoint>> {
+        let max = self.options.max_load_bar;
+        let st = self.states(self.options.arc_step, |s| s.last().unwrap().sol.load >= max)?;
+        Ok(st.iter().map(|s| point(self.mu, s)).collect())
+    }
+
+    /// Pull-off, jump-out, jump-in and zero-load radius, each refined to
+    /// Newton accuracy on a coarse trace that stops once the load is
+    /// compressive again.
+    ///
+    /// # Errors
+    /// [`Error::NoConvergence`] when Newton fails.
+    pub fn facts(&self) -> Result<SphereFacts> {
+        let mut tr = Tracer::new(self);
+        let step = (4.0 * self.options.arc_step).max(0.05);
+        let st = tr.run(step, |s| {
+            let last = &s.last().unwrap().sol;
+            last.load > 0.05 && last.radius > 0.0 && last.d_load < 0.0
+        })?;
+        let crit = |s: &State| {
+            let p = point(self.mu, s);
+            Critical {
+                load_bar: p.load_bar,
+                interference_bar: p.interference_bar,
+                radius_bar: p.radius_bar,
+                central_gap: p.central_gap,
+            }
+        };
+        // Pull-off: dP/dH0 from > 0 to <= 0 (H0 decreasing); keep the lowest.
+        let mut pull: Option<State> = None;
+        for w in st.windows(2) {
+            if w[0].sol.d_load > 0.0 && w[1].sol.d_load <= 0.0 {
+                let s = tr.refine(&w[0], &w[1], |x| x.d_load)?;
+                if pull.as_ref().is_none_or(|p| s.sol.load < p.sol.load) {
+                    pull = Some(s);
+                }
+            }
+        }
+        let pull = match pull {
+            Some(p) => p,
+            None => st
+                .iter()
+                .min_by(|a, b| a.sol.load.total_cmp(&b.sol.load))
+                .unwrap()
+                .clone(),
+        };
+        let mut jump_in = None;
+        let mut jump_out = None;
+        for w in st.windows(2) {
+            let (a, b) = (w[0].sol.d_approach, w[1].sol.d_approach);
+            if a < 0.0 && b >= 0.0 && jump_in.is_none() {
+                jump_in = Some(tr.refine(&w[0], &w[1], |x| x.d_approach)?);
+            } else if a > 0.0 && b <= 0.0 {
+                jump_out = Some(tr.refine(&w[0], &w[1], |x| x.d_approach)?);
+            }
+        }
+        let mut zero = None;
+        for w in st.windows(2).rev() {
+            if w[0].sol.load < 0.0 && w[1].sol.load >= 0.0 {
+                zero = Some(tr.refine(&w[0], &w[1], |x| x.load)?);
+                break;
+            }
+        }
+        Ok(SphereFacts {
+            pull_off: crit(&pull),
+            jump_out: jump_out.as_ref().map(crit),
+            jump_in: jump_in.as_ref().map(crit),
+            zero_load_radius_bar: zero.map(|z| z.sol.radius / MAUGIS_RADIUS),
+            nodes: pull.disc.len(),
+        })
+    }
+
+    /// Load-controlled pull-off `P/(pi w R)` (see [`facts`](Self::facts)).
+    ///
+    /// # Errors
+    /// As [`facts`](Self::facts).
+    pub fn pull_off(&self) -> Result<Critical> {
+        Ok(self.facts()?.pull_off)
+    }
+
+    /// Gap and pressure profiles at central gap `central_gap` (units `z0`),
+    /// reached by continuation from far apart.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] for a gap outside `(min_gap, start_gap]`;
+    /// [`Error::NoConvergence`].
+    pub fn profile(&self, central_gap: f64) -> Result<Profile> {
+        let o = self.options;
+        Allowed {
+            lo: o.min_gap,
+            lo_inclusive: false,
+            hi: o.start_gap,
+            hi_inclusive: true,
+        }
+        .check("central_gap", central_gap)?;
+        let mut tr = Tracer::new(self);
+        let st = tr.run(o.arc_step, |s| {
+            s.last().unwrap().central_gap() <= central_gap
+        })?;
+        let n = st.len();
+        let from = if n >= 2 { &st[n - 2] } else { &st[0] };
+        let s = tr.goto(from, central_gap)?;
+        Ok(Profile {
+            radius: s.disc.r.clone(),
+            gap: s.sol.h.clone(),
+            pressure: s.disc.pressure(&s.sol.h),
+            point: point(self.mu, &s),
+        })
+    }
+}
+
+/// Converts `alpha/z0` to Maugis' `Dbar` at Tabor parameter `mu`.
+pub fn interference_bar_from_approach(mu: f64, approach: f64) -> f64 {
+    approach / (mu * MAUGIS_INTERFERENCE)
+}
+
+#[cfg(test)]
+mod tests;
