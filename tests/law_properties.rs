@@ -17,15 +17,20 @@ struct Setup {
 }
 
 fn setup() -> impl Strategy<Value = Setup> {
-    (-8.0..-2.0f64, 6.0..12.0f64, -3.0..1.0f64, -10.0..-8.5f64, -3.0..3.0f64).prop_map(
-        |(r, e, w, z0, l)| Setup {
+    (
+        -8.0..-2.0f64,
+        6.0..12.0f64,
+        -3.0..1.0f64,
+        -10.0..-8.5f64,
+        -3.0..3.0f64,
+    )
+        .prop_map(|(r, e, w, z0, l)| Setup {
             r: 10f64.powf(r),
             e: 10f64.powf(e),
             w: 10f64.powf(w),
             z0: 10f64.powf(z0),
             lambda: 10f64.powf(l),
-        },
-    )
+        })
 }
 
 fn laws(s: Setup) -> Vec<Box<dyn AsperityLaw>> {
@@ -153,7 +158,13 @@ proptest! {
 
 #[test]
 fn other_laws_pull_off_in_units_of_pi_w_r() {
-    let s = Setup { r: 1e-6, e: 5e10, w: 0.5, z0: 3e-10, lambda: 1.0 };
+    let s = Setup {
+        r: 1e-6,
+        e: 5e10,
+        w: 0.5,
+        z0: 3e-10,
+        lambda: 1.0,
+    };
     let unit = PI * s.w * s.r;
     let want = [Some(0.0), Some(-2.0), Some(-2.0), Some(-1.5)];
     for (law, w) in laws(s).iter().zip(want) {

@@ -104,7 +104,12 @@ fn tends_to_jkr_monotonically() {
             (c.zero_load_bar().radius_bar - jkr::ZERO_LOAD_RADIUS).abs(),
         ];
         for k in 0..4 {
-            assert!(e[k] < last[k], "lambda {l}, quantity {k}: {} !< {}", e[k], last[k]);
+            assert!(
+                e[k] < last[k],
+                "lambda {l}, quantity {k}: {} !< {}",
+                e[k],
+                last[k]
+            );
         }
         last = e;
     }
@@ -129,7 +134,13 @@ fn hysteresis_loop_is_consistent() {
         assert!((p.interference - det).abs() < 1e-15 * s);
         // state_after: retract branch once the attach point was reached.
         let mid = 0.5 * (att + det);
-        assert_eq!(law.state_after(mid, att - 1e-3 * s), law.state(mid, Branch::Approach));
-        assert_eq!(law.state_after(mid, att + 1e-3 * s), law.state(mid, Branch::Retract));
+        assert_eq!(
+            law.state_after(mid, att - 1e-3 * s),
+            law.state(mid, Branch::Approach)
+        );
+        assert_eq!(
+            law.state_after(mid, att + 1e-3 * s),
+            law.state(mid, Branch::Retract)
+        );
     }
 }
