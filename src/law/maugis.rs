@@ -98,15 +98,22 @@
 //!   branch.
 
 use super::{AsperityLaw, Branch, ContactState, Control, Instability};
-use crate::error::{positive, Result};
+use crate::error::{Allowed, Result};
 use crate::material::MaugisScales;
 use crate::numeric::roots::brent;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
-/// Smallest `lambda` the tests cover (the constructor accepts any finite
-/// `lambda > 0`).
+/// Smallest `lambda` accepted. Below it MD is DMT to better than 2e-9 in
+/// the pull-off (use [`super::Dmt`]), and the pull-off contact radius
+/// falls below what the construction scan resolves.
+pub const LAMBDA_MIN: f64 = 1e-6;
+/// Largest `lambda` accepted. Above it MD is JKR to better than 2e-11 in
+/// the pull-off (use [`super::Jkr`]).
+pub const LAMBDA_MAX: f64 = 1e6;
+/// Smallest `lambda` of the dense tests (property tests, references);
+/// [`LAMBDA_MIN`] and [`LAMBDA_MAX`] are tested at the ends.
 pub const LAMBDA_MIN_TESTED: f64 = 1e-3;
-/// Largest `lambda` the tests cover.
+/// Largest `lambda` of the dense tests.
 pub const LAMBDA_MAX_TESTED: f64 = 1e3;
 /// `lambda_c = (9 pi/(16 (pi - 1)))^(1/3)`: below it the displacement-
 /// controlled snap is on the non-contact branch (contact is lost
@@ -224,13 +231,13 @@ pub struct MaugisCurve {
 }
 
 impl MaugisCurve {
-    /// The curve for Maugis parameter `lambda` (finite, > 0; tested over
-    /// `[1e-3, 1e3]`).
+    /// The curve for Maugis parameter `lambda` in `[1e-6, 1e6]`
+    /// ([`LAMBDA_MIN`], [`LAMBDA_MAX`]; densely tested over `[1e-3, 1e3]`).
     ///
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `lambda`.
     pub fn new(lambda: f64) -> Result<Self> {
-        positive("lambda", lambda)?;
+        Allowed::closed(LAMBDA_MIN, LAMBDA_MAX).check("lambda", lambda)?;
         let b = 8.0 * lambda / (3.0 * PI);
         let qa = PI * lambda / 4.0;
         let qb = 4.0 * lambda * lambda / 3.0 * (FRAC_PI_2 - 1.0);
@@ -714,7 +721,8 @@ pub struct Maugis {
 }
 
 impl Maugis {
-    /// All arguments finite and > 0 (`lambda` tested over `[1e-3, 1e3]`).
+    /// All arguments finite and > 0, `lambda` in `[1e-6, 1e6]` (densely
+    /// tested over `[1e-3, 1e3]`).
     ///
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `radius`, `contact_modulus`,

@@ -187,7 +187,15 @@ fn non_contact_snap_matches_closed_form() {
 
 #[test]
 fn bad_lambda_is_rejected_naming_the_field() {
-    for l in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+    for l in [
+        0.0,
+        -1.0,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        1e-7,
+        1e7,
+    ] {
         let e = MaugisCurve::new(l).unwrap_err();
         assert_eq!(e.field(), Some("lambda"), "{l}");
         let e = Maugis::new(1e-6, 1e10, 0.1, l).unwrap_err();
@@ -295,5 +303,28 @@ fn whole_curve_has_one_minimum_of_interference_and_of_load() {
             c.pull_off_bar().radius_bar > 0.0,
             "lambda {l}: pull-off in contact"
         );
+    }
+}
+
+#[test]
+fn accepted_range_ends_are_dmt_and_jkr() {
+    let lo = MaugisCurve::new(LAMBDA_MIN).unwrap();
+    // Pull-off -2 + O(lambda^1.5): 1.7e-9 at 1e-6.
+    assert!(
+        (lo.pull_off_bar().load_bar + 2.0).abs() < 3e-9,
+        "{:?}",
+        lo.pull_off_bar()
+    );
+    assert!(lo.pull_off_bar().load_bar > -2.0);
+    assert!((lo.zero_load_bar().radius_bar - 2f64.cbrt()).abs() < 1e-5);
+    let hi = MaugisCurve::new(LAMBDA_MAX).unwrap();
+    assert!((hi.pull_off_bar().load_bar + 1.5).abs() < 1e-10);
+    assert!((hi.jump_out_bar().load_bar + 5.0 / 6.0).abs() < 1e-8);
+    assert!((hi.zero_load_bar().radius_bar - 6f64.cbrt()).abs() < 1e-8);
+    for c in [&lo, &hi] {
+        for d in [-1e7, -10.0, -1.0, 0.0, 1.0, 1e3, 1e12] {
+            let (a, p) = c.state_bar(d, Branch::Retract);
+            assert!(a.is_finite() && p.is_finite());
+        }
     }
 }
