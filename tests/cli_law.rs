@@ -83,6 +83,8 @@ fn bad_input_exits_2_with_one_line_naming_the_argument() {
         (vec!["--law", "maugis", "--lambda", "-2"], "--lambda"),
         (vec!["--law", "maugis", "--lambda", "NaN"], "--lambda"),
         (vec!["--law", "cos", "--lambda", "inf"], "--lambda"),
+        // Beyond the accepted [1e-6, 1e6]: the library names `lambda`.
+        (vec!["--law", "maugis", "--lambda", "1e7"], "lambda"),
         (vec!["--law", "maugis", "--lambda", "abc"], "--lambda"),
         (vec!["--law", "mdx"], "law"),
         (vec!["--lambda", "1"], "--law"),

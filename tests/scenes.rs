@@ -106,7 +106,7 @@ fn worst_gap(a: &[Option<f64>], b: &[Option<f64>]) -> f64 {
 
 #[test]
 fn planned_runs_do_less_work_and_agree_within_tolerance() {
-    for name in ["hertz-exponential.toml", "soft-jkr.toml", "dmt-stiff.toml"] {
+    for name in ["hertz-exponential.toml", "soft-jkr.toml", "mems-gold.toml"] {
         let mut scene = example(name);
         // Same separations for both runs.
         if scene.program.start_separation.is_none() {

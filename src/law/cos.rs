@@ -16,7 +16,8 @@
 //! fits' worth of error, and the only approximation left is the shape of
 //! the transition equation, which the tests measure against exact MD.
 //!
-//! The conversion is defined for every `lambda > 0`, but `alpha` saturates
+//! The conversion is defined for every `lambda > 0` (the law accepts the
+//! range of [`MaugisCurve::new`], `[1e-6, 1e6]`), but `alpha` saturates
 //! at `1/1.02 = 0.9804` as `lambda -> inf`: the fit never reaches the JKR
 //! shape exactly. COS calibrated it for roughly `0.1 < lambda < 5`; outside,
 //! the error table in `docs/performance.md` shows what it costs. For a
@@ -78,8 +79,8 @@ pub struct CosCurve {
 }
 
 impl CosCurve {
-    /// COS at Maugis parameter `lambda` (finite, > 0), `A0` and `Pc` from
-    /// exact Maugis–Dugdale.
+    /// COS at Maugis parameter `lambda` in `[1e-6, 1e6]`, `A0` and `Pc`
+    /// from exact Maugis–Dugdale.
     ///
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `lambda`.
@@ -206,7 +207,7 @@ pub struct Cos {
 }
 
 impl Cos {
-    /// All arguments finite and > 0.
+    /// All arguments finite and > 0, `lambda` in `[1e-6, 1e6]`.
     ///
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `radius`, `contact_modulus`,

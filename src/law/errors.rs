@@ -24,7 +24,9 @@ use std::sync::OnceLock;
 pub const PLANNER_LAWS: [LawKind; 4] =
     [LawKind::Hertz, LawKind::Dmt, LawKind::Jkr, LawKind::Maugis];
 
-/// One law's errors: `errors[i][j]` at `mu[i]`, `load_bar[j]`.
+/// One law's errors: `errors[i][j]` at `mu[i]`, `load_bar[j]`; `null`
+/// where the law has no finite load at that interference (a rigid law past
+/// its divergence) or where the full solution never carries that load.
 #[derive(Debug, Clone, Deserialize)]
 pub struct LawErrors {
     /// Law name (`"dmt"`, ...).
@@ -45,6 +47,10 @@ pub struct LawErrorTable {
     pub mu: Vec<f64>,
     /// Loads `P/(pi w R)`, ascending.
     pub load_bar: Vec<f64>,
+    /// Interference `Dbar` of the full solution at each `(mu[i],
+    /// load_bar[j])`; `null` where the full solution never carries that
+    /// load (below its pull-off): such cells are not compared.
+    pub reference_interference_bar: Vec<Vec<Option<f64>>>,
     /// One entry per law.
     pub laws: Vec<LawErrors>,
 }
@@ -69,13 +75,23 @@ impl LawErrorTable {
         self.laws.iter().find(|l| l.law == kind.name())
     }
 
-    /// Worst error of `kind` over every tabulated load at `mu[i]`
-    /// (`inf` if any load has no state).
+    /// Whether the full solution carries load `load_bar[j]` at `mu[i]`.
+    pub fn has_reference(&self, i: usize, j: usize) -> bool {
+        self.reference_interference_bar
+            .get(i)
+            .and_then(|r| r.get(j).copied().flatten())
+            .is_some()
+    }
+
+    /// Worst error of `kind` over the tabulated loads the full solution
+    /// carries at `mu[i]` (`inf` where the law has no state).
     fn worst_at(&self, kind: LawKind, i: usize) -> Option<f64> {
         let row = self.law(kind)?.errors.get(i)?;
         Some(
             row.iter()
-                .map(|e| e.unwrap_or(f64::INFINITY))
+                .enumerate()
+                .filter(|(j, _)| self.has_reference(i, *j))
+                .map(|(_, e)| e.unwrap_or(f64::INFINITY))
                 .fold(0.0, f64::max),
         )
     }
@@ -126,8 +142,78 @@ impl LawErrorTable {
     /// Whether `kind` is within `tol` of the full solution at table point
     /// `(mu[i], load_bar[j])` (the adhesion map's cell test).
     pub fn within(&self, kind: LawKind, i: usize, j: usize, tol: f64) -> bool {
-        self.law(kind)
-            .and_then(|l| l.errors.get(i)?.get(j).copied().flatten())
-            .is_some_and(|e| e <= tol)
+        self.has_reference(i, j)
+            && self
+                .law(kind)
+                .and_then(|l| l.errors.get(i)?.get(j).copied().flatten())
+                .is_some_and(|e| e <= tol)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn embedded_table_is_complete_and_consistent() {
+        let t = LawErrorTable::embedded();
+        assert!(t.mu.len() >= 10 && t.load_bar.len() >= 10);
+        assert!(t.mu.windows(2).all(|w| w[0] < w[1]));
+        assert!(t.load_bar.windows(2).all(|w| w[0] < w[1]));
+        assert_eq!(t.reference_interference_bar.len(), t.mu.len());
+        for k in [
+            LawKind::Hertz,
+            LawKind::Bradley,
+            LawKind::Dmt,
+            LawKind::Jkr,
+            LawKind::Maugis,
+        ] {
+            let l = t.law(k).unwrap_or_else(|| panic!("{} missing", k.name()));
+            assert_eq!(l.errors.len(), t.mu.len());
+            assert!(l.errors.iter().all(|r| r.len() == t.load_bar.len()));
+        }
+        // Every mu has the zero-load column.
+        let j0 = t.load_bar.iter().position(|&p| p == 0.0).unwrap();
+        assert!((0..t.mu.len()).all(|i| t.has_reference(i, j0)));
+    }
+
+    #[test]
+    fn errors_follow_the_theory_limits() {
+        let t = LawErrorTable::embedded();
+        // JKR improves as mu grows, and is the better of JKR/DMT at large mu.
+        let jkr: Vec<f64> = [1.0, 3.0, 10.0]
+            .iter()
+            .map(|&m| t.error(LawKind::Jkr, m).unwrap())
+            .collect();
+        assert!(jkr[0] > jkr[1] && jkr[1] > jkr[2], "{jkr:?}");
+        assert!(t.error(LawKind::Dmt, 10.0).unwrap() > jkr[2]);
+        // The Maugis-Dugdale law is never worse than JKR over mu >= 0.3.
+        for m in [0.3, 1.0, 3.0, 10.0] {
+            assert!(
+                t.error(LawKind::Maugis, m).unwrap() <= t.error(LawKind::Jkr, m).unwrap() * 1.01
+            );
+        }
+        // Rigid Bradley is good at small mu for tensile loads, hopeless at large.
+        let (i0, j) = (0, 0);
+        assert!(t.within(LawKind::Bradley, i0, j, 1e-2));
+        assert!(!t.within(LawKind::Bradley, t.mu.len() - 1, t.load_bar.len() - 1, 0.5));
+        // Interpolation in mu stays between neighbours; ends are held.
+        let e = t.error(LawKind::Jkr, 4.0).unwrap();
+        assert!(e < t.error(LawKind::Jkr, 3.0).unwrap() && e > t.error(LawKind::Jkr, 5.0).unwrap());
+        assert_eq!(t.error(LawKind::Jkr, 1e3), t.error(LawKind::Jkr, 10.0));
+        assert_eq!(t.error(LawKind::Jkr, f64::NAN), None);
+    }
+
+    #[test]
+    fn planner_choices_follow_the_table() {
+        let t = LawErrorTable::embedded();
+        // Deep in JKR territory a loose tolerance picks JKR (DMT fails there).
+        assert_eq!(
+            t.cheapest_within(800.0, 1e-2).map(|c| c.0),
+            Some(LawKind::Jkr)
+        );
+        // Nothing analytic meets 1e-6 of the full solution.
+        assert!(t.cheapest_within(1.0, 1e-6).is_none());
+        assert_eq!(t.most_accurate(1.0).0, LawKind::Maugis);
     }
 }

@@ -98,15 +98,22 @@
 //!   branch.
 
 use super::{AsperityLaw, Branch, ContactState, Control, Instability};
-use crate::error::{positive, Result};
+use crate::error::{Allowed, Result};
 use crate::material::MaugisScales;
 use crate::numeric::roots::brent;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
-/// Smallest `lambda` the tests cover (the constructor accepts any finite
-/// `lambda > 0`).
+/// Smallest `lambda` accepted. Below it MD is DMT to better than 2e-9 in
+/// the pull-off (use [`super::Dmt`]), and the pull-off contact radius
+/// falls below what the construction scan resolves.
+pub const LAMBDA_MIN: f64 = 1e-6;
+/// Largest `lambda` accepted. Above it MD is JKR to better than 2e-11 in
+/// the pull-off (use [`super::Jkr`]).
+pub const LAMBDA_MAX: f64 = 1e6;
+/// Smallest `lambda` of the dense tests (property tests, references);
+/// [`LAMBDA_MIN`] and [`LAMBDA_MAX`] are tested at the ends.
 pub const LAMBDA_MIN_TESTED: f64 = 1e-3;
-/// Largest `lambda` the tests cover.
+/// Largest `lambda` of the dense tests.
 pub const LAMBDA_MAX_TESTED: f64 = 1e3;
 /// `lambda_c = (9 pi/(16 (pi - 1)))^(1/3)`: below it the displacement-
 /// controlled snap is on the non-contact branch (contact is lost
@@ -196,6 +203,8 @@ struct Raw {
 struct Node {
     angle: Angle,
     d: f64,
+    /// `dt/dDbar` (infinite at a fold).
+    dt_dd: f64,
 }
 
 /// The dimensionless Maugis–Dugdale curve for one `lambda`, with its
@@ -222,13 +231,13 @@ pub struct MaugisCurve {
 }
 
 impl MaugisCurve {
-    /// The curve for Maugis parameter `lambda` (finite, > 0; tested over
-    /// `[1e-3, 1e3]`).
+    /// The curve for Maugis parameter `lambda` in `[1e-6, 1e6]`
+    /// ([`LAMBDA_MIN`], [`LAMBDA_MAX`]; densely tested over `[1e-3, 1e3]`).
     ///
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `lambda`.
     pub fn new(lambda: f64) -> Result<Self> {
-        positive("lambda", lambda)?;
+        Allowed::closed(LAMBDA_MIN, LAMBDA_MAX).check("lambda", lambda)?;
         let b = 8.0 * lambda / (3.0 * PI);
         let qa = PI * lambda / 4.0;
         let qb = 4.0 * lambda * lambda / 3.0 * (FRAC_PI_2 - 1.0);
@@ -416,28 +425,89 @@ impl MaugisCurve {
         // First node with d_i > d; the root lies in [i-1, i].
         let i = self.nodes.partition_point(|n| n.d <= d).clamp(1, last);
         let (lo, hi) = (self.nodes[i - 1], self.nodes[i]);
-        self.point(self.solve_interference(lo, hi, d))
+        let (angle, r) = self.solve_interference(lo, hi, d);
+        MaugisPoint {
+            radius_bar: r.c_big * r.cos,
+            outer_radius_bar: r.c_big,
+            load_bar: r.load,
+            interference_bar: r.interference,
+        }
+        .or_junction(angle, self.junction)
     }
 
-    /// Angle in the cell `[lo, hi]` (ascending `Dbar`) where `Dbar = d`.
-    fn solve_interference(&self, lo: Node, hi: Node, d: f64) -> Angle {
-        if lo.angle.uses_t() && hi.angle.uses_t() {
-            let x = brent(
-                |t| self.raw(Angle::from_t(t)).interference - d,
-                lo.angle.t,
-                hi.angle.t,
-                XTOL,
-            );
-            Angle::from_t(x.unwrap_or(lo.angle.t))
+    /// Angle in the cell `[lo, hi]` (ascending `Dbar`) where `Dbar = d`:
+    /// cubic Hermite start from the table (`x(Dbar)` with the nodes'
+    /// slopes), then Newton safeguarded by bisection on the cell, in the
+    /// variable that is exact there (`t`, or `y = pi/2 - t` near the
+    /// junction). Stops at a few ulps of the angle.
+    #[inline]
+    fn solve_interference(&self, lo: Node, hi: Node, d: f64) -> (Angle, Raw) {
+        let in_t = lo.angle.uses_t() && hi.angle.uses_t();
+        // x = t or y; dx/dt = +-1.
+        let sign = if in_t { 1.0 } else { -1.0 };
+        let (x_lo, x_hi) = if in_t {
+            (lo.angle.t, hi.angle.t)
         } else {
-            let x = brent(
-                |y| self.raw(Angle::from_y(y)).interference - d,
-                lo.angle.y,
-                hi.angle.y,
-                XTOL,
-            );
-            Angle::from_y(x.unwrap_or(lo.angle.y))
+            (lo.angle.y, hi.angle.y)
+        };
+        let make = |x: f64| {
+            if in_t {
+                Angle::from_t(x)
+            } else {
+                Angle::from_y(x)
+            }
+        };
+        let h = hi.d - lo.d;
+        let u = ((d - lo.d) / h).clamp(0.0, 1.0);
+        let (s_lo, s_hi) = (sign * lo.dt_dd * h, sign * hi.dt_dd * h);
+        let dx = x_hi - x_lo;
+        let mut x = if s_lo.is_finite()
+            && s_hi.is_finite()
+            && s_lo.abs() < 3.0 * dx.abs()
+            && s_hi.abs() < 3.0 * dx.abs()
+        {
+            let u2 = u * u;
+            let u3 = u2 * u;
+            (2.0 * u3 - 3.0 * u2 + 1.0) * x_lo
+                + (u3 - 2.0 * u2 + u) * s_lo
+                + (-2.0 * u3 + 3.0 * u2) * x_hi
+                + (u3 - u2) * s_hi
+        } else {
+            x_lo + u * dx
+        };
+        // Bracket: f(a) <= 0 <= f(b) with f = Dbar(x) - d.
+        let (mut a, mut b) = (x_lo, x_hi);
+        if !(x > a.min(b) && x < a.max(b)) {
+            x = 0.5 * (a + b);
         }
+        let mut r = self.raw(make(x));
+        for _ in 0..64 {
+            let f = r.interference - d;
+            if f == 0.0 {
+                break;
+            }
+            if f < 0.0 {
+                a = x;
+            } else {
+                b = x;
+            }
+            let slope = sign * self.d_interference_raw(make(x), &r);
+            let newton = x - f / slope;
+            // Converged: the Newton correction is at rounding level.
+            if (newton - x).abs() <= 4.0 * f64::EPSILON * x.abs() {
+                break;
+            }
+            x = if newton > a.min(b) && newton < a.max(b) {
+                newton
+            } else {
+                0.5 * (a + b)
+            };
+            r = self.raw(make(x));
+            if (b - a).abs() <= 4.0 * f64::EPSILON * x.abs() {
+                break;
+            }
+        }
+        (make(x), r)
     }
 
     /// Full contact-branch point at `angle`.
@@ -510,8 +580,13 @@ impl MaugisCurve {
 
     /// `dDbar/dt` on the contact branch.
     fn d_interference(&self, angle: Angle) -> f64 {
-        let r = self.raw(angle);
-        let dc = self.d_c(angle, &r);
+        self.d_interference_raw(angle, &self.raw(angle))
+    }
+
+    /// `dDbar/dt` from an evaluated point.
+    #[inline]
+    fn d_interference_raw(&self, angle: Angle, r: &Raw) -> f64 {
+        let dc = self.d_c(angle, r);
         let (c, co, si) = (r.c_big, r.cos, r.sin);
         2.0 * c * dc * co * co
             - 2.0 * c * c * co * si
@@ -609,6 +684,7 @@ impl MaugisCurve {
             .map(|angle| Node {
                 angle,
                 d: self.point(angle).interference_bar,
+                dt_dd: 1.0 / self.d_interference(angle),
             })
             .collect();
         // A fold node holds the minimum exactly.
@@ -619,6 +695,15 @@ impl MaugisCurve {
 }
 
 impl MaugisPoint {
+    /// The junction itself when `angle` is exactly there (`y = 0`).
+    fn or_junction(self, angle: Angle, junction: MaugisPoint) -> MaugisPoint {
+        if angle.y <= 0.0 {
+            junction
+        } else {
+            self
+        }
+    }
+
     const ZERO: MaugisPoint = MaugisPoint {
         radius_bar: 0.0,
         outer_radius_bar: 0.0,
@@ -636,7 +721,8 @@ pub struct Maugis {
 }
 
 impl Maugis {
-    /// All arguments finite and > 0 (`lambda` tested over `[1e-3, 1e3]`).
+    /// All arguments finite and > 0, `lambda` in `[1e-6, 1e6]` (densely
+    /// tested over `[1e-3, 1e3]`).
     ///
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `radius`, `contact_modulus`,

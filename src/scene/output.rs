@@ -13,10 +13,10 @@ pub struct Summary {
     pub title: Option<String>,
     /// Law used.
     pub law: String,
-    /// Tabor parameter `mu` of one summit.
-    pub tabor_mu: f64,
-    /// Maugis `lambda = 1.1570 mu`.
-    pub maugis_lambda: f64,
+    /// Tabor parameter `mu` of one summit (`null` without adhesion).
+    pub tabor_mu: Option<f64>,
+    /// Maugis `lambda = 1.1570 mu` (`null` without adhesion).
+    pub maugis_lambda: Option<f64>,
     /// Contact modulus `E*` (Pa).
     pub contact_modulus: f64,
     /// Number of summits `eta A_n`.
@@ -53,11 +53,12 @@ impl Summary {
     /// Summarises a run of `plan`.
     pub fn new(plan: &Plan, results: &Results) -> Summary {
         let closest = results.curve.approach.first();
+        let adhesive = plan.contact.adhesion.work() > 0.0;
         Summary {
             title: plan.scene.title.clone(),
             law: plan.law.name.clone(),
-            tabor_mu: plan.contact.tabor(),
-            maugis_lambda: plan.contact.lambda(),
+            tabor_mu: adhesive.then(|| plan.contact.tabor()),
+            maugis_lambda: adhesive.then(|| plan.contact.lambda()),
             contact_modulus: plan.contact.contact_modulus,
             summits: plan.surface.summits(),
             start_separation: plan.start,

@@ -65,12 +65,13 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
         return Ok(());
     }
     let show = |x: Option<f64>, unit: &str| x.map_or("-".into(), |v| format!("{v:.4e} {unit}"));
+    let num = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.4}"));
     println!(
-        "{} — law {}, mu = {:.4}, lambda = {:.4}, {} summits",
+        "{} — law {}, mu = {}, lambda = {}, {} summits",
         summary.title.as_deref().unwrap_or("scene"),
         summary.law,
-        summary.tabor_mu,
-        summary.maugis_lambda,
+        num(summary.tabor_mu),
+        num(summary.maugis_lambda),
         summary.summits
     );
     println!(
@@ -80,7 +81,12 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
     println!("  max load           {}", show(summary.max_load, "N"));
     println!("  max real area      {}", show(summary.max_area, "m^2"));
     println!("  max contacts       {}", show(summary.max_count, ""));
-    println!("  pull-off force     {}", show(summary.pull_off_load, "N"));
+    let pull = match (summary.pull_off_load, plan.pull_off) {
+        (Some(p), _) => format!("{p:.4e} N"),
+        (None, true) => "none: no tensile load on retraction".into(),
+        (None, false) => "-".into(),
+    };
+    println!("  pull-off force     {pull}");
     println!(
         "  hysteresis energy  {}",
         show(summary.hysteresis_energy, "J")

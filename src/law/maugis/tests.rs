@@ -187,7 +187,15 @@ fn non_contact_snap_matches_closed_form() {
 
 #[test]
 fn bad_lambda_is_rejected_naming_the_field() {
-    for l in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+    for l in [
+        0.0,
+        -1.0,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        1e-7,
+        1e7,
+    ] {
         let e = MaugisCurve::new(l).unwrap_err();
         assert_eq!(e.field(), Some("lambda"), "{l}");
         let e = Maugis::new(1e-6, 1e10, 0.1, l).unwrap_err();
@@ -220,4 +228,103 @@ fn dimensional_law_uses_the_scales() {
     assert!(law.cutoff_interference() < law.attach_interference());
     let bp = law.breakpoints(Branch::Approach);
     assert!(bp.windows(2).all(|w| w[0] < w[1]));
+}
+
+/// The stability analysis of the module doc rests on the whole curve
+/// (non-contact from C = 0, then contact from the junction to deep contact)
+/// having exactly one local minimum of Dbar and one of Pbar. Checked on a
+/// dense sampling for 25 lambdas over [1e-3, 1e3].
+#[test]
+fn whole_curve_has_one_minimum_of_interference_and_of_load() {
+    for k in 0..25 {
+        let l = 10f64.powf(-3.0 + 6.0 * k as f64 / 24.0);
+        let c = MaugisCurve::new(l).unwrap();
+        let c0 = c.junction_bar().outer_radius_bar;
+        // Non-contact: dense around the fold C = b, then up to C0.
+        let mut cs: Vec<f64> = (0..=100).map(|i| 2.0 * c.b * i as f64 / 100.0).collect();
+        cs.extend((0..=400).map(|i| c0 * i as f64 / 400.0));
+        cs.retain(|&x| x <= c0);
+        cs.sort_by(f64::total_cmp);
+        let mut pts: Vec<MaugisPoint> = cs.iter().map(|&x| c.non_contact_point(x)).collect();
+        for i in 1..=2000 {
+            let y = 1e-9 * (FRAC_PI_4 / 1e-9f64).powf(i as f64 / 2000.0);
+            pts.push(c.point(Angle::from_y(y)));
+        }
+        for i in 1..=2000 {
+            let t = FRAC_PI_4 * (1e-8 / FRAC_PI_4).powf(i as f64 / 2000.0);
+            pts.push(c.point(Angle::from_t(t)));
+        }
+        for (what, v) in [
+            (
+                "Dbar",
+                pts.iter().map(|p| p.interference_bar).collect::<Vec<_>>(),
+            ),
+            ("Pbar", pts.iter().map(|p| p.load_bar).collect::<Vec<_>>()),
+        ] {
+            // Sign changes of the increments, ignoring rounding-level ones.
+            let scale = v.iter().fold(0.0f64, |m, x| m.max(x.abs().min(1e3)));
+            let incs: Vec<f64> = v
+                .windows(2)
+                .map(|w| w[1] - w[0])
+                .filter(|d| d.abs() > 1e-12 * scale)
+                .collect();
+            let turns = incs
+                .windows(2)
+                .filter(|w| w[0].signum() != w[1].signum())
+                .count();
+            assert_eq!(turns, 1, "lambda {l}: {what} turns {turns} times");
+            assert!(
+                incs[0] < 0.0 && *incs.last().unwrap() > 0.0,
+                "lambda {l}: {what}"
+            );
+        }
+        // Both minima agree with the precomputed instabilities.
+        let dmin = pts
+            .iter()
+            .map(|p| p.interference_bar)
+            .fold(f64::INFINITY, f64::min);
+        let pmin = pts.iter().map(|p| p.load_bar).fold(f64::INFINITY, f64::min);
+        assert!(
+            c.jump_out_bar().interference_bar <= dmin + 1e-12 * (1.0 + dmin.abs()),
+            "lambda {l}"
+        );
+        assert!(
+            dmin - c.jump_out_bar().interference_bar < 1e-3 * (1.0 + dmin.abs()),
+            "lambda {l}"
+        );
+        assert!(c.pull_off_bar().load_bar <= pmin + 1e-13, "lambda {l}");
+        // The samples are ~1% apart in angle: O(1e-3) above the minimum.
+        assert!(
+            pmin - c.pull_off_bar().load_bar < 3e-3,
+            "lambda {l}: {pmin} vs {:?}",
+            c.pull_off_bar()
+        );
+        assert!(
+            c.pull_off_bar().radius_bar > 0.0,
+            "lambda {l}: pull-off in contact"
+        );
+    }
+}
+
+#[test]
+fn accepted_range_ends_are_dmt_and_jkr() {
+    let lo = MaugisCurve::new(LAMBDA_MIN).unwrap();
+    // Pull-off -2 + O(lambda^1.5): 1.7e-9 at 1e-6.
+    assert!(
+        (lo.pull_off_bar().load_bar + 2.0).abs() < 3e-9,
+        "{:?}",
+        lo.pull_off_bar()
+    );
+    assert!(lo.pull_off_bar().load_bar > -2.0);
+    assert!((lo.zero_load_bar().radius_bar - 2f64.cbrt()).abs() < 1e-5);
+    let hi = MaugisCurve::new(LAMBDA_MAX).unwrap();
+    assert!((hi.pull_off_bar().load_bar + 1.5).abs() < 1e-10);
+    assert!((hi.jump_out_bar().load_bar + 5.0 / 6.0).abs() < 1e-8);
+    assert!((hi.zero_load_bar().radius_bar - 6f64.cbrt()).abs() < 1e-8);
+    for c in [&lo, &hi] {
+        for d in [-1e7, -10.0, -1.0, 0.0, 1.0, 1e3, 1e12] {
+            let (a, p) = c.state_bar(d, Branch::Retract);
+            assert!(a.is_finite() && p.is_finite());
+        }
+    }
 }
