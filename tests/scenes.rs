@@ -64,20 +64,25 @@ fn every_example_scene_runs_and_matches_library_calls() {
                 ] {
                     if asked {
                         let (g, w) = (g.unwrap(), w.unwrap());
-                        // Same method and tolerance: equal up to the error estimates.
-                        let tol = 2.0 * e + got.error.iter().sum::<f64>() + 1e-12 * w.abs();
+                        // The exact law, not the plan's table (if it made one):
+                        // equal to the scene's rtol plus the error estimates.
+                        let rtol = scene.accuracy.rtol;
+                        let tol = 2.0 * e + got.error.iter().sum::<f64>() + rtol * w.abs();
                         assert!((g - w).abs() <= tol, "{name} {k}: {g} vs {w} (tol {tol})");
                     }
                 }
             }
         }
         if scene.outputs.pull_off && scene.adhesion.w > 0.0 {
-            let p = res.pull_off.expect("adhesive scene has a pull-off");
-            let direct = model.pull_off(closest, 64, &acc).unwrap().unwrap();
-            assert!(
-                (p.load - direct.load).abs() <= 1e-9 * direct.load.abs(),
-                "{name}"
-            );
+            // A stiff, rough surface may never go tensile: both say so.
+            let direct = model.pull_off(closest, 64, &acc).unwrap();
+            match (res.pull_off, direct) {
+                (Some(p), Some(d)) => {
+                    assert!((p.load - d.load).abs() <= 1e-9 * d.load.abs(), "{name}")
+                }
+                (None, None) => {}
+                other => panic!("{name}: {other:?}"),
+            }
         } else {
             assert!(res.pull_off.is_none(), "{name}");
         }
