@@ -29,6 +29,8 @@ pub struct Chart {
     pub y_label: String,
     /// The lines.
     pub series: Vec<Series>,
+    /// Fixed y range (zoom); `None` fits the data.
+    pub y_range: Option<(f64, f64)>,
 }
 
 pub(crate) const COLOURS: [RGBColor; 4] = [
@@ -68,7 +70,9 @@ impl Chart {
             (lo - pad, hi + pad)
         };
         let (x0, x1) = range(all.iter().map(|p| p.0).collect());
-        let (y0, y1) = range(all.iter().map(|p| p.1).collect());
+        let (y0, y1) = self
+            .y_range
+            .unwrap_or_else(|| range(all.iter().map(|p| p.1).collect()));
         let fail = |e: String| Error::invalid("chart", format!("{}: {e}", path.display()));
         let root = SVGBackend::new(path, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
@@ -92,13 +96,20 @@ impl Chart {
         for (i, s) in self.series.iter().enumerate() {
             let colour = COLOURS[i % COLOURS.len()];
             let pts: Vec<(f64, f64)> = s.points.iter().filter(finite).copied().collect();
+            let mut runs = clip_runs(&pts, y0, y1).into_iter();
+            let first = runs.next().unwrap_or_default();
             chart
-                .draw_series(LineSeries::new(pts, colour.stroke_width(2)))
+                .draw_series(LineSeries::new(first, colour.stroke_width(2)))
                 .map_err(|e| fail(e.to_string()))?
                 .label(s.label.clone())
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
                 });
+            for run in runs {
+                chart
+                    .draw_series(LineSeries::new(run, colour.stroke_width(2)))
+                    .map_err(|e| fail(e.to_string()))?;
+            }
         }
         if self.series.len() > 1 {
             chart
@@ -112,6 +123,35 @@ impl Chart {
         root.present().map_err(|e| fail(e.to_string()))?;
         Ok(())
     }
+}
+
+/// Splits a polyline into the runs that lie inside `y0 <= y <= y1`, each
+/// run ending exactly on the frame where the line leaves it (linear
+/// interpolation), so zoomed charts show no false segments.
+fn clip_runs(pts: &[(f64, f64)], y0: f64, y1: f64) -> Vec<Vec<(f64, f64)>> {
+    let inside = |y: f64| y >= y0 && y <= y1;
+    let cross = |a: (f64, f64), b: (f64, f64)| {
+        let edge = if a.1 > y1 || b.1 > y1 { y1 } else { y0 };
+        let t = (edge - a.1) / (b.1 - a.1);
+        (a.0 + t * (b.0 - a.0), edge)
+    };
+    let mut runs = Vec::new();
+    let mut run: Vec<(f64, f64)> = Vec::new();
+    for (i, &p) in pts.iter().enumerate() {
+        if inside(p.1) {
+            if run.is_empty() && i > 0 {
+                run.push(cross(pts[i - 1], p));
+            }
+            run.push(p);
+        } else if !run.is_empty() {
+            run.push(cross(pts[i - 1], p));
+            runs.push(std::mem::take(&mut run));
+        }
+    }
+    if !run.is_empty() {
+        runs.push(run);
+    }
+    runs
 }
 
 /// Compact tick label: plain for moderate magnitudes, else scientific.
@@ -144,6 +184,7 @@ mod tests {
                 label: "approach".into(),
                 points: vec![(0.0, 1.0), (1.0, 0.5), (2.0, f64::NAN)],
             }],
+            y_range: None,
         };
         chart.write_svg(&path, 400, 300).unwrap();
         let svg = std::fs::read_to_string(&path).unwrap();
@@ -157,6 +198,11 @@ mod tests {
             Some("chart")
         );
         assert_eq!(tick(0.5), "0.5");
+        let runs = clip_runs(&[(0.0, 5.0), (1.0, 1.0), (2.0, 0.0), (3.0, 5.0)], -1.0, 3.0);
+        assert_eq!(
+            runs,
+            vec![vec![(0.5, 3.0), (1.0, 1.0), (2.0, 0.0), (2.6, 3.0)]]
+        );
         assert_eq!(tick(2.5e-7), "2.50e-7");
         std::fs::remove_dir_all(&dir).ok();
     }

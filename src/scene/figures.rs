@@ -97,8 +97,31 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 x_label: format!("separation d ({dp}m)"),
                 y_label: format!("load P ({lp}N), > 0 compressive"),
                 series,
+                y_range: None,
             },
         ));
+        // The adhesive part is invisible at full scale: zoom on it.
+        if let Some(p) = results.pull_off {
+            let (ps, pp) = si_prefix([p.load].into_iter());
+            let series = legs
+                .iter()
+                .map(|(name, leg)| Series {
+                    label: (*name).into(),
+                    points: pick(&|s| Some((s.separation / ds, s.load? / ps)), leg),
+                })
+                .collect();
+            let m = p.load.abs() / ps;
+            out.push((
+                "load_separation_adhesive.svg".into(),
+                Chart {
+                    title: format!("{title}: adhesive range, pull-off {:.3} {pp}N", p.load / ps),
+                    x_label: format!("separation d ({dp}m)"),
+                    y_label: format!("load P ({pp}N), < 0 tensile"),
+                    series,
+                    y_range: Some((-1.3 * m, 3.0 * m)),
+                },
+            ));
+        }
     }
     if o.load && o.area {
         let (s_a, p_a) = si_prefix_area(all().filter_map(|s| s.area));
@@ -116,6 +139,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 x_label: format!("load P ({lp}N)"),
                 y_label: format!("real contact area ({p_a}m^2)"),
                 series,
+                y_range: None,
             },
         ));
     }
@@ -134,6 +158,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 x_label: format!("load P ({lp}N)"),
                 y_label: "number of contacts (-)".into(),
                 series,
+                y_range: None,
             },
         ));
     }
