@@ -94,3 +94,88 @@ fn gaussian_hertz_quadrature_meets_each_tolerance() {
         println!("tol {tol:e}: worst relative deviation {worst:.2e}");
     }
 }
+
+/// GW's density-weighted quadrature (Method::Quadrature integrates the law
+/// against `pdf`) agrees with each distribution's own `F_n` (closed form
+/// or its separate quadrature): `P = N (4/3) E* R^(1/2) sigma^(3/2) F_3/2(h)`.
+#[test]
+fn quadrature_over_pdf_matches_moment_above_for_every_distribution() {
+    use asperity::heights::{TruncatedGaussian, Weibull};
+    let dists: Vec<Arc<dyn asperity::heights::HeightDistribution>> = vec![
+        Arc::new(Gaussian::new()),
+        Arc::new(Exponential::new()),
+        Arc::new(Weibull::new(2.0).unwrap()),
+        Arc::new(Weibull::new(0.8).unwrap()),
+        Arc::new(TruncatedGaussian::new(3.0).unwrap()),
+    ];
+    for dist in dists {
+        let (m, s) = hertz_model(dist.clone());
+        let form = m.law().power_form().unwrap();
+        let acc = Accuracy::new(1e-10)
+            .unwrap()
+            .with_method(Method::Quadrature);
+        for h in [-1.0, 0.2, 1.5, 2.9] {
+            let q = m
+                .state(h * s.sigma, History::Approach, Outputs::ALL, &acc)
+                .unwrap();
+            let load: f64 = form
+                .load
+                .iter()
+                .map(|&(c, n)| c * s.sigma.powf(n) * dist.moment_above(n, h))
+                .sum::<f64>()
+                * s.summits();
+            let count = s.summits() * dist.moment_above(0.0, h);
+            if load == 0.0 {
+                assert_eq!(q.load.unwrap(), 0.0, "{} h {h}", dist.name());
+                continue;
+            }
+            let e = (q.load.unwrap() / load - 1.0).abs();
+            assert!(
+                e < 1e-9,
+                "{} h {h}: {} vs {load} ({e:e})",
+                dist.name(),
+                q.load.unwrap()
+            );
+            let e = (q.count.unwrap() / count - 1.0).abs();
+            assert!(e < 1e-9, "{} h {h}: count {e:e}", dist.name());
+        }
+    }
+}
+
+/// Measured heights: the closed form is the exact sum over the summits,
+/// `P = (eta A_n / N) sum_i (4/3) E* R^(1/2) (z_i - mean - d)_+^(3/2)`.
+#[test]
+fn empirical_heights_give_the_exact_sum_over_summits() {
+    use asperity::heights::Empirical;
+    let z: Vec<f64> = (0..500)
+        .map(|i| 5e-9 * ((f64::from(i) * 0.618_034).fract() - 0.5) * 3.0)
+        .collect();
+    let e = Empirical::new(&z).unwrap();
+    let base = RoughSurface::gold_microswitch();
+    let s = RoughSurface::new(base.density, base.radius, e.std_m(), base.nominal_area).unwrap();
+    let e_star = 4.8e10;
+    let law = Arc::new(Hertz::new(s.radius, e_star).unwrap());
+    let m = GwModel::new(s, Arc::new(e.clone()), law).unwrap();
+    let acc = Accuracy::new(1e-12).unwrap();
+    for d in [-6e-9, -1e-9, 0.0, 2e-9, 4e-9] {
+        let st = m.state(d, History::Approach, Outputs::ALL, &acc).unwrap();
+        assert_eq!(st.method, MethodUsed::ClosedForm);
+        let mut load = 0.0;
+        let mut count = 0.0;
+        for &zi in &z {
+            let delta = zi - e.mean_m() - d;
+            if delta > 0.0 {
+                load += 4.0 / 3.0 * e_star * s.radius.sqrt() * delta.powf(1.5);
+                count += 1.0;
+            }
+        }
+        let scale = s.summits() / z.len() as f64;
+        let (load, count) = (load * scale, count * scale);
+        assert!(
+            (st.load.unwrap() / load - 1.0).abs() < 1e-12,
+            "d {d}: {} {load}",
+            st.load.unwrap()
+        );
+        assert!((st.count.unwrap() / count - 1.0).abs() < 1e-12, "d {d}");
+    }
+}

@@ -8,6 +8,13 @@
 //!
 //! The central quantity of Greenwood–Williamson theory is
 //! `F_n(h) = int_h^inf (s - h)^n phi(s) ds` (no prefactor), for real `n >= 0`.
+//!
+//! Distributions (one file each; [`by_name`] builds them from scene names):
+//! [`Gaussian`] (closed `F_n` for `n = 0, 1/2, ..., 5/2`), [`Exponential`]
+//! (GW's `e^-s`; closed for integer and half-integer `n`), [`Weibull`]
+//! (unit standard deviation, origin at the lowest summit),
+//! [`TruncatedGaussian`] (bounded above) and [`Empirical`] (measured
+//! heights; `F_n` is the exact sample average).
 
 use std::fmt;
 

@@ -1,4 +1,5 @@
-//! Chebyshev series evaluation (Clenshaw).
+//! Chebyshev series evaluation (Clenshaw). Plain multiply-adds: without a
+//! target FMA feature `f64::mul_add` is a slow library call.
 
 /// `sum_j c_j T_j(x)` for `x` in `[-1, 1]` by Clenshaw's recurrence.
 #[inline]
@@ -6,11 +7,11 @@ pub(crate) fn clenshaw<const N: usize>(c: &[f64; N], x: f64) -> f64 {
     let (mut b1, mut b2) = (0.0, 0.0);
     let x2 = 2.0 * x;
     for &cj in c[1..].iter().rev() {
-        let b = x2.mul_add(b1, cj - b2);
+        let b = x2 * b1 - b2 + cj;
         b2 = b1;
         b1 = b;
     }
-    x.mul_add(b1, c[0] - b2)
+    x * b1 - b2 + c[0]
 }
 
 /// Evaluates a table of unit-width pieces starting at `lo` at `h`

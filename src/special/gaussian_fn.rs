@@ -8,16 +8,16 @@
 //!   `R_n(h) = int_0^inf t^n exp(-h t - t^2/2) dt
 //!           = Gamma(n+1) exp(h^2/4) D_(-n-1)(h)` (parabolic cylinder `D`).
 //!   The top two members of each family (`R_1, R_2` and `R_3/2, R_5/2`) are
-//!   Chebyshev series on unit pieces of `[0, 12)` fitted at 40 digits by
-//!   `tools/gen_gaussian_tables.py` (fit error < 2e-16); beyond 12 the
+//!   Chebyshev series on unit pieces of `[0, 20)` fitted at 40 digits by
+//!   `tools/gen_gaussian_tables.py` (fit error < 2e-16); beyond 20 the
 //!   asymptotic series `R_n ~ Gamma(n+1) h^-(n+1) sum_k (-1)^k (n+1)_(2k) /
-//!   (k! (2h^2)^k)` (converged to 1e-17 in <= 25 terms). The lower members
+//!   (k! (2h^2)^k)` (converged to 1e-17 in <= 12 terms). The lower members
 //!   follow from the recurrence `F_(n+1) = n F_(n-1) - h F_n` run *downwards*,
 //!   `R_(n-1) = (R_(n+1) + h R_n)/n`, a sum of positive terms: no
 //!   cancellation (the upward direction loses `~h^2` digits).
 //! - `h < 0`: integer family from `F_0 = 1 - Q(-h)` and the upward
 //!   recurrence (all terms positive); half-integer family from Chebyshev
-//!   pieces of `F_1/2, F_3/2` on `[-9, 0)` and, below `-9`, the asymptotic
+//!   pieces of `F_1/2, F_3/2` on `[-20, 0)` and, below `-20`, the asymptotic
 //!   series `F_n(h) ~ sum_j C(n, 2j) (2j-1)!! |h|^(n-2j)` (error
 //!   `~exp(-h^2/2)`, below 1e-17).
 //! - `phi(h)` with an exact exponent ([`normal::pdf`]); past its underflow
@@ -28,9 +28,9 @@ use super::gaussian_tables::{NEG_F12, NEG_F32, POS_R1, POS_R2, POS_R32, POS_R52}
 use super::normal;
 
 /// Upper end of the Chebyshev pieces for `h >= 0`.
-pub(crate) const TABLE_HI: f64 = 12.0;
+pub(crate) const TABLE_HI: f64 = 20.0;
 /// Lower end of the Chebyshev pieces for `h < 0`.
-const TABLE_LO: f64 = -9.0;
+const TABLE_LO: f64 = -20.0;
 /// `Gamma(5/2)`, `Gamma(7/2)`.
 const GAMMA_5_2: f64 = 1.329_340_388_179_137_020_473_625_612_506;
 const GAMMA_7_2: f64 = 3.323_350_970_447_842_551_184_064_031_264;
@@ -44,27 +44,70 @@ pub fn has_closed_form(n: f64) -> bool {
 }
 
 /// `F_n(h)` for `n` in [`CLOSED_ORDERS`], `None` for other `n`. NaN only for
-/// NaN `h`.
+/// NaN `h`; 0 where `phi(h)` underflows; `F_0(-inf) = 1`, other orders `inf`
+/// there.
+#[inline]
 pub fn gaussian_fn(n: f64, h: f64) -> Option<f64> {
-    let i = CLOSED_ORDERS.iter().position(|&c| c == n)?;
-    Some(if i % 2 == 0 {
-        integer_family(h)[i / 2]
+    if h.is_nan() {
+        return has_closed_form(n).then_some(f64::NAN);
+    }
+    let v = if n == 0.0 {
+        f0(h)
+    } else if n == 1.0 {
+        f1(h)
+    } else if n == 1.5 {
+        f3half(h)
+    } else if n == 0.5 {
+        f_half(h)
+    } else if n == 2.0 {
+        f2(h)
+    } else if n == 2.5 {
+        f5half(h)
     } else {
-        half_family(h)[i / 2]
-    })
+        return None;
+    };
+    Some(v)
 }
 
-/// `(R_1(h), R_2(h))` from the Chebyshev pieces, `0 <= h < 12`.
+/// `(R_1(h), R_2(h))` from the Chebyshev pieces, `0 <= h < TABLE_HI`.
 #[inline]
 pub(crate) fn scaled_integer_top(h: f64) -> (f64, f64) {
     (piecewise(&POS_R1, 0.0, h), piecewise(&POS_R2, 0.0, h))
 }
 
-/// Asymptotic series of `R_nu(h)` for large `h` (>= 12 here), with
-/// `gamma_nu1 = Gamma(nu+1)`: relative error < 1e-16 for `h >= 12`,
-/// `nu <= 5/2`.
+/// `(R_1(h), R_2(h))`, `0 <= h < inf`.
 #[inline]
-pub(crate) fn r_asymptotic(nu: f64, gamma_nu1: f64, h: f64) -> f64 {
+fn integer_top(h: f64) -> (f64, f64) {
+    if h < TABLE_HI {
+        scaled_integer_top(h)
+    } else {
+        let h2 = h * h;
+        (
+            r_asymptotic(1.0, 1.0, h, h2),
+            r_asymptotic(2.0, 2.0, h, h2 * h),
+        )
+    }
+}
+
+/// `(R_3/2(h), R_5/2(h))`, `0 <= h < inf`.
+#[inline]
+fn half_top(h: f64) -> (f64, f64) {
+    if h < TABLE_HI {
+        (piecewise(&POS_R32, 0.0, h), piecewise(&POS_R52, 0.0, h))
+    } else {
+        let p = h * h * h.sqrt();
+        (
+            r_asymptotic(1.5, GAMMA_5_2, h, p),
+            r_asymptotic(2.5, GAMMA_7_2, h, p * h),
+        )
+    }
+}
+
+/// Asymptotic series of `R_nu(h)` for large `h` (>= 20 here), with
+/// `gamma_nu1 = Gamma(nu+1)` and `h_pow = h^(nu+1)`: relative error < 1e-17
+/// for `h >= 20`, `nu <= 5/2` (about 11 terms at 20, 6 at 37).
+#[inline]
+pub(crate) fn r_asymptotic(nu: f64, gamma_nu1: f64, h: f64, h_pow: f64) -> f64 {
     let x = 0.5 / (h * h);
     let (mut term, mut sum) = (1.0_f64, 1.0_f64);
     let mut k = 0.0;
@@ -77,79 +120,105 @@ pub(crate) fn r_asymptotic(nu: f64, gamma_nu1: f64, h: f64) -> f64 {
         }
         k += 1.0;
     }
-    gamma_nu1 * sum / h.powf(nu + 1.0)
+    gamma_nu1 * sum / h_pow
 }
 
-/// `[F_0, F_1, F_2](h)`.
+/// For `h < 0`: `(phi(h), F_0(h))` with `F_0 = 1 - phi(a) R_0(a)`, `a = -h`.
 #[inline]
-pub fn integer_family(h: f64) -> [f64; 3] {
-    if h.is_nan() {
-        return [f64::NAN; 3];
+fn neg_integer_base(h: f64) -> (f64, f64) {
+    let a = -h;
+    let p = normal::pdf(h);
+    if p == 0.0 {
+        return (0.0, 1.0);
     }
+    let (r1, r2) = integer_top(a);
+    (p, 1.0 - p * (a * r1 + r2))
+}
+
+/// `F_0(h) = Q(h)`.
+fn f0(h: f64) -> f64 {
+    normal::tail(h)
+}
+
+/// `F_1(h) = phi(h) R_1(h)`; for `h < 0`, `phi + |h| F_0`.
+fn f1(h: f64) -> f64 {
     if h >= 0.0 {
         if h == f64::INFINITY {
-            return [0.0; 3];
+            return 0.0;
         }
-        let (r1, r2) = if h < TABLE_HI {
-            scaled_integer_top(h)
-        } else {
-            (r_asymptotic(1.0, 1.0, h), r_asymptotic(2.0, 2.0, h))
-        };
-        let r0 = h.mul_add(r1, r2);
-        let p = normal::pdf(h);
-        [p * r0, p * r1, p * r2]
+        normal::pdf(h) * integer_top(h).0
     } else {
-        if h == f64::NEG_INFINITY {
-            return [1.0, f64::INFINITY, f64::INFINITY];
-        }
-        let a = -h;
-        let p = normal::pdf(h);
-        let f0 = 1.0 - normal::tail(a);
-        let f1 = a.mul_add(f0, p);
-        let f2 = a.mul_add(f1, f0);
-        [f0, f1, f2]
+        let (p, q) = neg_integer_base(h);
+        p - h * q
     }
 }
 
-/// `[F_1/2, F_3/2, F_5/2](h)`.
-#[inline]
-pub fn half_family(h: f64) -> [f64; 3] {
-    if h.is_nan() {
-        return [f64::NAN; 3];
-    }
+/// `F_2(h) = phi(h) R_2(h)`; for `h < 0`, `F_0 + |h| F_1`.
+fn f2(h: f64) -> f64 {
     if h >= 0.0 {
         if h == f64::INFINITY {
-            return [0.0; 3];
+            return 0.0;
         }
-        let (r32, r52) = if h < TABLE_HI {
-            (piecewise(&POS_R32, 0.0, h), piecewise(&POS_R52, 0.0, h))
-        } else {
-            (
-                r_asymptotic(1.5, GAMMA_5_2, h),
-                r_asymptotic(2.5, GAMMA_7_2, h),
-            )
-        };
-        let r12 = h.mul_add(r32, r52) / 1.5;
-        let p = normal::pdf(h);
-        [p * r12, p * r32, p * r52]
+        normal::pdf(h) * integer_top(h).1
+    } else {
+        let (p, q) = neg_integer_base(h);
+        q - h * (p - h * q)
+    }
+}
+
+/// `F_1/2 = phi (R_5/2 + h R_3/2)/(3/2)` for `h >= 0`; Chebyshev pieces or
+/// the asymptotic series below 0.
+fn f_half(h: f64) -> f64 {
+    if h >= 0.0 {
+        if h == f64::INFINITY {
+            return 0.0;
+        }
+        let (r32, r52) = half_top(h);
+        normal::pdf(h) * (h * r32 + r52) / 1.5
+    } else if h >= TABLE_LO {
+        piecewise(&NEG_F12, TABLE_LO, h)
+    } else {
+        let a = -h;
+        neg_asymptotic(0.5, a, a.sqrt())
+    }
+}
+
+/// `F_3/2 = phi R_3/2`.
+fn f3half(h: f64) -> f64 {
+    if h >= 0.0 {
+        if h == f64::INFINITY {
+            return 0.0;
+        }
+        normal::pdf(h) * half_top(h).0
+    } else if h >= TABLE_LO {
+        piecewise(&NEG_F32, TABLE_LO, h)
+    } else {
+        let a = -h;
+        neg_asymptotic(1.5, a, a * a.sqrt())
+    }
+}
+
+/// `F_5/2 = phi R_5/2`; for `h < 0`, `1.5 F_1/2 + |h| F_3/2`.
+fn f5half(h: f64) -> f64 {
+    if h >= 0.0 {
+        if h == f64::INFINITY {
+            return 0.0;
+        }
+        normal::pdf(h) * half_top(h).1
     } else if h >= TABLE_LO {
         let f12 = piecewise(&NEG_F12, TABLE_LO, h);
         let f32 = piecewise(&NEG_F32, TABLE_LO, h);
-        [f12, f32, (-h).mul_add(f32, 1.5 * f12)]
+        1.5 * f12 - h * f32
     } else {
         let a = -h;
-        [
-            neg_asymptotic(0.5, a),
-            neg_asymptotic(1.5, a),
-            neg_asymptotic(2.5, a),
-        ]
+        neg_asymptotic(2.5, a, a * a * a.sqrt())
     }
 }
 
-/// `F_nu(-a) ~ sum_j C(nu, 2j) (2j-1)!! a^(nu-2j)` for `a >= 9`: the
-/// moments of `(a + S)^nu`; the neglected part is `O(exp(-a^2/2))`.
-fn neg_asymptotic(nu: f64, a: f64) -> f64 {
-    let lead = a.powf(nu);
+/// `F_nu(-a) ~ sum_j C(nu, 2j) (2j-1)!! a^(nu-2j)` for `a >= 20` with
+/// `lead = a^nu`: the moments of `(a + S)^nu`; the neglected part is
+/// `O(exp(-a^2/2))`.
+fn neg_asymptotic(nu: f64, a: f64, lead: f64) -> f64 {
     if a > 1e100 || !lead.is_finite() {
         return lead;
     }
@@ -183,7 +252,7 @@ mod tests {
 
     #[test]
     fn pieces_join_continuously() {
-        for edge in 1..12 {
+        for edge in 1..20 {
             let h = edge as f64;
             for n in CLOSED_ORDERS {
                 let below = gaussian_fn(n, h - 1e-12).unwrap();

@@ -3,9 +3,9 @@
 //! Everything rests on the scaled Mills ratio `R_0(h) = Q(h)/phi(h)`
 //! (`h >= 0`), evaluated without cancellation: `R_0 = R_2 + h R_1` (both
 //! terms positive) with `R_1`, `R_2` the scaled Gaussian integrals of
-//! [`gaussian_fn`](super::gaussian_fn) (Chebyshev pieces on `[0, 12)`, the
+//! [`gaussian_fn`](super::gaussian_fn) (Chebyshev pieces on `[0, 20)`, the
 //! asymptotic series beyond). The density's exponent `h^2/2` is formed
-//! exactly (an FMA gives the rounding error of `h*h`), so `phi(h)` keeps
+//! exactly (Dekker's exact product gives the rounding error of `h*h`), so `phi(h)` keeps
 //! full relative accuracy up to its underflow at `h ~ 38.6`.
 
 use super::gaussian_fn::{r_asymptotic, scaled_integer_top};
@@ -16,7 +16,7 @@ pub const FRAC_1_SQRT_2PI: f64 = 0.398_942_280_401_432_677_939_946_059_934_381_8
 const SQRT_2_OVER_PI: f64 = 0.797_884_560_802_865_355_879_892_119_868_763_737;
 
 /// `exp(-x^2/2)` with the exponent formed exactly: `x^2 = p + e` with
-/// `p = fl(x*x)` and `e` its rounding error (FMA), then
+/// `p = fl(x*x)` and `e` its rounding error (Dekker's exact product), then
 /// `exp(-p/2) (1 - e/2)` (`|e/2| < 1e-13` wherever the result is normal).
 #[inline]
 pub fn exp_minus_half_sq(x: f64) -> f64 {
@@ -28,7 +28,12 @@ pub fn exp_minus_half_sq(x: f64) -> f64 {
         // exp(-750) underflows; also keeps inf - inf out of the FMA.
         return 0.0;
     }
-    let e = x.mul_add(x, -p);
+    // Exact rounding error of x*x by Veltkamp splitting (Dekker 1971);
+    // no FMA needed (a library call on targets without the feature).
+    let c = 134_217_729.0 * x; // 2^27 + 1
+    let hi = c - (c - x);
+    let lo = x - hi;
+    let e = ((hi * hi - p) + 2.0 * hi * lo) + lo * lo;
     (-0.5 * p).exp() * (1.0 - 0.5 * e)
 }
 
@@ -62,9 +67,9 @@ pub(crate) fn scaled_r0(h: f64) -> f64 {
     }
     if h < super::gaussian_fn::TABLE_HI {
         let (r1, r2) = scaled_integer_top(h);
-        h.mul_add(r1, r2)
+        h * r1 + r2
     } else {
-        r_asymptotic(0.0, 1.0, h)
+        r_asymptotic(0.0, 1.0, h, h)
     }
 }
 

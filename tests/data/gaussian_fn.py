@@ -5,7 +5,8 @@ F_n(h) = int_h^inf (s-h)^n phi(s) ds, phi the standard normal density, for n in
   (a) closed form Gamma(n+1)/sqrt(2 pi) exp(-h^2/4) D_(-n-1)(h)   (mp.pcfd)
   (b) direct quadrature mp.quad of (s-h)^n phi(s) on split intervals (in t = s - h).
 Grid: h = -5 .. 10 step 0.25, 10.5 .. 37 step 0.5, plus extra points outside [-5, 37]
-(-50, -20, -12, -9.5, -9, -8.5, -7, -6, 37.25, 37.5, 38) and a few off-grid points.
+(-50, -30, -25, -21, -20, -12, -9.5, -9, -8.5, -7, -6, 37.25, 37.5, 38) and off-grid points
+next to the method switches at +-20 and 12.
 Also: erfc(x) (mp.erfc), Gamma(x), ln Gamma(x), normal quantiles.
 Writes gaussian_fn.json next to this script. Run: python3 tests/data/gaussian_fn.py
 """
@@ -34,7 +35,7 @@ def f_quad(n, h):
 def main():
     hs = [mp.mpf(-5) + mp.mpf(k) / 4 for k in range(61)]
     hs += [mp.mpf(10) + mp.mpf(k) / 2 for k in range(1, 55)]
-    extra = ["-50", "-20", "-12", "-9.5", "-9", "-8.5", "-7", "-6", "-0.3333", "0.1", "1.7",
+    extra = ["-50", "-30", "-25", "-21", "-20.001", "-19.999", "-20", "-12", "19.999", "20.001", "-9.5", "-9", "-8.5", "-7", "-6", "-0.3333", "0.1", "1.7",
              "3.14159", "11.999", "12.001", "37.25", "37.5", "38"]
     hs += [mp.mpf(float(mp.mpf(x))) for x in extra]  # exactly the double the test uses
     table = {}
