@@ -46,13 +46,21 @@ pub fn build_contact(scene: &Scene) -> Result<AsperityContact> {
         .map_err(|e| in_table("surface", e))
 }
 
-/// The surface statistics.
+/// The surface statistics. For `distribution = "empirical"` the height
+/// scale is the measured heights' standard deviation (divisor N), whatever
+/// `surface.sigma` says, and separations are measured from their mean.
 ///
 /// # Errors
 /// Bad values, naming the scene field.
 pub fn build_surface(scene: &Scene) -> Result<RoughSurface> {
     let s = &scene.surface;
-    RoughSurface::new(s.density, s.radius, s.sigma, s.nominal_area)
+    let sigma = match (s.distribution.as_str(), &s.heights) {
+        ("empirical", Some(h)) => crate::heights::Empirical::new(h)
+            .map_err(|e| in_table("surface", e))?
+            .std_m(),
+        _ => s.sigma,
+    };
+    RoughSurface::new(s.density, s.radius, sigma, s.nominal_area)
         .map_err(|e| in_table("surface", e))
 }
 
