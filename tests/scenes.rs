@@ -78,7 +78,8 @@ fn every_example_scene_runs_and_matches_library_calls() {
             let direct = model.pull_off(closest, 64, &acc).unwrap();
             match (res.pull_off, direct) {
                 (Some(p), Some(d)) => {
-                    assert!((p.load - d.load).abs() <= 1e-9 * d.load.abs(), "{name}")
+                    let tol = scene.accuracy.rtol * d.load.abs();
+                    assert!((p.load - d.load).abs() <= tol, "{name}: {p:?} vs {d:?}")
                 }
                 (None, None) => {}
                 other => panic!("{name}: {other:?}"),

@@ -347,8 +347,17 @@ impl GwModel {
             return Ok(empty);
         }
         let points = self.split_points(d, history, s_lo, s_hi);
+        // Load alone needs no contact radius: cheaper for tabulated laws.
+        let load_only = mask[1] == 0.0 && mask[2] == 0.0;
         let eval = |s: f64| -> [f64; 3] {
             let delta = sigma * s - d;
+            if load_only {
+                let p = match history {
+                    History::Approach => law.load(delta, Branch::Approach),
+                    History::Retract { closest } => law.load_after(delta, sigma * s - closest),
+                };
+                return [p * dist.pdf(s), 0.0, 0.0];
+            }
             let st: ContactState = match history {
                 History::Approach => law.state(delta, Branch::Approach),
                 History::Retract { closest } => law.state_after(delta, sigma * s - closest),

@@ -132,6 +132,12 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         }
     }
 
+    /// Load only of [`state_after`](AsperityLaw::state_after) (N); laws
+    /// that can skip the contact radius override it.
+    fn load_after(&self, delta: f64, delta_max: f64) -> f64 {
+        self.state_after(delta, delta_max).load
+    }
+
     /// Values of `delta_max` at which [`state_after`](AsperityLaw::state_after)
     /// changes character (default: the attach interference). Integrators
     /// split their quadrature there.

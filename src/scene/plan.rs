@@ -418,7 +418,7 @@ fn tabulate_if_worth_it(
         "law evaluation",
         format!("Chebyshev table, {} panels", pa + pr),
         format!(
-            "exact {} replaced by degree-16 interpolants to rtol/10 = {:e} on [{lo:.3e}, {hi:.3e}] m \
+            "exact {} replaced by degree-6 Chebyshev interpolants to rtol/10 = {:e} on [{lo:.3e}, {hi:.3e}] m \
              ({} exact evaluations to build; exact law outside)",
             law.name,
             rtol / 10.0,
