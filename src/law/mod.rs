@@ -20,16 +20,19 @@
 //! | Bradley (rigid, LJ 9-3) | [`bradley`] | none (rigid) | none | `-2 pi w R` at `delta = 0` |
 //! | DMT | [`dmt`] | 0 | 0 | `-2 pi w R` |
 //! | JKR | [`jkr`] | 0 | `-(3/4)(pi^2 w^2 R/E*^2)^(1/3)` | `-1.5 pi w R` |
+//! | tabulated (e.g. LJ sphere solver) | [`tabulated`] | jump-in | jump-out | table's minimum |
 
 pub mod bradley;
 pub mod dmt;
 pub mod hertz;
 pub mod jkr;
+pub mod tabulated;
 
 pub use bradley::Bradley;
 pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
+pub use tabulated::Tabulated;
 
 use crate::error::{Error, Result};
 use crate::material::AsperityContact;

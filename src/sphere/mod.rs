@@ -35,7 +35,7 @@ mod newton;
 mod quadrature;
 mod trace;
 
-pub use calibrate::{Calibration, CalibrationCache};
+pub use calibrate::{calibrate, Calibration, CalibrationCache};
 
 use crate::error::{positive, Allowed, Error, Result};
 use mesh::MeshSpec;
@@ -128,7 +128,7 @@ impl SolverOptions {
 }
 
 /// One point of the load–approach curve.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SpherePoint {
     /// Central gap `H(0)/z0` (the continuation parameter).
     pub central_gap: f64,
@@ -151,7 +151,7 @@ pub struct SpherePoint {
 }
 
 /// A critical point in Maugis units.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Critical {
     /// Load `P/(pi w R)`.
     pub load_bar: f64,
@@ -164,7 +164,7 @@ pub struct Critical {
 }
 
 /// The derived facts of one solver curve.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SphereFacts {
     /// Pull-off under load control: the minimum load.
     pub pull_off: Critical,
