@@ -63,16 +63,24 @@ fn main() {
     println!(
         "\n### Solver vs Maugis–Dugdale (lambda = 1.1570 mu), paraboloid, default resolution\n"
     );
-    println!("| mu | lambda | pull-off (solver) | pull-off (MD) | jump-out load | jump-out Dbar | jump-in Dbar | A at zero load | time (s) |");
-    println!("|---|---|---|---|---|---|---|---|---|");
+    println!("| mu | lambda = 1.157 mu | pull-off (solver) | pull-off (MD) | MD lambda with the solver's pull-off | jump-out load | jump-out Dbar | jump-in Dbar | A at zero load | time (s) |");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
     for mu in [
         0.01, 0.03, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0, 7.0, 10.0,
     ] {
         let (f, t) = facts(mu, Shape::Paraboloid, 1.0);
         let lambda = LAMBDA_PER_TABOR * mu;
         let show = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{v:.4}"));
+        // the lambda whose MD pull-off equals the solver's (MD is monotone in lambda)
+        let p = f.pull_off.load_bar;
+        let fit = if p > -1.9999 && p < -1.5001 {
+            brent(|l| md_pull_off(l) - p, 1e-3, 200.0, 1e-10)
+                .map_or("–".to_string(), |l| format!("{l:.4}"))
+        } else {
+            "–".to_string()
+        };
         println!(
-            "| {mu} | {lambda:.4} | {:.4} | {:.4} | {} | {} | {} | {} | {t:.3} |",
+            "| {mu} | {lambda:.4} | {:.4} | {:.4} | {fit} | {} | {} | {} | {} | {t:.3} |",
             f.pull_off.load_bar,
             md_pull_off(lambda),
             show(f.jump_out.map(|j| j.load_bar)),

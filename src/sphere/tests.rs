@@ -104,7 +104,7 @@ fn true_sphere_below_paraboloid() {
 /// Rigid limit of the true sphere: integrating the Derjaguin force out to
 /// `r = R` at contact gives `F = (2/rho)[(rho+1) (S0(1) - S0(1+rho)) -
 /// (S1(1) - S1(1+rho))]`, `S0(h) = h^-8/3 - 4h^-2/3`, `S1(h) = (8/3)(h^-7/7 - 1/h)`
-/// (-1.7425 at rho = 10, against -2 for the paraboloid).
+/// (-1.7671 at rho = 10, against -2 for the paraboloid).
 #[test]
 fn rigid_true_sphere_limit() {
     let rho: f64 = 10.0;
