@@ -1,5 +1,5 @@
 //! A law tabulated in Maugis units, e.g. calibrated from the full
-//! Lennard-Jones sphere solver ([`crate::sphere::calibrate`]).
+//! Lennard-Jones sphere solver ([`mod@crate::sphere::calibrate`]).
 //!
 //! One [`CurveTable`] (dimensionless: `Pbar = P/(pi w R)`,
 //! `Dbar = delta/(pi^2 w^2 R/K^2)^(1/3)`, `A = a/(pi w R^2/K)^(1/3)`,

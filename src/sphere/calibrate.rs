@@ -8,7 +8,7 @@
 //! equivalent is `lambda = 1.1570 mu` ([`crate::material::LAMBDA_PER_TABOR`]).
 //!
 //! [`CalibrationCache`] stores calibrations as JSON files keyed by
-//! [`SOLVER_VERSION`](super::SOLVER_VERSION), mu, the shape and the solver
+//! [`SOLVER_VERSION`], mu, the shape and the solver
 //! options, so sweeps never recompute them.
 
 use super::{Shape, SolverOptions, SphereFacts, SpherePoint, SphereProblem, SOLVER_VERSION};

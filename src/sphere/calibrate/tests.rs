@@ -99,3 +99,36 @@ fn small_mu_has_one_branch() {
         );
     }
 }
+
+/// One table serves every R, E*, w: the law in Maugis units is the same.
+#[test]
+fn one_table_serves_every_contact() {
+    let c = Calibration::compute(&problem()).unwrap();
+    let contacts = [(1e-6, 5e10, 0.5), (3e-5, 1e9, 0.05), (2e-8, 2e11, 1.5)];
+    let laws: Vec<_> = contacts
+        .iter()
+        .map(|&(r, e, w)| {
+            (
+                c.law(r, e, w).unwrap(),
+                crate::material::MaugisScales::new(r, e, w).unwrap(),
+            )
+        })
+        .collect();
+    for d in [-5.0, -0.95, -0.5, 0.0, 1.0, 3.0] {
+        for branch in [Branch::Approach, Branch::Retract] {
+            let v: Vec<(f64, f64)> = laws
+                .iter()
+                .map(|(l, s)| {
+                    let st = l.state(d * s.interference, branch);
+                    (st.load / s.load, st.radius / s.radius)
+                })
+                .collect();
+            for x in &v[1..] {
+                assert!(
+                    (x.0 - v[0].0).abs() < 1e-12 && (x.1 - v[0].1).abs() < 1e-12,
+                    "{d} {v:?}"
+                );
+            }
+        }
+    }
+}
