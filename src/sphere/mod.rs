@@ -86,7 +86,9 @@ pub struct SolverOptions {
     pub start_gap: f64,
     /// Tracing stops once the load exceeds this, in units of `pi w R`. Default 2.
     pub max_load_bar: f64,
-    /// Step along the curve in Maugis units (`hypot(dPbar, dDbar)`). Default 0.02.
+    /// Step along the curve, `hypot(dPbar, dD)` with `D` the interference
+    /// in Maugis units (`Dbar`) or, when `mu (9 pi^2/16)^(1/3) < 1` (small mu,
+    /// where `Dbar` spans hundreds), in units of `z0`. Default 0.02.
     pub arc_step: f64,
     /// Smallest central gap `H(0)/z0` traced. Default 0.3.
     pub min_gap: f64,

@@ -146,10 +146,10 @@ impl<'a> Tracer<'a> {
             if h0 <= o.min_gap {
                 break;
             }
-            let speed = cur
-                .sol
-                .d_load
-                .hypot(cur.sol.d_approach / (mu * MAUGIS_INTERFERENCE));
+            // interference in Maugis units, or in z0 when that is larger
+            // (small mu, where Dbar = alpha/(mu z0 ...) spans hundreds)
+            let per_alpha = 1.0 / (mu * MAUGIS_INTERFERENCE).max(1.0);
+            let speed = cur.sol.d_load.hypot(cur.sol.d_approach * per_alpha);
             let mut dh = (arc_step / speed.max(1e-300))
                 .min(0.1 * h0)
                 .min(2.0 * prev_dh)
