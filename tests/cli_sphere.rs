@@ -80,6 +80,7 @@ fn bad_input_exits_2_naming_the_argument() {
         (vec!["--mu", "1", "--rho", "5"], "--rho"),
         (vec!["--mu", "1", "--rho", "nan"], "--rho"),
         (vec!["--mu", "abc"], "--mu"),
+        (vec!["--mu", "11"], "--mu"),
     ] {
         let out = run(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");

@@ -1,9 +1,272 @@
-//! Calibrated asperity laws from solver curves (placeholder).
+//! Asperity laws calibrated from the full solver, and their on-disk cache.
+//!
+//! [`Calibration::compute`] traces the load–approach curve at one Tabor
+//! parameter (and shape), splits it at the jump-in and jump-out into the
+//! detached and attached branches of a [`CurveTable`] in Maugis units, and
+//! [`Calibration::law`] applies it to any `R`, `E*`, `w` as a
+//! [`Tabulated`] law usable by [`crate::gw::GwModel`]. The Maugis–Dugdale
+//! equivalent is `lambda = 1.1570 mu` ([`crate::material::LAMBDA_PER_TABOR`]).
+//!
+//! [`CalibrationCache`] stores calibrations as JSON files keyed by
+//! [`SOLVER_VERSION`], mu, the shape and the solver
+//! options, so sweeps never recompute them.
 
-/// A calibration.
-#[derive(Debug, Clone)]
-pub struct Calibration;
+use super::{Shape, SolverOptions, SphereFacts, SpherePoint, SphereProblem, SOLVER_VERSION};
+use crate::error::{Error, Result};
+use crate::law::tabulated::{BranchTable, CurveTable, TablePoint, Tabulated};
+use crate::material::LAMBDA_PER_TABOR;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
-/// A cache.
-#[derive(Debug, Clone)]
-pub struct CalibrationCache;
+/// A calibrated law table with its provenance.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Calibration {
+    /// Solver version that produced it.
+    pub solver_version: u32,
+    /// Tabor parameter.
+    pub mu: f64,
+    /// Shape.
+    pub shape: Shape,
+    /// `Debug` form of the solver options used.
+    pub options: String,
+    /// Maugis–Dugdale equivalent `lambda = 1.1570 mu`.
+    pub lambda_equivalent: f64,
+    /// Critical points from the solver.
+    pub facts: SphereFacts,
+    /// The table.
+    pub table: CurveTable,
+}
+
+fn branch(points: &[SpherePoint]) -> BranchTable {
+    let mut b = BranchTable {
+        interference_bar: vec![],
+        load_bar: vec![],
+        radius_bar: vec![],
+    };
+    for p in points {
+        if b.interference_bar
+            .last()
+            .is_none_or(|&d| p.interference_bar > d)
+        {
+            b.interference_bar.push(p.interference_bar);
+            b.load_bar.push(p.load_bar);
+            b.radius_bar.push(p.radius_bar);
+        }
+    }
+    b
+}
+
+fn table_point(c: &super::Critical) -> TablePoint {
+    TablePoint {
+        load_bar: c.load_bar,
+        interference_bar: c.interference_bar,
+        radius_bar: c.radius_bar,
+    }
+}
+
+fn as_point(c: &super::Critical) -> SpherePoint {
+    SpherePoint {
+        central_gap: c.central_gap,
+        approach: 0.0,
+        load_bar: c.load_bar,
+        radius: 0.0,
+        interference_bar: c.interference_bar,
+        radius_bar: c.radius_bar,
+        d_approach: 0.0,
+        d_load: 0.0,
+    }
+}
+
+impl Calibration {
+    /// Traces `problem` and tabulates both branches.
+    ///
+    /// # Errors
+    /// [`Error::NoConvergence`] from the solver; [`Error::Invalid`] if the
+    /// traced branches are too short to tabulate.
+    pub fn compute(problem: &SphereProblem) -> Result<Self> {
+        let facts = problem.facts()?;
+        let curve = problem.trace()?;
+        let mu = problem.mu();
+        let (detached, attached) = match (facts.jump_in, facts.jump_out) {
+            (Some(ji), Some(jo)) => {
+                // Along decreasing H(0): detached up to the jump-in, attached
+                // from the jump-out.
+                let mut det: Vec<SpherePoint> = curve
+                    .iter()
+                    .filter(|p| p.central_gap > ji.central_gap)
+                    .copied()
+                    .collect();
+                det.push(as_point(&ji));
+                let mut att = vec![as_point(&jo)];
+                att.extend(
+                    curve
+                        .iter()
+                        .filter(|p| p.central_gap < jo.central_gap)
+                        .copied(),
+                );
+                (branch(&det), branch(&att))
+            }
+            _ => {
+                let b = branch(&curve);
+                (b.clone(), b)
+            }
+        };
+        if detached.interference_bar.len() < 2 || attached.interference_bar.len() < 2 {
+            return Err(Error::invalid(
+                "calibration",
+                "traced branches have fewer than 2 points",
+            ));
+        }
+        let table = CurveTable {
+            source: format!(
+                "asperity sphere solver v{SOLVER_VERSION}, mu = {mu}, {:?}",
+                problem.shape()
+            ),
+            detached,
+            attached,
+            attach_bar: facts.jump_in.map(|j| j.interference_bar),
+            detach_bar: facts.jump_out.map(|j| j.interference_bar),
+            pull_off: table_point(&facts.pull_off),
+            jump_out: facts.jump_out.as_ref().map(table_point),
+            zero_load_radius_bar: facts.zero_load_radius_bar,
+            far_field_scale: mu * super::trace::MAUGIS_INTERFERENCE,
+            far_field_cutoff_gap: 100.0,
+        };
+        Ok(Calibration {
+            solver_version: SOLVER_VERSION,
+            mu,
+            shape: problem.shape(),
+            options: format!("{:?}", problem.options()),
+            lambda_equivalent: LAMBDA_PER_TABOR * mu,
+            facts,
+            table,
+        })
+    }
+
+    /// The calibrated law for radius `R` (m), contact modulus `E*` (Pa) and
+    /// work of adhesion `w` (J/m^2). The caller keeps `mu` consistent.
+    ///
+    /// # Errors
+    /// As [`Tabulated::new`].
+    pub fn law(&self, radius: f64, contact_modulus: f64, work: f64) -> Result<Tabulated> {
+        Tabulated::new(Arc::new(self.table.clone()), radius, contact_modulus, work)
+    }
+}
+
+/// Calibrations stored as JSON files in one directory.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CalibrationCache {
+    dir: PathBuf,
+}
+
+/// FNV-1a, 64 bit: a stable hash for cache keys.
+fn fnv1a(text: &str) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in text.bytes() {
+        h ^= b as u64;
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}
+
+impl CalibrationCache {
+    /// A cache in `dir` (created on first store).
+    pub fn new(dir: impl Into<PathBuf>) -> Self {
+        CalibrationCache { dir: dir.into() }
+    }
+
+    /// `$ASPERITY_CACHE`, else `$HOME/.cache/asperity`, else a directory
+    /// under the system temporary directory.
+    pub fn default_location() -> Self {
+        if let Some(d) = std::env::var_os("ASPERITY_CACHE").filter(|d| !d.is_empty()) {
+            return Self::new(d);
+        }
+        if let Some(h) = std::env::var_os("HOME").filter(|d| !d.is_empty()) {
+            return Self::new(Path::new(&h).join(".cache").join("asperity"));
+        }
+        Self::new(std::env::temp_dir().join("asperity-cache"))
+    }
+
+    /// The directory.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+
+    /// File of a problem: solver version, mu, shape and a hash of all three
+    /// plus the options.
+    pub fn path_for(&self, problem: &SphereProblem) -> PathBuf {
+        let shape = match problem.shape() {
+            Shape::Paraboloid => "paraboloid".to_string(),
+            Shape::Sphere { rho } => format!("rho{rho:e}"),
+        };
+        let key = format!(
+            "{SOLVER_VERSION}|{:e}|{:?}|{:?}",
+            problem.mu(),
+            problem.shape(),
+            problem.options()
+        );
+        self.dir.join(format!(
+            "sphere-v{SOLVER_VERSION}-mu{:e}-{shape}-{:016x}.json",
+            problem.mu(),
+            fnv1a(&key)
+        ))
+    }
+
+    /// The stored calibration of `problem`, if present, readable and made by
+    /// this solver version for these parameters.
+    pub fn load(&self, problem: &SphereProblem) -> Option<Calibration> {
+        let text = std::fs::read_to_string(self.path_for(problem)).ok()?;
+        let c: Calibration = serde_json::from_str(&text).ok()?;
+        let same = c.solver_version == SOLVER_VERSION
+            && c.mu == problem.mu()
+            && c.shape == problem.shape()
+            && c.options == format!("{:?}", problem.options());
+        same.then_some(c)
+    }
+
+    /// Stores a calibration (atomically: temp file then rename).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `cache` when the directory or file cannot be
+    /// written.
+    pub fn store(&self, problem: &SphereProblem, c: &Calibration) -> Result<PathBuf> {
+        let io =
+            |e: std::io::Error| Error::invalid("cache", format!("{}: {e}", self.dir.display()));
+        std::fs::create_dir_all(&self.dir).map_err(io)?;
+        let path = self.path_for(problem);
+        let tmp = path.with_extension(format!("tmp{}", std::process::id()));
+        let text = serde_json::to_string(c)
+            .map_err(|e| Error::invalid("cache", format!("serialise: {e}")))?;
+        std::fs::write(&tmp, text).map_err(io)?;
+        std::fs::rename(&tmp, &path).map_err(io)?;
+        Ok(path)
+    }
+
+    /// The cached calibration, or computes and stores it. A cache that
+    /// cannot be written does not fail the computation.
+    ///
+    /// # Errors
+    /// As [`Calibration::compute`].
+    pub fn get_or_compute(&self, problem: &SphereProblem) -> Result<Calibration> {
+        if let Some(c) = self.load(problem) {
+            return Ok(c);
+        }
+        let c = Calibration::compute(problem)?;
+        let _ = self.store(problem, &c);
+        Ok(c)
+    }
+}
+
+/// Convenience: the calibration of `mu` (paraboloid, default options) from
+/// the default cache.
+///
+/// # Errors
+/// As [`SphereProblem::new`] and [`Calibration::compute`].
+pub fn calibrate(mu: f64) -> Result<Calibration> {
+    let p = SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default())?;
+    CalibrationCache::default_location().get_or_compute(&p)
+}
+
+#[cfg(test)]
+mod tests;

@@ -113,6 +113,34 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        /// Any spec: strictly increasing nodes from 0 to r_max, finest spacing
+        /// at most one Phi-step next to the edge, `h0 (e^g - 1)/g`, neighbouring
+        /// spacings within the grading factor exp(growth).
+        #[test]
+        fn nodes_are_valid_for_any_spec(
+            edge in 0.0f64..10.0,
+            h0 in 1e-4f64..0.5,
+            growth in 0.02f64..0.5,
+            inner in 0.0f64..1.0,
+            outer in 0.0f64..1.0,
+            extra in 1.0f64..200.0,
+        ) {
+            let spec = MeshSpec { edge, h0, growth, inner, outer, r_max: edge + extra };
+            let r = spec.nodes();
+            proptest::prop_assert_eq!(r[0], 0.0);
+            proptest::prop_assert_eq!(*r.last().unwrap(), edge + extra);
+            proptest::prop_assert!(r.windows(2).all(|w| w[1] > w[0]));
+            let min_gap = r.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
+            proptest::prop_assert!(min_gap <= h0 * growth.exp_m1() / growth * (1.0 + 1e-9));
+            for w in r.windows(3) {
+                let ratio = (w[2] - w[1]) / (w[1] - w[0]);
+                let bound = growth.exp() * (1.0 + 1e-9);
+                proptest::prop_assert!(ratio <= bound && ratio >= 1.0 / bound, "{}", ratio);
+            }
+        }
+    }
+
     #[test]
     fn edge_at_centre() {
         let spec = MeshSpec {

@@ -35,7 +35,7 @@ mod newton;
 mod quadrature;
 mod trace;
 
-pub use calibrate::{Calibration, CalibrationCache};
+pub use calibrate::{calibrate, Calibration, CalibrationCache};
 
 use crate::error::{positive, Allowed, Error, Result};
 use mesh::MeshSpec;
@@ -45,6 +45,16 @@ use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
 /// Bump when a change alters solver results: calibrations cached on disk are
 /// keyed by it.
 pub const SOLVER_VERSION: u32 = 1;
+
+/// Smallest Tabor parameter accepted (the rigid Bradley limit is within
+/// 0.01% there).
+pub const MIN_TABOR: f64 = 0.005;
+
+/// Largest Tabor parameter accepted. Above it the central gap `H(0)` stops
+/// being a monotone parameter of the curve just after contact forms (a fold
+/// in `H(0)`, observed at mu = 15-20), which would need arc-length
+/// continuation (Feng 2000); at mu = 10 the pull-off is within 0.7% of JKR.
+pub const MAX_TABOR: f64 = 10.0;
 
 /// Smallest size ratio `rho = R/z0` accepted for the true sphere.
 pub const MIN_SIZE_RATIO: f64 = 10.0;
@@ -76,7 +86,9 @@ pub struct SolverOptions {
     pub start_gap: f64,
     /// Tracing stops once the load exceeds this, in units of `pi w R`. Default 2.
     pub max_load_bar: f64,
-    /// Step along the curve in Maugis units (`hypot(dPbar, dDbar)`). Default 0.02.
+    /// Step along the curve, `hypot(dPbar, dD)` with `D` the interference
+    /// in Maugis units (`Dbar`) or, when `mu (9 pi^2/16)^(1/3) < 1` (small mu,
+    /// where `Dbar` spans hundreds), in units of `z0`. Default 0.02.
     pub arc_step: f64,
     /// Smallest central gap `H(0)/z0` traced. Default 0.3.
     pub min_gap: f64,
@@ -128,7 +140,7 @@ impl SolverOptions {
 }
 
 /// One point of the load–approach curve.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SpherePoint {
     /// Central gap `H(0)/z0` (the continuation parameter).
     pub central_gap: f64,
@@ -151,7 +163,7 @@ pub struct SpherePoint {
 }
 
 /// A critical point in Maugis units.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Critical {
     /// Load `P/(pi w R)`.
     pub load_bar: f64,
@@ -164,7 +176,7 @@ pub struct Critical {
 }
 
 /// The derived facts of one solver curve.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SphereFacts {
     /// Pull-off under load control: the minimum load.
     pub pull_off: Critical,
@@ -201,14 +213,14 @@ pub struct SphereProblem {
 }
 
 impl SphereProblem {
-    /// A problem with Tabor parameter `mu` in `[0.005, 20]` and a shape
-    /// (true sphere: `rho >= 10`).
+    /// A problem with Tabor parameter `mu` in `[0.005, 10]` ([`MAX_TABOR`]) and a
+    /// shape (true sphere: `rho >= 10`).
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `mu`, `rho` or the bad option.
     pub fn new(mu: f64, shape: Shape, options: SolverOptions) -> Result<Self> {
         positive("mu", mu)?;
-        Allowed::closed(0.005, 20.0).check("mu", mu)?;
+        Allowed::closed(MIN_TABOR, MAX_TABOR).check("mu", mu)?;
         if let Shape::Sphere { rho } = shape {
             Allowed::closed(MIN_SIZE_RATIO, 1e12).check("rho", rho)?;
         }

@@ -195,7 +195,10 @@ impl Discretisation {
     }
 
     /// Newton–Raphson at central gap `h0` from the guess `guess` (gaps at the
-    /// nodes of this mesh; `guess[0]` is ignored).
+    /// nodes of this mesh; `guess[0]` is ignored). Converged when the largest
+    /// residual is below `tol` or below the rounding floor
+    /// `64 eps max_i(|H_i| + H_0 + f_i + mu^2 sum_j |C_ij - C_0j| (8/3)(H_j^-9 + H_j^-3),
+    /// sum_k |J_ik| H_k)` (the residual's change under one-ulp changes of the gaps).
     pub fn solve(&self, h0: f64, guess: &[f64], tol: f64, max_iter: usize) -> Result<Solution> {
         let n = self.len();
         let m = n - 1;
@@ -204,6 +207,7 @@ impl Discretisation {
         h[0] = h0;
         let mut sig = vec![0.0; n];
         let mut dsig = vec![0.0; n];
+        let mut sig_abs = vec![0.0; n];
         let mut last_res = f64::INFINITY;
         for iter in 0..=max_iter {
             if h.iter().any(|x| !(*x > 0.0)) {
@@ -212,26 +216,43 @@ impl Discretisation {
             for j in 0..n {
                 sig[j] = traction(h[j]);
                 dsig[j] = traction_slope(h[j]);
+                // size of the two cancelling terms of sigma_hat: its rounding scale
+                sig_abs[j] = traction(h[j])
+                    .abs()
+                    .max((8.0 / 3.0) * (h[j].powi(-9) + h[j].powi(-3)));
             }
             let c0 = &self.c[0..n];
             let mut res = DVector::<f64>::zeros(m);
             let mut jac = DMatrix::<f64>::zeros(m, m);
+            // Size of the terms summed into a residual: its rounding floor.
+            let mut magnitude = 0.0f64;
             for i in 1..n {
                 let ci = &self.c[i * n..(i + 1) * n];
                 let mut u = 0.0;
+                let mut u_abs = 0.0;
                 for j in 0..n {
-                    u += (ci[j] - c0[j]) * sig[j];
+                    let cj = ci[j] - c0[j];
+                    u += cj * sig[j];
+                    u_abs += cj.abs() * sig_abs[j];
                 }
+                magnitude = magnitude.max(h[i].abs() + h0 + self.f[i] + mu2 * u_abs);
                 res[i - 1] = h[i] - h0 - self.f[i] - mu2 * u;
+                let mut row_abs = 0.0;
                 for k in 1..n {
-                    jac[(i - 1, k - 1)] = -mu2 * (ci[k] - c0[k]) * dsig[k];
+                    let jk = -mu2 * (ci[k] - c0[k]) * dsig[k];
+                    jac[(i - 1, k - 1)] = jk;
+                    row_abs += jk.abs() * h[k];
                 }
                 jac[(i - 1, i - 1)] += 1.0;
+                // a one-ulp change of every gap moves the residual by up to
+                // eps * sum_k |J_ik| H_k: part of the floor too
+                magnitude = magnitude.max(row_abs);
             }
             let norm = res.amax();
             last_res = norm;
             let lu = jac.lu();
-            if norm <= tol {
+            // tolerance, or the rounding floor of the residual sums
+            if norm <= tol.max(64.0 * f64::EPSILON * magnitude) {
                 return self.finish(h, &sig, &dsig, &lu, iter);
             }
             if iter == max_iter {

@@ -104,7 +104,7 @@ fn true_sphere_below_paraboloid() {
 /// Rigid limit of the true sphere: integrating the Derjaguin force out to
 /// `r = R` at contact gives `F = (2/rho)[(rho+1) (S0(1) - S0(1+rho)) -
 /// (S1(1) - S1(1+rho))]`, `S0(h) = h^-8/3 - 4h^-2/3`, `S1(h) = (8/3)(h^-7/7 - 1/h)`
-/// (-1.7425 at rho = 10, against -2 for the paraboloid).
+/// (-1.7671 at rho = 10, against -2 for the paraboloid).
 #[test]
 fn rigid_true_sphere_limit() {
     let rho: f64 = 10.0;
@@ -145,6 +145,7 @@ fn bad_inputs_name_the_field() {
         (f64::NAN, Shape::Paraboloid, "mu"),
         (f64::INFINITY, Shape::Paraboloid, "mu"),
         (1e3, Shape::Paraboloid, "mu"),
+        (10.5, Shape::Paraboloid, "mu"),
         (1.0, Shape::Sphere { rho: 9.0 }, "rho"),
         (1.0, Shape::Sphere { rho: f64::NAN }, "rho"),
         (1.0, Shape::Sphere { rho: -10.0 }, "rho"),
@@ -203,12 +204,14 @@ fn bad_inputs_name_the_field() {
     }
 }
 
-/// An unreachable tolerance is reported as `NoConvergence`, promptly.
+/// Newton that cannot converge (one iteration from the rigid guess at a
+/// central gap where the elastic sphere has deformed) is reported as
+/// `NoConvergence`, promptly.
 #[test]
 fn failure_is_an_error_not_a_hang() {
     let o = SolverOptions {
-        tolerance: 1e-300,
-        max_newton_iterations: 3,
+        start_gap: 1.31,
+        max_newton_iterations: 1,
         ..SolverOptions::coarse()
     };
     let t = std::time::Instant::now();

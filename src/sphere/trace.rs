@@ -25,6 +25,11 @@ impl State {
     }
 }
 
+/// A continuation step whose Newton needs more iterations than this is
+/// retried smaller: a good predictor converges in 2-5, and a long search may
+/// land on a spurious solution of a neighbouring branch.
+const STEP_ITERATIONS: usize = 12;
+
 pub(crate) struct Tracer<'a> {
     p: &'a SphereProblem,
     pub meshes_built: usize,
@@ -56,6 +61,15 @@ impl<'a> Tracer<'a> {
         Ok(s)
     }
 
+    /// Newton from a predictor: more than [`STEP_ITERATIONS`] is a failure.
+    fn newton_step(&mut self, disc: &Discretisation, h0: f64, guess: &[f64]) -> Result<Solution> {
+        let o = &self.p.options;
+        let limit = o.max_newton_iterations.min(STEP_ITERATIONS);
+        let s = disc.solve(h0, guess, o.tolerance, limit)?;
+        self.newton_iterations += s.iterations;
+        Ok(s)
+    }
+
     /// The rigid start at the largest central gap.
     pub fn start(&mut self) -> Result<State> {
         let h0 = self.p.options.start_gap;
@@ -76,7 +90,7 @@ impl<'a> Tracer<'a> {
             }
             let disc = self.mesh(a);
             let guess = disc.interpolate(&st.disc.r, &st.sol.h);
-            match self.newton(&disc, st.central_gap(), &guess) {
+            match self.newton_step(&disc, st.central_gap(), &guess) {
                 Ok(sol) => st = State { disc, sol },
                 // Keep the old mesh: the next step's remesh tries again.
                 Err(_) => break,
@@ -113,7 +127,7 @@ impl<'a> Tracer<'a> {
             .zip(&from.sol.tangent)
             .map(|(h, t)| (h + t * dh).max(0.5 * h))
             .collect();
-        let sol = self.newton(&from.disc, h0, &guess)?;
+        let sol = self.newton_step(&from.disc, h0, &guess)?;
         self.follow_edge(State {
             disc: from.disc.clone(),
             sol,
@@ -132,10 +146,10 @@ impl<'a> Tracer<'a> {
             if h0 <= o.min_gap {
                 break;
             }
-            let speed = cur
-                .sol
-                .d_load
-                .hypot(cur.sol.d_approach / (mu * MAUGIS_INTERFERENCE));
+            // interference in Maugis units, or in z0 when that is larger
+            // (small mu, where Dbar = alpha/(mu z0 ...) spans hundreds)
+            let per_alpha = 1.0 / (mu * MAUGIS_INTERFERENCE).max(1.0);
+            let speed = cur.sol.d_load.hypot(cur.sol.d_approach * per_alpha);
             let mut dh = (arc_step / speed.max(1e-300))
                 .min(0.1 * h0)
                 .min(2.0 * prev_dh)

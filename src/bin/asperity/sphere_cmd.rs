@@ -2,7 +2,7 @@
 //! (Maugis units) and, on request, the traced load–approach curve as CSV.
 
 use crate::CliError;
-use asperity::sphere::{Shape, SolverOptions, SphereProblem, MIN_SIZE_RATIO};
+use asperity::sphere::{Shape, SolverOptions, SphereProblem, MAX_TABOR, MIN_SIZE_RATIO, MIN_TABOR};
 use clap::Args;
 use serde::Serialize;
 use std::io::Write;
@@ -10,7 +10,7 @@ use std::io::Write;
 /// Arguments of `asperity sphere`.
 #[derive(Args, Debug)]
 pub struct SphereArgs {
-    /// Tabor parameter mu = (R w^2/(E*^2 z0^3))^(1/3), in [0.005, 20].
+    /// Tabor parameter mu = (R w^2/(E*^2 z0^3))^(1/3), in [0.005, 10].
     #[arg(long, allow_negative_numbers = true)]
     mu: f64,
     /// Size ratio rho = R/z0 (>= 10) for a true sphere; paraboloid if absent.
@@ -48,7 +48,7 @@ struct SphereFactsOut {
 }
 
 pub fn run(args: &SphereArgs) -> crate::CliResult {
-    asperity::error::Allowed::closed(0.005, 20.0).check("--mu", args.mu)?;
+    asperity::error::Allowed::closed(MIN_TABOR, MAX_TABOR).check("--mu", args.mu)?;
     let shape = match args.rho {
         Some(rho) => {
             asperity::error::Allowed::closed(MIN_SIZE_RATIO, 1e12).check("--rho", rho)?;

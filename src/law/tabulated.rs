@@ -1,0 +1,354 @@
+//! A law tabulated in Maugis units, e.g. calibrated from the full
+//! Lennard-Jones sphere solver ([`mod@crate::sphere::calibrate`]).
+//!
+//! One [`CurveTable`] (dimensionless: `Pbar = P/(pi w R)`,
+//! `Dbar = delta/(pi^2 w^2 R/K^2)^(1/3)`, `A = a/(pi w R^2/K)^(1/3)`,
+//! `K = 4E*/3`) serves every `R`, `E*`, `w` with the same Tabor parameter.
+//! Two branches, each interpolated by PCHIP (monotone, no overshoot):
+//! the *detached* branch (approach from far apart up to the jump-in at
+//! `attach_bar`) and the *attached* contact branch (from the jump-out at
+//! `detach_bar` upwards). Without hysteresis (small mu: no S-curve) both
+//! branches are the same curve and attach/detach are `-inf`.
+//!
+//! Outside the table: below its first interference the rigid
+//! Lennard-Jones (Bradley) far field, scaled to match the first point,
+//! `P ~ (H^-2 - H^-8/4)` with `H = 1 - s Dbar` the rigid gap in `z0`
+//! (`s = alpha/(z0 Dbar) = mu (9 pi^2/16)^(1/3)`); above its last
+//! interference a Hertz continuation `Pbar = P_last + Dbar^(3/2) -
+//! Dbar_last^(3/2)`, `A^2 = A_last^2 + Dbar - Dbar_last` (an approximation:
+//! calibrate up to the loads you need). The far field is cut off at the
+//! rigid gap `H = far_field_cutoff_gap` (default 100: there the pull is
+//! `(8/3)/H^2 = 2.7e-4 pi w R`, < 0.02% of the pull-off), below which the
+//! load is exactly zero, so rough-surface integrals stay finite.
+
+use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use crate::error::{Error, Result};
+use crate::material::MaugisScales;
+use crate::numeric::pchip::Pchip;
+use serde::{Deserialize, Serialize};
+use std::sync::Arc;
+
+/// One branch: interference ascending, load and radius (Maugis units).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BranchTable {
+    /// `Dbar`, strictly increasing.
+    pub interference_bar: Vec<f64>,
+    /// `Pbar` at each interference.
+    pub load_bar: Vec<f64>,
+    /// `A` at each interference (0 when not in contact).
+    pub radius_bar: Vec<f64>,
+}
+
+/// A critical point `(Pbar, Dbar, A)`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct TablePoint {
+    /// `Pbar`.
+    pub load_bar: f64,
+    /// `Dbar`.
+    pub interference_bar: f64,
+    /// `A`.
+    pub radius_bar: f64,
+}
+
+/// A dimensionless two-branch law table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CurveTable {
+    /// Where the numbers come from.
+    pub source: String,
+    /// Out-of-contact branch followed on approach, up to the jump-in.
+    pub detached: BranchTable,
+    /// Contact branch, from the jump-out up.
+    pub attached: BranchTable,
+    /// Jump-in interference `Dbar`; `None` without hysteresis.
+    pub attach_bar: Option<f64>,
+    /// Jump-out interference `Dbar`; `None` without hysteresis.
+    pub detach_bar: Option<f64>,
+    /// Load-controlled pull-off (minimum load).
+    pub pull_off: TablePoint,
+    /// Displacement-controlled jump-out, if any.
+    pub jump_out: Option<TablePoint>,
+    /// Zero-load contact radius `A`, if any.
+    pub zero_load_radius_bar: Option<f64>,
+    /// `s = mu (9 pi^2/16)^(1/3)`: rigid gap `H = 1 - s Dbar` for the far field.
+    pub far_field_scale: f64,
+    /// Rigid gap `H` (units `z0`) below which the far-field load is set to
+    /// zero: interference cut-off `Dbar = (1 - H)/s`.
+    pub far_field_cutoff_gap: f64,
+}
+
+impl CurveTable {
+    /// Interference `Dbar` below which the load is zero.
+    pub fn cutoff_bar(&self) -> f64 {
+        (1.0 - self.far_field_cutoff_gap) / self.far_field_scale
+    }
+}
+
+#[derive(Debug, Clone)]
+struct Interp {
+    load: Pchip,
+    radius: Pchip,
+}
+
+impl Interp {
+    fn new(b: &BranchTable, which: &str) -> Result<Self> {
+        let bad = || {
+            Error::invalid(
+                format!("table.{which}"),
+                "needs >= 2 finite points with strictly increasing interference and equal lengths",
+            )
+        };
+        Ok(Interp {
+            load: Pchip::new(b.interference_bar.clone(), b.load_bar.clone()).ok_or_else(bad)?,
+            radius: Pchip::new(b.interference_bar.clone(), b.radius_bar.clone()).ok_or_else(bad)?,
+        })
+    }
+}
+
+/// A [`CurveTable`] applied to one contact (`R`, `E*`, `w`).
+#[derive(Debug, Clone)]
+pub struct Tabulated {
+    table: Arc<CurveTable>,
+    detached: Interp,
+    attached: Interp,
+    scales: MaugisScales,
+}
+
+/// Rigid LJ sphere force shape `H^-2 - H^-8/4`.
+fn bradley_shape(h: f64) -> f64 {
+    let x2 = 1.0 / (h * h);
+    x2 - 0.25 * x2 * x2 * x2 * x2
+}
+
+impl Tabulated {
+    /// The table for a sphere of radius `R` (m), contact modulus `E*` (Pa),
+    /// work of adhesion `w` (J/m^2).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] for a bad `radius`, `contact_modulus`,
+    /// `work_of_adhesion`; [`Error::Invalid`] naming `table.*` for a table
+    /// that is not strictly increasing in interference or has NaNs.
+    pub fn new(
+        table: Arc<CurveTable>,
+        radius: f64,
+        contact_modulus: f64,
+        work: f64,
+    ) -> Result<Self> {
+        let scales = MaugisScales::new(radius, contact_modulus, work)?;
+        let detached = Interp::new(&table.detached, "detached")?;
+        let attached = Interp::new(&table.attached, "attached")?;
+        if !(table.far_field_scale > 0.0 && table.far_field_scale.is_finite()) {
+            return Err(Error::invalid(
+                "table.far_field_scale",
+                "must be finite and > 0",
+            ));
+        }
+        let first = table.detached.interference_bar[0];
+        if !(table.cutoff_bar() < first) {
+            return Err(Error::invalid(
+                "table.far_field_cutoff_gap",
+                "the cut-off must lie below the table's first interference",
+            ));
+        }
+        Ok(Tabulated {
+            table,
+            detached,
+            attached,
+            scales,
+        })
+    }
+
+    /// The dimensionless table.
+    pub fn table(&self) -> &CurveTable {
+        &self.table
+    }
+
+    /// `(Pbar, A)` on one branch at `Dbar`.
+    #[inline]
+    fn eval(&self, it: &Interp, d: f64) -> (f64, f64) {
+        let xs = it.load.x();
+        let (first, last) = (xs[0], xs[xs.len() - 1]);
+        if d < first {
+            if d < self.table.cutoff_bar() {
+                return (0.0, 0.0);
+            }
+            let s = self.table.far_field_scale;
+            let (h, h1) = (1.0 - s * d, 1.0 - s * first);
+            let p1 = it.load.y()[0];
+            if h1 > 1.0 {
+                return (p1 * bradley_shape(h) / bradley_shape(h1), 0.0);
+            }
+            return (p1, it.radius.y()[0]);
+        }
+        if d > last {
+            let (p1, a1) = (it.load.y()[xs.len() - 1], it.radius.y()[xs.len() - 1]);
+            let p = p1 + d.max(0.0).powf(1.5) - last.max(0.0).powf(1.5);
+            return (p, (a1 * a1 + d - last).sqrt());
+        }
+        (it.load.eval(d), it.radius.eval(d).max(0.0))
+    }
+}
+
+impl AsperityLaw for Tabulated {
+    fn name(&self) -> &'static str {
+        "tabulated"
+    }
+
+    fn state(&self, delta: f64, branch: Branch) -> ContactState {
+        let d = delta / self.scales.interference;
+        let on_attached = match branch {
+            Branch::Approach => self.table.attach_bar.is_none_or(|a| d >= a),
+            Branch::Retract => self.table.detach_bar.is_none_or(|a| d >= a),
+        };
+        let it = if on_attached {
+            &self.attached
+        } else {
+            &self.detached
+        };
+        let (p, a) = self.eval(it, d);
+        ContactState {
+            load: p * self.scales.load,
+            radius: a * self.scales.radius,
+        }
+    }
+
+    fn attach_interference(&self) -> f64 {
+        self.table
+            .attach_bar
+            .map_or(f64::NEG_INFINITY, |a| a * self.scales.interference)
+    }
+
+    fn detach_interference(&self) -> f64 {
+        self.table
+            .detach_bar
+            .map_or(f64::NEG_INFINITY, |a| a * self.scales.interference)
+    }
+
+    fn cutoff_interference(&self) -> f64 {
+        self.table.cutoff_bar() * self.scales.interference
+    }
+
+    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+        let b = match branch {
+            Branch::Approach => self.table.attach_bar,
+            Branch::Retract => self.table.detach_bar,
+        };
+        let mut v = vec![self.cutoff_interference()];
+        v.extend(b.map(|x| x * self.scales.interference));
+        v
+    }
+
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        let p = match control {
+            Control::Load => Some(self.table.pull_off),
+            Control::Displacement => self.table.jump_out,
+        }?;
+        Some(Instability {
+            load: p.load_bar * self.scales.load,
+            interference: p.interference_bar * self.scales.interference,
+            radius: p.radius_bar * self.scales.radius,
+        })
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        self.table
+            .zero_load_radius_bar
+            .map(|a| a * self.scales.radius)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn jkr_table() -> CurveTable {
+        // The JKR curve tabulated from its parametric form (attached branch)
+        // with an (artificial) detached branch of zero force.
+        let a: Vec<f64> = (0..200)
+            .map(|k| crate::law::jkr::JUMP_OUT_RADIUS + 0.02 * k as f64)
+            .collect();
+        let attached = BranchTable {
+            interference_bar: a
+                .iter()
+                .map(|&x| super::super::jkr::interference_bar(x))
+                .collect(),
+            load_bar: a.iter().map(|&x| super::super::jkr::load_bar(x)).collect(),
+            radius_bar: a,
+        };
+        let detached = BranchTable {
+            interference_bar: vec![-3.0, 0.0],
+            load_bar: vec![-1e-9, -1e-9],
+            radius_bar: vec![0.0, 0.0],
+        };
+        CurveTable {
+            source: "jkr test".into(),
+            detached,
+            attached,
+            attach_bar: Some(0.0),
+            detach_bar: Some(crate::law::jkr::JUMP_OUT_INTERFERENCE),
+            pull_off: TablePoint {
+                load_bar: -1.5,
+                interference_bar: -0.4,
+                radius_bar: 1.14,
+            },
+            jump_out: None,
+            zero_load_radius_bar: Some(crate::law::jkr::ZERO_LOAD_RADIUS),
+            far_field_scale: 1.77,
+            far_field_cutoff_gap: 100.0,
+        }
+    }
+
+    /// A table of the JKR curve reproduces the JKR law between its nodes
+    /// (PCHIP error O(h^3) on the smooth part; steep near the fold).
+    #[test]
+    fn tabulated_jkr_matches_jkr() {
+        let (r, e, w) = (1e-6, 5e10, 0.5);
+        let tab = Tabulated::new(Arc::new(jkr_table()), r, e, w).unwrap();
+        let jkr = crate::law::Jkr::new(r, e, w).unwrap();
+        let s = jkr.scales();
+        for d in [-0.5, 0.0, 0.3, 1.0, 3.0, 8.0] {
+            let delta = d * s.interference;
+            let a = tab.state(delta, Branch::Retract);
+            let b = jkr.state(delta, Branch::Retract);
+            assert!((a.load - b.load).abs() < 1e-4 * s.load, "{d}: {a:?} {b:?}");
+            assert!((a.radius - b.radius).abs() < 1e-4 * s.radius);
+        }
+        // approach below attach: detached branch
+        let st = tab.state(-0.5 * s.interference, Branch::Approach);
+        assert_eq!(st.radius, 0.0);
+        assert!(st.load.abs() < 1e-8 * s.load);
+        assert_eq!(tab.detach_interference(), jkr.detach_interference());
+        assert!(
+            (tab.zero_load_radius().unwrap() / jkr.zero_load_radius().unwrap() - 1.0).abs() < 1e-15
+        );
+        assert!(tab.pull_off(Control::Displacement).is_none());
+        // beyond the table: continuous
+        let last = *jkr_table().attached.interference_bar.last().unwrap();
+        let below = tab
+            .state(last * s.interference * (1.0 - 1e-12), Branch::Retract)
+            .load;
+        let above = tab
+            .state(last * s.interference * (1.0 + 1e-12), Branch::Retract)
+            .load;
+        assert!((below - above).abs() < 1e-6 * below.abs());
+    }
+
+    #[test]
+    fn bad_tables_and_inputs_are_rejected() {
+        let mut t = jkr_table();
+        t.attached.interference_bar[3] = t.attached.interference_bar[2];
+        let e = Tabulated::new(Arc::new(t), 1e-6, 5e10, 0.5).unwrap_err();
+        assert_eq!(e.field(), Some("table.attached"));
+        let mut t = jkr_table();
+        t.detached.load_bar[0] = f64::NAN;
+        let e = Tabulated::new(Arc::new(t), 1e-6, 5e10, 0.5).unwrap_err();
+        assert_eq!(e.field(), Some("table.detached"));
+        let e = Tabulated::new(Arc::new(jkr_table()), -1.0, 5e10, 0.5).unwrap_err();
+        assert_eq!(e.field(), Some("radius"));
+        let mut t = jkr_table();
+        t.far_field_cutoff_gap = 2.0;
+        let e = Tabulated::new(Arc::new(t), 1e-6, 5e10, 0.5).unwrap_err();
+        assert_eq!(e.field(), Some("table.far_field_cutoff_gap"));
+        let e = Tabulated::new(Arc::new(jkr_table()), 1e-6, 5e10, f64::NAN).unwrap_err();
+        assert_eq!(e.field(), Some("work_of_adhesion"));
+    }
+}

@@ -1,0 +1,134 @@
+use super::*;
+use crate::law::{AsperityLaw, Branch, Control};
+
+fn problem() -> SphereProblem {
+    SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::coarse()).unwrap()
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("asperity-cal-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+#[test]
+fn cache_round_trip_and_no_recompute() {
+    let dir = temp_dir("rt");
+    let cache = CalibrationCache::new(&dir);
+    let p = problem();
+    assert!(cache.load(&p).is_none());
+    let c = cache.get_or_compute(&p).unwrap();
+    let path = cache.path_for(&p);
+    assert!(path.exists());
+    assert_eq!(cache.load(&p).unwrap(), c);
+    // A tampered file is returned as is: proof that nothing is recomputed.
+    let mut t = c.clone();
+    t.lambda_equivalent = 42.0;
+    cache.store(&p, &t).unwrap();
+    assert_eq!(cache.get_or_compute(&p).unwrap().lambda_equivalent, 42.0);
+    // Other parameters, other files.
+    let q = SphereProblem::new(1.0, Shape::Sphere { rho: 100.0 }, SolverOptions::coarse()).unwrap();
+    assert_ne!(cache.path_for(&q), path);
+    let r = SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::default()).unwrap();
+    assert_ne!(cache.path_for(&r), path);
+    // A corrupt file is ignored (and would be recomputed).
+    std::fs::write(&path, "{not json").unwrap();
+    assert!(cache.load(&p).is_none());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn unwritable_cache_still_computes() {
+    let dir = temp_dir("ro");
+    std::fs::write(&dir, "a file, not a directory").unwrap();
+    let cache = CalibrationCache::new(dir.join("sub"));
+    let p = problem();
+    assert!(cache.store(&p, &Calibration::compute(&p).unwrap()).is_err());
+    assert!(cache.get_or_compute(&p).is_ok());
+    std::fs::remove_file(&dir).unwrap();
+}
+
+/// The calibrated law reproduces the solver's critical points and has the
+/// hysteresis of the S-curve: attached on retraction down to the jump-out,
+/// detached on approach up to the jump-in.
+#[test]
+fn law_reproduces_the_solver_curve() {
+    let c = Calibration::compute(&problem()).unwrap();
+    assert!((c.lambda_equivalent - 1.157_011_634_850_799_3).abs() < 1e-15);
+    let (r, e, w) = (2e-6, 3e10, 0.4);
+    let law = c.law(r, e, w).unwrap();
+    let s = crate::material::MaugisScales::new(r, e, w).unwrap();
+    let pull = law.pull_off(Control::Load).unwrap();
+    assert!((pull.load / s.load - c.facts.pull_off.load_bar).abs() < 1e-15);
+    // the table's minimum on the attached branch is the refined pull-off
+    let at = law.state(pull.interference, Branch::Retract);
+    assert!(
+        (at.load - pull.load).abs() < 2e-3 * pull.load.abs(),
+        "{at:?} {pull:?}"
+    );
+    let (att, det) = (law.attach_interference(), law.detach_interference());
+    assert!(det < att);
+    let mid = 0.5 * (att + det);
+    let on = law.state(mid, Branch::Retract);
+    let off = law.state(mid, Branch::Approach);
+    assert!(on.radius > 0.0 && on.load < off.load, "{on:?} {off:?}");
+    // every branch monotone in load where it should be: far field attractive
+    let far = law.state(-20.0 * s.interference, Branch::Approach);
+    assert!(far.load < 0.0 && far.load > -0.1 * s.load, "{far:?}");
+    let deep = law.state(5.0 * s.interference, Branch::Approach);
+    assert!(deep.load > 0.0 && deep.radius > 0.0);
+    assert_eq!(law.name(), "tabulated");
+    // zero below the far-field cut-off (rigid gap 100 z0), tiny just above
+    let cut = law.cutoff_interference();
+    assert_eq!(law.state(cut * 1.001, Branch::Approach).load, 0.0);
+    let just = law.state(cut * 0.999, Branch::Approach).load;
+    assert!(just < 0.0 && just > -3e-4 * s.load, "{just}");
+}
+
+#[test]
+fn small_mu_has_one_branch() {
+    let p = SphereProblem::new(0.1, Shape::Paraboloid, SolverOptions::coarse()).unwrap();
+    let c = Calibration::compute(&p).unwrap();
+    assert!(c.table.attach_bar.is_none() && c.table.detach_bar.is_none());
+    let law = c.law(1e-6, 5e10, 0.5).unwrap();
+    assert_eq!(law.attach_interference(), f64::NEG_INFINITY);
+    for d in [-3e-9, -1e-10, 0.0, 1e-9] {
+        assert_eq!(
+            law.state(d, Branch::Approach),
+            law.state(d, Branch::Retract)
+        );
+    }
+}
+
+/// One table serves every R, E*, w: the law in Maugis units is the same.
+#[test]
+fn one_table_serves_every_contact() {
+    let c = Calibration::compute(&problem()).unwrap();
+    let contacts = [(1e-6, 5e10, 0.5), (3e-5, 1e9, 0.05), (2e-8, 2e11, 1.5)];
+    let laws: Vec<_> = contacts
+        .iter()
+        .map(|&(r, e, w)| {
+            (
+                c.law(r, e, w).unwrap(),
+                crate::material::MaugisScales::new(r, e, w).unwrap(),
+            )
+        })
+        .collect();
+    for d in [-5.0, -0.95, -0.5, 0.0, 1.0, 3.0] {
+        for branch in [Branch::Approach, Branch::Retract] {
+            let v: Vec<(f64, f64)> = laws
+                .iter()
+                .map(|(l, s)| {
+                    let st = l.state(d * s.interference, branch);
+                    (st.load / s.load, st.radius / s.radius)
+                })
+                .collect();
+            for x in &v[1..] {
+                assert!(
+                    (x.0 - v[0].0).abs() < 1e-12 && (x.1 - v[0].1).abs() < 1e-12,
+                    "{d} {v:?}"
+                );
+            }
+        }
+    }
+}
