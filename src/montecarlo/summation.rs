@@ -1,0 +1,364 @@
+//! Exact sums of a law over a population, with their standard errors.
+//!
+//! At separation `d` summit `i` (height `z_i`, radius `R_i`) has
+//! interference `delta_i = z_i - d`; its state follows the loading history
+//! exactly: on approach `state(delta_i, Approach)`; on retraction after the
+//! flat came to `d_min`, `state_after(delta_i, z_i - d_min)`. The totals
+//! `P = sum P_i`, `A = sum pi a_i^2`, `n = #{a_i > 0}` are exact for the
+//! drawn population; as estimates of the Greenwood–Williamson expectation
+//! (`N E[x]`) each carries the standard error `sqrt(N s^2)`, `s^2` the
+//! sample variance of the per-summit values (zeros included).
+//!
+//! **Skipping.** Heights are sorted, so the summits that can contribute
+//! (`delta_i >= cutoff_interference`, rescaled per radius) are a suffix
+//! found by binary search; the rest are never touched.
+//!
+//! **Determinism.** The suffix is cut at fixed multiples of [`SUM_BLOCK`];
+//! blocks of every step are summed in parallel, each sequentially, and the
+//! block partials of a step are added in block order. Results are
+//! bit-identical for any number of threads.
+
+use super::population::Population;
+use super::scaling::SummitLaw;
+use crate::error::{finite, Allowed, Error, Result};
+use crate::gw::{History, LoadingProgram, Outputs, PullOff};
+use crate::law::{Branch, ContactState};
+use rayon::prelude::*;
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+/// Summits per summation block (fixed: part of the reduction order).
+pub const SUM_BLOCK: usize = 8192;
+
+/// Totals of a population at one separation. Outputs not asked for are `None`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct McState {
+    /// Separation `d` of the flat from the height origin (m).
+    pub separation: f64,
+    /// Total load (N), > 0 compressive.
+    pub load: Option<f64>,
+    /// Real contact area `sum pi a_i^2` (m^2).
+    pub area: Option<f64>,
+    /// Number of summits in contact (`a_i > 0`), as a float.
+    pub count: Option<f64>,
+    /// Standard errors of (load, area, count) as estimates of the
+    /// population expectation, `sqrt(N s^2)` (same units); NaN for a
+    /// single summit.
+    pub standard_error: [f64; 3],
+    /// Summits evaluated (those within the law's range).
+    pub evaluations: usize,
+}
+
+/// A Monte Carlo load–separation curve on approach and retraction.
+#[derive(Debug, Clone, PartialEq)]
+pub struct McCurve {
+    /// The program that made it.
+    pub program: LoadingProgram,
+    /// Approach states, ascending in separation (index 0 = closest).
+    pub approach: Vec<McState>,
+    /// Retraction states at the same separations.
+    pub retract: Vec<McState>,
+}
+
+impl McCurve {
+    /// Energy lost per cycle (J), trapezoidal over the program's separations
+    /// (error `O(step^2)`); `None` if loads were not computed.
+    pub fn hysteresis_energy(&self) -> Option<f64> {
+        let mut w = 0.0;
+        for i in 1..self.approach.len() {
+            let dd = self.approach[i].separation - self.approach[i - 1].separation;
+            let g0 = self.approach[i - 1].load? - self.retract[i - 1].load?;
+            let g1 = self.approach[i].load? - self.retract[i].load?;
+            w += 0.5 * (g0 + g1) * dd;
+        }
+        Some(w)
+    }
+
+    /// The most tensile sampled retraction load, if any is tensile.
+    pub fn sampled_pull_off(&self) -> Option<PullOff> {
+        self.retract
+            .iter()
+            .filter_map(|s| s.load.map(|p| (p, s.separation)))
+            .filter(|&(p, _)| p < 0.0)
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|(load, separation)| PullOff { load, separation })
+    }
+
+    /// Total law evaluations spent on the curve.
+    pub fn evaluations(&self) -> usize {
+        self.approach
+            .iter()
+            .chain(&self.retract)
+            .map(|s| s.evaluations)
+            .sum()
+    }
+}
+
+/// Per-summit rescaling factors `[rho^-alpha, rho^beta, rho^gamma]`.
+#[derive(Debug, Clone)]
+enum Factors {
+    Uniform([f64; 3]),
+    PerSummit(Vec<[f64; 3]>),
+}
+
+/// A population bound to a law: sums over the summits.
+#[derive(Debug, Clone)]
+pub struct MonteCarlo {
+    population: Arc<Population>,
+    law: SummitLaw,
+    factors: Factors,
+    /// Smallest and largest `rho^-alpha` (for the range search).
+    inv_len: (f64, f64),
+}
+
+/// Which state rule a step uses.
+#[derive(Debug, Clone, Copy)]
+enum Rule {
+    Approach,
+    After { closest: f64 },
+}
+
+/// Partial sums of one block: values and squares of (load, area, count).
+#[derive(Debug, Clone, Copy, Default)]
+struct Partial {
+    sum: [f64; 3],
+    sq: [f64; 3],
+}
+
+impl MonteCarlo {
+    /// Binds `law` to `population`, precomputing each summit's radius
+    /// factors.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `radius` when summit radii differ from the
+    /// law's reference radius and the law has no radius scaling.
+    pub fn new(population: Arc<Population>, law: SummitLaw) -> Result<Self> {
+        let factors = match population.radii() {
+            None => Factors::Uniform(law.factors_for(population.reference_radius())?),
+            Some(r) => Factors::PerSummit(
+                r.par_iter()
+                    .map(|&x| law.factors_for(x))
+                    .collect::<Result<Vec<_>>>()?,
+            ),
+        };
+        let inv_len = match &factors {
+            Factors::Uniform(f) => (f[0], f[0]),
+            Factors::PerSummit(v) => v.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), f| {
+                (lo.min(f[0]), hi.max(f[0]))
+            }),
+        };
+        Ok(MonteCarlo {
+            population,
+            law,
+            factors,
+            inv_len,
+        })
+    }
+
+    /// The population.
+    pub fn population(&self) -> &Population {
+        &self.population
+    }
+
+    /// The law.
+    pub fn law(&self) -> &SummitLaw {
+        &self.law
+    }
+
+    /// Totals at separation `d` (m) after `history`.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] for a non-finite separation, or a retraction
+    /// from a `closest` separation above `d`; [`Error::Invalid`] naming
+    /// `separation` when a summit passes the law's maximum interference
+    /// (rigid Bradley: infinite load).
+    pub fn state(&self, separation: f64, history: History, outputs: Outputs) -> Result<McState> {
+        finite("separation", separation)?;
+        let rule = match history {
+            History::Approach => Rule::Approach,
+            History::Retract { closest } => {
+                finite("closest_separation", closest)?;
+                if closest > separation {
+                    return Err(Error::OutOfRange {
+                        name: "separation".into(),
+                        value: separation,
+                        allowed: Allowed::closed(closest, f64::INFINITY),
+                    });
+                }
+                Rule::After { closest }
+            }
+        };
+        Ok(self.run(&[(separation, rule)], outputs)?.remove(0))
+    }
+
+    /// Runs `program`: approach states, then retraction states after the
+    /// closest separation; all steps in one parallel pass.
+    ///
+    /// # Errors
+    /// As [`MonteCarlo::state`].
+    pub fn curve(&self, program: &LoadingProgram, outputs: Outputs) -> Result<McCurve> {
+        let seps = program.separations();
+        let steps: Vec<(f64, Rule)> = seps
+            .iter()
+            .map(|&d| (d, Rule::Approach))
+            .chain(seps.iter().map(|&d| {
+                (
+                    d,
+                    Rule::After {
+                        closest: program.closest,
+                    },
+                )
+            }))
+            .collect();
+        let mut states = self.run(&steps, outputs)?;
+        let retract = states.split_off(seps.len());
+        Ok(McCurve {
+            program: *program,
+            approach: states,
+            retract,
+        })
+    }
+
+    /// Index of the first summit that can contribute at separation `d`.
+    fn first_in_range(&self, d: f64) -> usize {
+        let cut = self.law.law().cutoff_interference();
+        if cut == f64::NEG_INFINITY {
+            return 0;
+        }
+        // delta rho^-alpha >= cut for some summit: the loosest factor.
+        let inv = if cut < 0.0 {
+            self.inv_len.0
+        } else {
+            self.inv_len.1
+        };
+        self.population
+            .heights()
+            .partition_point(|&z| (z - d) * inv < cut)
+    }
+
+    fn run(&self, steps: &[(f64, Rule)], outputs: Outputs) -> Result<Vec<McState>> {
+        let n = self.population.len();
+        // Tasks (step, block start, block end) at fixed block boundaries.
+        let mut tasks = Vec::new();
+        let mut firsts = Vec::with_capacity(steps.len());
+        for (k, &(d, _)) in steps.iter().enumerate() {
+            let lo = self.first_in_range(d);
+            firsts.push(lo);
+            let mut start = lo;
+            while start < n {
+                let end = ((start / SUM_BLOCK) + 1) * SUM_BLOCK;
+                let end = end.min(n);
+                tasks.push((k, start, end));
+                start = end;
+            }
+        }
+        let partials: Vec<Partial> = tasks
+            .par_iter()
+            .map(|&(k, a, b)| {
+                let (d, rule) = steps[k];
+                self.block(a, b, d, rule)
+            })
+            .collect();
+        // Reduce each step's blocks in block order.
+        let mut totals = vec![Partial::default(); steps.len()];
+        for (&(k, _, _), p) in tasks.iter().zip(&partials) {
+            for i in 0..3 {
+                totals[k].sum[i] += p.sum[i];
+                totals[k].sq[i] += p.sq[i];
+            }
+        }
+        let nf = n as f64;
+        let mut out = Vec::with_capacity(steps.len());
+        for (k, t) in totals.iter().enumerate() {
+            let d = steps[k].0;
+            if !t.sum[0].is_finite() || !t.sum[1].is_finite() {
+                return Err(Error::invalid(
+                    "separation",
+                    format!(
+                        "at {d:e} m a summit passes the maximum interference of law {} \
+                         ({:e} m): the load is infinite",
+                        self.law.law().name(),
+                        self.law.law().max_interference()
+                    ),
+                ));
+            }
+            let se = std::array::from_fn(|i| {
+                if n < 2 {
+                    return f64::NAN;
+                }
+                let var = (t.sq[i] - t.sum[i] * t.sum[i] / nf).max(0.0) / (nf - 1.0);
+                (nf * var).sqrt()
+            });
+            out.push(McState {
+                separation: d,
+                load: outputs.load.then_some(t.sum[0]),
+                area: outputs.area.then_some(t.sum[1]),
+                count: outputs.count.then_some(t.sum[2]),
+                standard_error: se,
+                evaluations: n - firsts[k],
+            });
+        }
+        Ok(out)
+    }
+
+    /// Sums over summits `a..b` at separation `d`.
+    fn block(&self, a: usize, b: usize, d: f64, rule: Rule) -> Partial {
+        let z = &self.population.heights()[a..b];
+        let law = self.law.law();
+        match (&self.factors, rule) {
+            (Factors::Uniform(f), Rule::Approach) => {
+                sum_uniform(z, *f, |x, _| law.state(x, Branch::Approach), d, 0.0)
+            }
+            (Factors::Uniform(f), Rule::After { closest }) => {
+                sum_uniform(z, *f, |x, m| law.state_after(x, m), d, closest)
+            }
+            (Factors::PerSummit(v), Rule::Approach) => {
+                sum_per_summit(z, &v[a..b], |x, _| law.state(x, Branch::Approach), d, 0.0)
+            }
+            (Factors::PerSummit(v), Rule::After { closest }) => {
+                sum_per_summit(z, &v[a..b], |x, m| law.state_after(x, m), d, closest)
+            }
+        }
+    }
+}
+
+/// Adds one summit's (load, area, count) to a partial.
+#[inline(always)]
+fn add(p: &mut Partial, load: f64, radius: f64) {
+    let area = PI * radius * radius;
+    let c = if radius > 0.0 { 1.0 } else { 0.0 };
+    p.sum[0] += load;
+    p.sum[1] += area;
+    p.sum[2] += c;
+    p.sq[0] += load * load;
+    p.sq[1] += area * area;
+    p.sq[2] += c;
+}
+
+/// One radius for all summits: the factors are constants.
+#[inline(always)]
+fn sum_uniform<S>(z: &[f64], f: [f64; 3], state: S, d: f64, closest: f64) -> Partial
+where
+    S: Fn(f64, f64) -> ContactState,
+{
+    let mut p = Partial::default();
+    for &zi in z {
+        let st = state((zi - d) * f[0], (zi - closest) * f[0]);
+        add(&mut p, st.load * f[1], st.radius * f[2]);
+    }
+    p
+}
+
+/// Per-summit radii: factors read alongside the heights.
+#[inline(always)]
+fn sum_per_summit<S>(z: &[f64], f: &[[f64; 3]], state: S, d: f64, closest: f64) -> Partial
+where
+    S: Fn(f64, f64) -> ContactState,
+{
+    let mut p = Partial::default();
+    for (&zi, fi) in z.iter().zip(f) {
+        let st = state((zi - d) * fi[0], (zi - closest) * fi[0]);
+        add(&mut p, st.load * fi[1], st.radius * fi[2]);
+    }
+    p
+}

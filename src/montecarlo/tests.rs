@@ -1,0 +1,593 @@
+//! Monte Carlo checks against exact expectations and the GW integral, with
+//! a small exact exponential distribution (`phi(s) = e^-s`, `s >= 0`; the
+//! full distributions are tested in `tests/`).
+//!
+//! Statistical bounds: a total is accepted within 5 standard errors of its
+//! expectation. For a normal estimator a false failure has probability
+//! 5.7e-7 per comparison, so the few hundred comparisons here fail by
+//! accident with probability < 1e-4 (and the seeds are fixed, so a pass is
+//! reproducible); the "wrong integral" tests show the bound has power.
+
+use super::*;
+use crate::error::Error;
+use crate::gw::{Accuracy, GwModel, History, LoadingProgram, Method, Outputs, RoughSurface};
+use crate::heights::HeightDistribution;
+use crate::law::{AsperityLaw, Bradley, Branch, Hertz, Jkr, LawKind};
+use crate::material::{Adhesion, AsperityContact};
+use std::sync::Arc;
+
+#[derive(Debug)]
+pub(crate) struct Exp;
+
+impl HeightDistribution for Exp {
+    fn name(&self) -> &'static str {
+        "test-exponential"
+    }
+    fn pdf(&self, s: f64) -> f64 {
+        if s >= 0.0 {
+            (-s).exp()
+        } else {
+            0.0
+        }
+    }
+    fn tail(&self, s: f64) -> f64 {
+        (-s.max(0.0)).exp()
+    }
+    fn support(&self) -> (f64, f64) {
+        (0.0, f64::INFINITY)
+    }
+    /// Only used through quadrature here (`closed_form_moment` is false).
+    fn moment_above(&self, _n: f64, _h: f64) -> f64 {
+        f64::NAN
+    }
+    fn quantile(&self, p: f64) -> f64 {
+        -(-p).ln_1p()
+    }
+    fn numerical_support(&self, eps: f64) -> (f64, f64) {
+        (0.0, -eps.ln())
+    }
+}
+
+const R: f64 = 1e-6;
+const SIGMA: f64 = 5e-9;
+const E_STAR: f64 = 4.8e10;
+
+fn population(n: usize, seed: u64) -> Arc<Population> {
+    let spec = PopulationSpec::new(n, SIGMA, RadiusSpec::Fixed(R), seed).unwrap();
+    Arc::new(Population::sample(&spec, &Exp).unwrap())
+}
+
+fn hertz() -> SummitLaw {
+    SummitLaw::scaled(
+        Arc::new(Hertz::new(R, E_STAR).unwrap()),
+        R,
+        RadiusScaling::MAUGIS,
+    )
+    .unwrap()
+}
+
+/// Soft and sticky: strong hysteresis (as in the GW tests).
+fn jkr() -> SummitLaw {
+    SummitLaw::scaled(
+        Arc::new(Jkr::new(R, 1e9, 0.5).unwrap()),
+        R,
+        RadiusScaling::MAUGIS,
+    )
+    .unwrap()
+}
+
+/// The GW model of `n` summits of the same surface (quadrature: the test
+/// exponential has no closed forms for `h < 0`).
+fn gw(n: usize, law: &SummitLaw) -> GwModel {
+    let surface = RoughSurface::new(n as f64, R, SIGMA, 1.0).unwrap();
+    GwModel::new(surface, Arc::new(Exp), Arc::from(law_arc(law))).unwrap()
+}
+
+fn law_arc(law: &SummitLaw) -> Box<dyn AsperityLaw> {
+    // Rebuild by name: the tests only use Hertz and JKR at R.
+    match law.law().name() {
+        "hertz" => Box::new(Hertz::new(R, E_STAR).unwrap()),
+        "jkr" => Box::new(Jkr::new(R, 1e9, 0.5).unwrap()),
+        other => panic!("{other}"),
+    }
+}
+
+fn acc() -> Accuracy {
+    Accuracy::new(1e-10)
+        .unwrap()
+        .with_method(Method::Quadrature)
+}
+
+fn values(s: &McState) -> [f64; 3] {
+    [s.load.unwrap(), s.area.unwrap(), s.count.unwrap()]
+}
+
+fn gw_values(s: &crate::gw::GwState) -> [f64; 3] {
+    [s.load.unwrap(), s.area.unwrap(), s.count.unwrap()]
+}
+
+// ---------------------------------------------------------------- sampling
+
+#[test]
+fn sample_is_sorted_reproducible_and_seed_dependent() {
+    let a = population(10_000, 7);
+    let b = population(10_000, 7);
+    let c = population(10_000, 8);
+    assert_eq!(a, b);
+    assert_ne!(a.heights(), c.heights());
+    assert!(a.heights().is_sorted());
+    assert!(a.heights()[0] > 0.0);
+    assert!(a.radii().is_none());
+    assert_eq!(a.radius(17), R);
+}
+
+#[test]
+fn sampled_heights_have_the_distribution() {
+    // Exponential: mean 1, variance 1 (standardised). Kolmogorov–Smirnov
+    // distance below 1.95/sqrt(N) (the 0.1% critical value).
+    let n = 100_000;
+    let p = population(n, 3);
+    let s: Vec<f64> = p.heights().iter().map(|z| z / SIGMA).collect();
+    let mean = s.iter().sum::<f64>() / n as f64;
+    assert!((mean - 1.0).abs() < 5.0 / (n as f64).sqrt(), "{mean}");
+    let mut ks: f64 = 0.0;
+    for (i, &x) in s.iter().enumerate() {
+        let f = 1.0 - (-x).exp();
+        ks = ks
+            .max((f - i as f64 / n as f64).abs())
+            .max((f - (i + 1) as f64 / n as f64).abs());
+    }
+    assert!(ks < 1.95 / (n as f64).sqrt(), "KS {ks}");
+    // The sample maximum of N exponentials is ln N + Gumbel: within
+    // [ln N - 3, ln N + 10] with probability > 1 - 1e-4.
+    let top = *s.last().unwrap();
+    let ln_n = (n as f64).ln();
+    assert!(top > ln_n - 3.0 && top < ln_n + 10.0, "{top}");
+}
+
+#[test]
+fn lognormal_radii_have_their_moments() {
+    let n = 100_000;
+    let (median, log_std) = (2e-6, 0.4);
+    let spec = PopulationSpec::new(n, SIGMA, RadiusSpec::LogNormal { median, log_std }, 1).unwrap();
+    let p = Population::sample(&spec, &Exp).unwrap();
+    let r = p.radii().unwrap();
+    let logs: Vec<f64> = r.iter().map(|x| (x / median).ln()).collect();
+    let m = logs.iter().sum::<f64>() / n as f64;
+    let v = logs.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1) as f64;
+    assert!(m.abs() < 5.0 * log_std / (n as f64).sqrt(), "{m}");
+    // var of the sample variance of a normal: 2 s^4 / (N - 1).
+    let sd_v = (2.0 / (n - 1) as f64).sqrt() * log_std * log_std;
+    assert!((v - log_std * log_std).abs() < 5.0 * sd_v, "{v}");
+    assert_eq!(p.reference_radius(), median);
+    // log_std = 0 is the fixed radius.
+    let spec0 = PopulationSpec::new(
+        100,
+        SIGMA,
+        RadiusSpec::LogNormal {
+            median,
+            log_std: 0.0,
+        },
+        1,
+    )
+    .unwrap();
+    assert!(Population::sample(&spec0, &Exp).unwrap().radii().is_none());
+}
+
+#[test]
+fn populations_are_identical_for_one_and_two_threads() {
+    let run = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| {
+                let spec = PopulationSpec::new(
+                    50_000,
+                    SIGMA,
+                    RadiusSpec::LogNormal {
+                        median: R,
+                        log_std: 0.3,
+                    },
+                    11,
+                )
+                .unwrap();
+                let pop = Arc::new(Population::sample(&spec, &Exp).unwrap());
+                let mc = MonteCarlo::new(pop.clone(), jkr()).unwrap();
+                let prog = LoadingProgram::new(8.0 * SIGMA, -SIGMA, 30).unwrap();
+                (pop, mc.curve(&prog, Outputs::ALL).unwrap())
+            })
+    };
+    let (p1, c1) = run(1);
+    let (p2, c2) = run(2);
+    assert_eq!(p1, p2);
+    // Bitwise: compare the bit patterns, not just values.
+    let bits = |c: &McCurve| -> Vec<u64> {
+        c.approach
+            .iter()
+            .chain(&c.retract)
+            .flat_map(|s| {
+                values(s)
+                    .into_iter()
+                    .chain(s.standard_error)
+                    .map(f64::to_bits)
+            })
+            .collect()
+    };
+    assert_eq!(bits(&c1), bits(&c2));
+}
+
+// ---------------------------------------------------------------- summation
+
+#[test]
+fn sum_equals_brute_force_and_skips_out_of_range_summits() {
+    let pop = population(30_000, 5);
+    let mc = MonteCarlo::new(pop.clone(), jkr()).unwrap();
+    let law = Jkr::new(R, 1e9, 0.5).unwrap();
+    let closest = -0.5 * SIGMA;
+    for d in [-0.5 * SIGMA, 0.3 * SIGMA, 2.0 * SIGMA, 6.0 * SIGMA] {
+        for (history, brute) in [
+            (
+                History::Approach,
+                Box::new(|z: f64| law.state(z - d, Branch::Approach)) as Box<dyn Fn(f64) -> _>,
+            ),
+            (
+                History::Retract { closest },
+                Box::new(|z: f64| law.state_after(z - d, z - closest)),
+            ),
+        ] {
+            let s = mc.state(d, history, Outputs::ALL).unwrap();
+            let (mut p, mut a, mut c, mut touched) = (0.0, 0.0, 0.0, 0usize);
+            for &z in pop.heights() {
+                let st = brute(z);
+                p += st.load;
+                a += st.area();
+                c += f64::from(u8::from(st.in_contact()));
+                if z - d >= law.cutoff_interference() {
+                    touched += 1;
+                }
+            }
+            let v = values(&s);
+            assert!(
+                (v[0] - p).abs() <= 1e-12 * p.abs().max(1e-30),
+                "{d} {v:?} {p}"
+            );
+            assert!((v[1] - a).abs() <= 1e-12 * a.max(1e-30));
+            assert_eq!(v[2], c);
+            assert_eq!(s.evaluations, touched);
+            if d > 3.0 * SIGMA {
+                // JKR reaches 2 sigma below contact; the rest is skipped.
+                assert!(touched < pop.len() / 10, "{touched}");
+            }
+        }
+    }
+}
+
+#[test]
+fn lognormal_radii_use_the_law_of_each_radius() {
+    // The scaled reference law against a law built for every summit.
+    let spec = PopulationSpec::new(
+        3000,
+        SIGMA,
+        RadiusSpec::LogNormal {
+            median: R,
+            log_std: 0.5,
+        },
+        9,
+    )
+    .unwrap();
+    let pop = Arc::new(Population::sample(&spec, &Exp).unwrap());
+    let contact = AsperityContact::new(R, 1e9, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
+    for kind in [LawKind::Hertz, LawKind::Dmt, LawKind::Jkr] {
+        let mc =
+            MonteCarlo::new(pop.clone(), SummitLaw::from_kind(kind, &contact).unwrap()).unwrap();
+        let (d, closest) = (0.5 * SIGMA, -0.2 * SIGMA);
+        let s = mc
+            .state(d, History::Retract { closest }, Outputs::ALL)
+            .unwrap();
+        let (mut p, mut a) = (0.0, 0.0);
+        for (i, &z) in pop.heights().iter().enumerate() {
+            let c = AsperityContact::new(pop.radius(i), 1e9, contact.adhesion).unwrap();
+            let law = kind.build(&c).unwrap();
+            let st = law.state_after(z - d, z - closest);
+            p += st.load;
+            a += st.area();
+        }
+        let v = values(&s);
+        // powf and cbrt round differently from the direct build: ~1e-13.
+        assert!((v[0] - p).abs() <= 1e-11 * p.abs(), "{kind:?} {} {p}", v[0]);
+        assert!((v[1] - a).abs() <= 1e-11 * a, "{kind:?} {} {a}", v[1]);
+    }
+}
+
+#[test]
+fn hertz_population_converges_to_gw_and_a_wrong_integral_is_detected() {
+    // Several seeds at N = 1e5; separations from deep (every summit in
+    // contact) to the tail. Each total within 5 SE of GW (quadrature to
+    // 1e-10, negligible); a GW value 1% off is rejected in deep contact,
+    // where the relative SE of the load is 0.12% (a 1% error is ~8 SE).
+    let n = 100_000;
+    let law = hertz();
+    let model = gw(n, &law);
+    for seed in 1..=4 {
+        let mc = MonteCarlo::new(population(n, seed), law.clone()).unwrap();
+        for h in [-3.0, 0.0, 1.0, 3.0] {
+            let d = h * SIGMA;
+            let s = mc.state(d, History::Approach, Outputs::ALL).unwrap();
+            let g = model
+                .state(d, History::Approach, Outputs::ALL, &acc())
+                .unwrap();
+            let (v, e) = (values(&s), gw_values(&g));
+            for k in 0..3 {
+                // Every summit in contact: the count is exact (SE 0).
+                let bound = 5.0 * s.standard_error[k] + 1e-9 * e[k];
+                assert!(
+                    (v[k] - e[k]).abs() < bound,
+                    "seed {seed} h {h} output {k}: {} vs {}, SE {}",
+                    v[k],
+                    e[k],
+                    s.standard_error[k]
+                );
+            }
+            if h == -3.0 {
+                let wrong = (v[0] - 1.01 * e[0]) / s.standard_error[0];
+                assert!(
+                    wrong.abs() > 5.0,
+                    "seed {seed}: 1% error not seen, z = {wrong}"
+                );
+                assert!(s.standard_error[0] / v[0] < 2e-3);
+            }
+        }
+    }
+}
+
+#[test]
+fn jkr_population_hysteresis_matches_gw_retraction() {
+    let n = 100_000;
+    let law = jkr();
+    let model = gw(n, &law);
+    let program = LoadingProgram::new(6.0 * SIGMA, -0.5 * SIGMA, 14).unwrap();
+    let acc = Accuracy::new(1e-9).unwrap();
+    for seed in [21, 22] {
+        let mc = MonteCarlo::new(population(n, seed), law.clone()).unwrap();
+        let c = mc.curve(&program, Outputs::ALL).unwrap();
+        let g = model.curve(&program, Outputs::ALL, &acc).unwrap();
+        let mut compared = 0;
+        for (m, e) in c
+            .approach
+            .iter()
+            .zip(&g.approach)
+            .chain(c.retract.iter().zip(&g.retract))
+        {
+            // Only where the CLT applies: expected contacts >= 20.
+            if e.count.unwrap() < 20.0 {
+                continue;
+            }
+            let (v, w) = (values(m), gw_values(e));
+            for k in 0..3 {
+                let z = (v[k] - w[k]) / (m.standard_error[k] + e.error[k]);
+                assert!(
+                    z.abs() < 5.0,
+                    "seed {seed} d {} output {k}: z = {z}",
+                    m.separation
+                );
+            }
+            compared += 1;
+        }
+        assert!(compared >= 16, "{compared}");
+        // Hysteresis is real: retraction more tensile, energy lost > 0.
+        let w_mc = c.hysteresis_energy().unwrap();
+        let w_gw = g.hysteresis_energy().unwrap();
+        assert!(w_mc > 0.0);
+        assert!((w_mc / w_gw - 1.0).abs() < 0.05, "{w_mc} {w_gw}");
+        assert!(c.sampled_pull_off().unwrap().load < 0.0);
+    }
+}
+
+#[test]
+fn lognormal_hertz_matches_the_radius_averaged_integral() {
+    // Radii independent of heights: E[P] = E[(R/R0)^(1/2)] P_GW(R0),
+    // E[A] = E[R/R0] A_GW(R0), with E[rho^q] = exp(q^2 s^2 / 2).
+    let n = 100_000;
+    let s = 0.5;
+    let spec = PopulationSpec::new(
+        n,
+        SIGMA,
+        RadiusSpec::LogNormal {
+            median: R,
+            log_std: s,
+        },
+        4,
+    )
+    .unwrap();
+    let mc = MonteCarlo::new(Arc::new(Population::sample(&spec, &Exp).unwrap()), hertz()).unwrap();
+    let model = gw(n, &hertz());
+    for h in [-2.0, 0.5] {
+        let st = mc
+            .state(h * SIGMA, History::Approach, Outputs::ALL)
+            .unwrap();
+        let g = model
+            .state(h * SIGMA, History::Approach, Outputs::ALL, &acc())
+            .unwrap();
+        let expect = [
+            g.load.unwrap() * (s * s / 8.0).exp(),
+            g.area.unwrap() * (s * s / 2.0).exp(),
+            g.count.unwrap(),
+        ];
+        let v = values(&st);
+        for k in 0..3 {
+            let bound = 5.0 * st.standard_error[k] + 1e-9 * expect[k];
+            assert!((v[k] - expect[k]).abs() < bound, "h {h} output {k}");
+        }
+        // Ignoring the radius spread would be detected in deep contact.
+        if h < 0.0 {
+            let z = (v[1] - g.area.unwrap()) / st.standard_error[1];
+            assert!(z.abs() > 5.0, "{z}");
+        }
+    }
+}
+
+#[test]
+fn standard_error_matches_the_spread_over_seeds() {
+    // 40 seeds of N = 2000: the spread of the totals matches the reported SE
+    // (ratio of variances within the 99.99% chi-square band for 39 dof,
+    // [0.39, 2.0]).
+    let n = 2000;
+    let d = 0.5 * SIGMA;
+    let (mut sum, mut sq, mut se2) = (0.0, 0.0, 0.0);
+    let seeds = 40;
+    for seed in 0..seeds {
+        let mc = MonteCarlo::new(population(n, 1000 + seed), hertz()).unwrap();
+        let s = mc.state(d, History::Approach, Outputs::LOAD).unwrap();
+        let p = s.load.unwrap();
+        sum += p;
+        sq += p * p;
+        se2 += s.standard_error[0].powi(2);
+    }
+    let k = seeds as f64;
+    let var = (sq - sum * sum / k) / (k - 1.0);
+    let ratio = var / (se2 / k);
+    assert!(ratio > 0.39 && ratio < 2.0, "{ratio}");
+}
+
+#[test]
+fn unrequested_outputs_are_none_and_single_summit_has_no_error() {
+    let mc = MonteCarlo::new(population(10, 1), hertz()).unwrap();
+    let s = mc.state(0.0, History::Approach, Outputs::LOAD).unwrap();
+    assert!(s.load.is_some() && s.area.is_none() && s.count.is_none());
+    let one = Population::from_summits(vec![1e-9], Radii::Fixed(R)).unwrap();
+    let mc = MonteCarlo::new(Arc::new(one), hertz()).unwrap();
+    let s = mc.state(0.0, History::Approach, Outputs::ALL).unwrap();
+    assert!(s.load.unwrap() > 0.0);
+    assert!(s.standard_error[0].is_nan());
+}
+
+// ---------------------------------------------------------------- bad input
+
+#[test]
+fn bad_population_specs_name_the_field() {
+    let ok = RadiusSpec::Fixed(R);
+    let cases: Vec<(PopulationSpec, &str)> = vec![
+        (spec(0, SIGMA, ok), "summits"),
+        (spec(MAX_SUMMITS + 1, SIGMA, ok), "summits"),
+        (spec(10, f64::NAN, ok), "sigma"),
+        (spec(10, 0.0, ok), "sigma"),
+        (spec(10, -1e-9, ok), "sigma"),
+        (spec(10, f64::INFINITY, ok), "sigma"),
+        (spec(10, SIGMA, RadiusSpec::Fixed(0.0)), "radius"),
+        (spec(10, SIGMA, RadiusSpec::Fixed(f64::NAN)), "radius"),
+        (spec(10, SIGMA, lognormal(-1e-6, 0.1)), "radius_median"),
+        (spec(10, SIGMA, lognormal(R, -0.1)), "radius_log_std"),
+        (spec(10, SIGMA, lognormal(R, f64::NAN)), "radius_log_std"),
+        (
+            spec(10, SIGMA, lognormal(R, f64::INFINITY)),
+            "radius_log_std",
+        ),
+    ];
+    for (s, field) in cases {
+        let e = PopulationSpec::new(s.summits, s.sigma, s.radius, s.seed).unwrap_err();
+        assert_eq!(e.field(), Some(field), "{s:?}");
+        // `sample` validates too (fields are public).
+        assert_eq!(
+            Population::sample(&s, &Exp).unwrap_err().field(),
+            Some(field)
+        );
+    }
+    let huge = RoughSurface::new(1e12, R, SIGMA, 1e-2).unwrap();
+    assert_eq!(
+        PopulationSpec::from_surface(&huge, 0).unwrap_err().field(),
+        Some("summits")
+    );
+    let tiny = RoughSurface::new(1.0, R, SIGMA, 0.1).unwrap();
+    assert_eq!(
+        PopulationSpec::from_surface(&tiny, 0).unwrap_err().field(),
+        Some("summits")
+    );
+    let gold = PopulationSpec::from_surface(&RoughSurface::gold_microswitch(), 0).unwrap();
+    assert_eq!(gold.summits, 10_000);
+}
+
+fn spec(summits: usize, sigma: f64, radius: RadiusSpec) -> PopulationSpec {
+    PopulationSpec {
+        summits,
+        sigma,
+        radius,
+        seed: 0,
+    }
+}
+
+fn lognormal(median: f64, log_std: f64) -> RadiusSpec {
+    RadiusSpec::LogNormal { median, log_std }
+}
+
+#[test]
+fn bad_summit_lists_name_the_field() {
+    let e = Population::from_summits(vec![], Radii::Fixed(R)).unwrap_err();
+    assert_eq!(e.field(), Some("heights"));
+    let e = Population::from_summits(vec![0.0, f64::NAN], Radii::Fixed(R)).unwrap_err();
+    assert_eq!(e.field(), Some("heights[1]"));
+    let e = Population::from_summits(vec![0.0], Radii::Fixed(-R)).unwrap_err();
+    assert_eq!(e.field(), Some("radius"));
+    let e = Population::from_summits(vec![0.0, 1.0], Radii::PerSummit(vec![R])).unwrap_err();
+    assert_eq!(e.field(), Some("radii"));
+    let e = Population::from_summits(vec![0.0, 1.0], Radii::PerSummit(vec![R, f64::INFINITY]))
+        .unwrap_err();
+    assert_eq!(e.field(), Some("radii[1]"));
+    // Given summits are sorted, radii kept with their heights.
+    let p = Population::from_summits(vec![2.0, 1.0], Radii::PerSummit(vec![R, 2.0 * R])).unwrap();
+    assert_eq!(p.heights(), &[1.0, 2.0]);
+    assert_eq!(p.radii().unwrap(), &[2.0 * R, R]);
+}
+
+#[test]
+fn bad_evaluation_input_names_the_field() {
+    let mc = MonteCarlo::new(population(100, 1), hertz()).unwrap();
+    for d in [f64::NAN, f64::INFINITY] {
+        let e = mc.state(d, History::Approach, Outputs::ALL).unwrap_err();
+        assert_eq!(e.field(), Some("separation"));
+    }
+    let e = mc
+        .state(0.0, History::Retract { closest: 1e-9 }, Outputs::ALL)
+        .unwrap_err();
+    assert_eq!(e.field(), Some("separation"));
+    let e = mc
+        .state(0.0, History::Retract { closest: f64::NAN }, Outputs::ALL)
+        .unwrap_err();
+    assert_eq!(e.field(), Some("closest_separation"));
+    // A law without radius scaling cannot serve other radii.
+    let fixed = SummitLaw::fixed(Arc::new(Hertz::new(R, E_STAR).unwrap()), R).unwrap();
+    let spec = PopulationSpec::new(10, SIGMA, lognormal(R, 0.2), 0).unwrap();
+    let varied = Arc::new(Population::sample(&spec, &Exp).unwrap());
+    let e = MonteCarlo::new(varied, fixed.clone()).unwrap_err();
+    assert!(matches!(e, Error::Invalid { .. }));
+    assert_eq!(e.field(), Some("radius"));
+    let other = SummitLaw::fixed(Arc::new(Hertz::new(2.0 * R, E_STAR).unwrap()), 2.0 * R).unwrap();
+    assert_eq!(
+        MonteCarlo::new(population(10, 0), other)
+            .unwrap_err()
+            .field(),
+        Some("radius")
+    );
+    assert!(MonteCarlo::new(population(10, 0), fixed).is_ok());
+    assert_eq!(
+        SummitLaw::scaled(
+            Arc::new(Hertz::new(R, E_STAR).unwrap()),
+            0.0,
+            RadiusScaling::MAUGIS
+        )
+        .unwrap_err()
+        .field(),
+        Some("reference_radius")
+    );
+    // Rigid Bradley: a summit past z0 has infinite load -> error, not inf.
+    let b = SummitLaw::scaled(
+        Arc::new(Bradley::new(R, 0.5, 3e-10).unwrap()),
+        R,
+        RadiusScaling::RIGID,
+    )
+    .unwrap();
+    let mc = MonteCarlo::new(population(100, 1), b).unwrap();
+    assert!(mc.state(1e-6, History::Approach, Outputs::ALL).is_ok());
+    let e = mc.state(0.0, History::Approach, Outputs::ALL).unwrap_err();
+    assert_eq!(e.field(), Some("separation"));
+}
