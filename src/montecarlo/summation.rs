@@ -125,6 +125,15 @@ struct Partial {
     sq: [f64; 3],
 }
 
+impl Partial {
+    fn add(&mut self, p: &Partial) {
+        for i in 0..3 {
+            self.sum[i] += p.sum[i];
+            self.sq[i] += p.sq[i];
+        }
+    }
+}
+
 impl MonteCarlo {
     /// Binds `law` to `population`, precomputing each summit's radius
     /// factors.
@@ -221,11 +230,15 @@ impl MonteCarlo {
 
     /// Index of the first summit that can contribute at separation `d`.
     fn first_in_range(&self, d: f64) -> usize {
-        let cut = self.law.law().cutoff_interference();
+        self.first_above(d, self.law.law().cutoff_interference())
+    }
+
+    /// Index of the first summit with `delta rho^-alpha >= cut` possible,
+    /// using the loosest factor (a superset of the summits that pass).
+    fn first_above(&self, d: f64, cut: f64) -> usize {
         if cut == f64::NEG_INFINITY {
             return 0;
         }
-        // delta rho^-alpha >= cut for some summit: the loosest factor.
         let inv = if cut < 0.0 {
             self.inv_len.0
         } else {
@@ -234,6 +247,106 @@ impl MonteCarlo {
         self.population
             .heights()
             .partition_point(|&z| (z - d) * inv < cut)
+    }
+
+    /// Runs any sequence of separations (m), in order, starting with every
+    /// summit free (the flat far away): a general program (partial
+    /// retractions, re-approach, cycles). Each summit keeps an attached flag:
+    /// it attaches when its interference reaches the law's
+    /// [`attach_interference`](crate::law::AsperityLaw::attach_interference),
+    /// detaches below its
+    /// [`detach_interference`](crate::law::AsperityLaw::detach_interference),
+    /// and is evaluated on the `Retract` branch while attached, `Approach`
+    /// otherwise. For approach-then-retract this reproduces
+    /// [`MonteCarlo::curve`] bit for bit for laws with the default
+    /// `state_after` (Hertz, DMT, JKR). Cost: one byte per summit and one
+    /// flag update per evaluation; steps run one after another, the
+    /// summits of a step in parallel.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `separations[i]` when not finite; as
+    /// [`MonteCarlo::state`] otherwise.
+    pub fn sequence(&self, separations: &[f64], outputs: Outputs) -> Result<Vec<McState>> {
+        for (i, &d) in separations.iter().enumerate() {
+            finite(&format!("separations[{i}]"), d)?;
+        }
+        let law = self.law.law();
+        let (attach, detach) = (law.attach_interference(), law.detach_interference());
+        // Below both the cutoff and the detach point a summit is free and
+        // detached: it is neither evaluated nor flagged.
+        let cut = law.cutoff_interference().min(detach);
+        let n = self.population.len();
+        let mut attached = vec![false; n];
+        let mut prev_lo = n;
+        let mut out = Vec::with_capacity(separations.len());
+        for &d in separations {
+            let lo = self.first_above(d, cut);
+            if lo > prev_lo {
+                // Summits that left the range are detached.
+                attached[prev_lo..lo].fill(false);
+            }
+            prev_lo = lo;
+            let partials: Vec<Partial> = attached
+                .par_chunks_mut(SUM_BLOCK)
+                .enumerate()
+                .skip(lo / SUM_BLOCK)
+                .map(|(b, flags)| {
+                    let base = b * SUM_BLOCK;
+                    let start = base.max(lo);
+                    let end = base + flags.len();
+                    self.block_flagged(start, end, &mut flags[start - base..], d, attach, detach)
+                })
+                .collect();
+            let mut total = Partial::default();
+            for p in &partials {
+                total.add(p);
+            }
+            out.push(self.finish(d, &total, lo, outputs)?);
+        }
+        Ok(out)
+    }
+
+    /// Sums summits `a..b` at `d`, updating their attached flags.
+    fn block_flagged(
+        &self,
+        a: usize,
+        b: usize,
+        flags: &mut [bool],
+        d: f64,
+        attach: f64,
+        detach: f64,
+    ) -> Partial {
+        let z = &self.population.heights()[a..b];
+        let law = self.law.law();
+        let mut p = Partial::default();
+        let mut one = |zi: f64, flag: &mut bool, f: [f64; 3]| {
+            let x = (zi - d) * f[0];
+            if *flag {
+                *flag = !(x < detach);
+            } else {
+                *flag = x >= attach;
+            }
+            let branch = if *flag {
+                Branch::Retract
+            } else {
+                Branch::Approach
+            };
+            let st = law.state(x, branch);
+            add(&mut p, st.load * f[1], st.radius * f[2]);
+        };
+        match &self.factors {
+            Factors::Uniform(f) => {
+                for (&zi, flag) in z.iter().zip(flags.iter_mut()) {
+                    one(zi, flag, *f);
+                }
+            }
+            Factors::PerSummit(v) => {
+                for ((&zi, flag), f) in z.iter().zip(flags.iter_mut()).zip(&v[a..b]) {
+                    one(zi, flag, *f);
+                }
+            }
+        }
+        p
     }
 
     fn run(&self, steps: &[(f64, Rule)], outputs: Outputs) -> Result<Vec<McState>> {
@@ -262,43 +375,46 @@ impl MonteCarlo {
         // Reduce each step's blocks in block order.
         let mut totals = vec![Partial::default(); steps.len()];
         for (&(k, _, _), p) in tasks.iter().zip(&partials) {
-            for i in 0..3 {
-                totals[k].sum[i] += p.sum[i];
-                totals[k].sq[i] += p.sq[i];
-            }
+            totals[k].add(p);
         }
+        totals
+            .iter()
+            .zip(steps)
+            .zip(&firsts)
+            .map(|((t, &(d, _)), &lo)| self.finish(d, t, lo, outputs))
+            .collect()
+    }
+
+    /// The state from a step's total; an error if the load is not finite.
+    fn finish(&self, d: f64, t: &Partial, first: usize, outputs: Outputs) -> Result<McState> {
+        let n = self.population.len();
         let nf = n as f64;
-        let mut out = Vec::with_capacity(steps.len());
-        for (k, t) in totals.iter().enumerate() {
-            let d = steps[k].0;
-            if !t.sum[0].is_finite() || !t.sum[1].is_finite() {
-                return Err(Error::invalid(
-                    "separation",
-                    format!(
-                        "at {d:e} m a summit passes the maximum interference of law {} \
-                         ({:e} m): the load is infinite",
-                        self.law.law().name(),
-                        self.law.law().max_interference()
-                    ),
-                ));
-            }
-            let se = std::array::from_fn(|i| {
-                if n < 2 {
-                    return f64::NAN;
-                }
-                let var = (t.sq[i] - t.sum[i] * t.sum[i] / nf).max(0.0) / (nf - 1.0);
-                (nf * var).sqrt()
-            });
-            out.push(McState {
-                separation: d,
-                load: outputs.load.then_some(t.sum[0]),
-                area: outputs.area.then_some(t.sum[1]),
-                count: outputs.count.then_some(t.sum[2]),
-                standard_error: se,
-                evaluations: n - firsts[k],
-            });
+        if !t.sum[0].is_finite() || !t.sum[1].is_finite() {
+            return Err(Error::invalid(
+                "separation",
+                format!(
+                    "at {d:e} m a summit passes the maximum interference of law {} \
+                     ({:e} m): the load is infinite",
+                    self.law.law().name(),
+                    self.law.law().max_interference()
+                ),
+            ));
         }
-        Ok(out)
+        let se = std::array::from_fn(|i| {
+            if n < 2 {
+                return f64::NAN;
+            }
+            let var = (t.sq[i] - t.sum[i] * t.sum[i] / nf).max(0.0) / (nf - 1.0);
+            (nf * var).sqrt()
+        });
+        Ok(McState {
+            separation: d,
+            load: outputs.load.then_some(t.sum[0]),
+            area: outputs.area.then_some(t.sum[1]),
+            count: outputs.count.then_some(t.sum[2]),
+            standard_error: se,
+            evaluations: n - first,
+        })
     }
 
     /// Sums over summits `a..b` at separation `d`.

@@ -591,3 +591,118 @@ fn bad_evaluation_input_names_the_field() {
     let e = mc.state(0.0, History::Approach, Outputs::ALL).unwrap_err();
     assert_eq!(e.field(), Some("separation"));
 }
+
+// ---------------------------------------------------------------- sequences
+
+#[test]
+fn sequence_reproduces_the_curve_bit_for_bit() {
+    let mc = MonteCarlo::new(population(20_000, 6), jkr()).unwrap();
+    let program = LoadingProgram::new(5.0 * SIGMA, -0.5 * SIGMA, 25).unwrap();
+    let curve = mc.curve(&program, Outputs::ALL).unwrap();
+    let seps = program.separations();
+    let path: Vec<f64> = seps.iter().rev().chain(seps.iter()).copied().collect();
+    let seq = mc.sequence(&path, Outputs::ALL).unwrap();
+    let expect: Vec<&McState> = curve.approach.iter().rev().chain(&curve.retract).collect();
+    for (a, b) in seq.iter().zip(expect) {
+        assert_eq!(a, b);
+    }
+}
+
+/// Brute force with the threshold rule, summit by summit: with `a_i`,
+/// `b_i` its attach and detach interferences, the set of attached heights
+/// after separations `d_1..d_t` is `z >= z*(t)`, `z*(t) = min(max(z*(t-1),
+/// d_t + b_i), d_t + a_i)`, `z*(0) = +inf` (derived independently of the
+/// flag update in `sequence`).
+fn brute_sequence(
+    pop: &Population,
+    kind: LawKind,
+    contact: &AsperityContact,
+    path: &[f64],
+) -> Vec<[f64; 3]> {
+    let laws: Vec<Box<dyn AsperityLaw>> = (0..pop.len())
+        .map(|i| {
+            let c = AsperityContact::new(pop.radius(i), contact.contact_modulus, contact.adhesion)
+                .unwrap();
+            kind.build(&c).unwrap()
+        })
+        .collect();
+    let mut thresholds = vec![f64::INFINITY; pop.len()];
+    path.iter()
+        .map(|&d| {
+            let mut v = [0.0; 3];
+            for (i, &z) in pop.heights().iter().enumerate() {
+                let law = &laws[i];
+                let (a, b) = (law.attach_interference(), law.detach_interference());
+                thresholds[i] = thresholds[i].max(d + b).min(d + a);
+                let branch = if z >= thresholds[i] {
+                    Branch::Retract
+                } else {
+                    Branch::Approach
+                };
+                let st = law.state(z - d, branch);
+                v[0] += st.load;
+                v[1] += st.area();
+                v[2] += f64::from(u8::from(st.in_contact()));
+            }
+            v
+        })
+        .collect()
+}
+
+#[test]
+fn general_sequences_match_the_threshold_rule_for_every_radius() {
+    // Partial retraction, re-approach, deeper approach, full retraction.
+    let legs = [
+        (4.0, -0.5),
+        (-0.5, 1.0),
+        (1.0, 0.2),
+        (0.2, 2.5),
+        (2.5, -1.0),
+        (-1.0, 5.0),
+    ];
+    let mut path = Vec::new();
+    for (from, to) in legs {
+        for k in 0..12 {
+            path.push(SIGMA * (from + (to - from) * k as f64 / 11.0));
+        }
+    }
+    let contact = AsperityContact::new(R, 1e9, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
+    for radius in [RadiusSpec::Fixed(R), lognormal(R, 0.4)] {
+        let spec = PopulationSpec::new(3000, SIGMA, radius, 12).unwrap();
+        let pop = Arc::new(Population::sample(&spec, &Exp).unwrap());
+        let mc = MonteCarlo::new(
+            pop.clone(),
+            SummitLaw::from_kind(LawKind::Jkr, &contact).unwrap(),
+        )
+        .unwrap();
+        let seq = mc.sequence(&path, Outputs::ALL).unwrap();
+        let brute = brute_sequence(&pop, LawKind::Jkr, &contact, &path);
+        let mut differs_from_approach = 0;
+        for (k, (s, e)) in seq.iter().zip(&brute).enumerate() {
+            let v = values(s);
+            assert!(
+                (v[0] - e[0]).abs() <= 1e-11 * e[0].abs().max(1e-15),
+                "{radius:?} step {k}: {v:?} {e:?}"
+            );
+            assert!((v[1] - e[1]).abs() <= 1e-11 * e[1].max(1e-30));
+            assert_eq!(v[2], e[2], "{radius:?} step {k}");
+            let fresh = mc.state(path[k], History::Approach, Outputs::LOAD).unwrap();
+            if fresh.load.unwrap() != v[0] {
+                differs_from_approach += 1;
+            }
+        }
+        // The history matters on most steps (the test has teeth).
+        assert!(
+            differs_from_approach > path.len() / 2,
+            "{differs_from_approach}"
+        );
+    }
+    assert_eq!(
+        MonteCarlo::new(population(10, 0), jkr())
+            .unwrap()
+            .sequence(&[0.0, f64::NAN], Outputs::ALL)
+            .unwrap_err()
+            .field(),
+        Some("separations[1]")
+    );
+}
