@@ -112,35 +112,40 @@ fn main() -> asperity::Result<()> {
         g.load.unwrap() * (s * s / 8.0).exp()
     );
 
-    // Timing: a 1e6-summit JKR approach-retract program, 500 separations per leg.
-    let spec = PopulationSpec::new(1_000_000, sigma, RadiusSpec::Fixed(r), 1)?;
-    let t0 = Instant::now();
-    let pop = Arc::new(Population::sample(&spec, &Exp)?);
-    let t_sample = t0.elapsed();
-    let mc = MonteCarlo::new(
-        pop,
-        SummitLaw::scaled(laws[1].1.clone(), r, RadiusScaling::MAUGIS)?,
-    )?;
+    // Timing: approach-retract programs of 1000 states (500 separations per
+    // leg, from 6 sigma to -sigma): Hertz on 1e6 summits, soft sticky JKR
+    // (E* = 1 GPa, strong hysteresis) on 1e5.
+    let soft: Arc<dyn AsperityLaw> = Arc::new(Jkr::new(r, 1e9, w)?);
     let program = LoadingProgram::new(6.0 * sigma, -sigma, 500)?;
-    let t1 = Instant::now();
-    let curve = mc.curve(&program, Outputs::ALL)?;
-    let t_curve = t1.elapsed();
-    let evals = curve.evaluations();
-    println!(
-        "\n1e6 JKR summits: sampled in {:.3} s; 1000-state program in {:.3} s \
-         ({evals} evaluations, {:.2e}/s on {} threads)",
-        t_sample.as_secs_f64(),
-        t_curve.as_secs_f64(),
-        evals as f64 / t_curve.as_secs_f64(),
-        rayon::current_num_threads()
-    );
-    if let Some(p) = curve.sampled_pull_off() {
+    for (name, law, n) in [
+        ("hertz", laws[0].1.clone(), 1_000_000),
+        ("soft jkr", soft, 100_000),
+    ] {
+        let spec = PopulationSpec::new(n, sigma, RadiusSpec::Fixed(r), 1)?;
+        let t0 = Instant::now();
+        let pop = Arc::new(Population::sample(&spec, &Exp)?);
+        let t_sample = t0.elapsed();
+        let mc = MonteCarlo::new(pop, SummitLaw::scaled(law, r, RadiusScaling::MAUGIS)?)?;
+        let t1 = Instant::now();
+        let curve = mc.curve(&program, Outputs::ALL)?;
+        let t_curve = t1.elapsed();
+        let evals = curve.evaluations();
         println!(
-            "pull-off {:.4e} N at {:.3} sigma; hysteresis {:.4e} J",
-            p.load,
-            p.separation / sigma,
-            curve.hysteresis_energy().unwrap()
+            "\n{n} {name} summits: sampled in {:.3} s; 1000-state program in {:.3} s \
+             ({evals} evaluations, {:.3e}/s on {} threads)",
+            t_sample.as_secs_f64(),
+            t_curve.as_secs_f64(),
+            evals as f64 / t_curve.as_secs_f64(),
+            rayon::current_num_threads()
         );
+        if let Some(p) = curve.sampled_pull_off() {
+            println!(
+                "  pull-off {:.4e} N at {:.3} sigma; hysteresis energy {:.4e} J",
+                p.load,
+                p.separation / sigma,
+                curve.hysteresis_energy().unwrap()
+            );
+        }
     }
     Ok(())
 }

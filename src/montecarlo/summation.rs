@@ -49,6 +49,23 @@ pub struct McState {
     pub evaluations: usize,
 }
 
+impl McState {
+    /// The state of a surface `factor` times larger than the population
+    /// (a population drawn for a sub-area, `factor = N_surface / N`):
+    /// totals and standard errors multiplied by `factor`. The errors then
+    /// measure the distance to the expectation `N_surface E[x]`, not the
+    /// scatter of one realisation of the whole surface.
+    pub fn scaled(&self, factor: f64) -> McState {
+        McState {
+            load: self.load.map(|x| x * factor),
+            area: self.area.map(|x| x * factor),
+            count: self.count.map(|x| x * factor),
+            standard_error: self.standard_error.map(|x| x * factor),
+            ..*self
+        }
+    }
+}
+
 /// A Monte Carlo load–separation curve on approach and retraction.
 #[derive(Debug, Clone, PartialEq)]
 pub struct McCurve {
@@ -349,40 +366,44 @@ impl MonteCarlo {
         p
     }
 
+    /// All steps, block-major: each block of summits (64 KiB of heights,
+    /// cache-resident) is evaluated for every step that reaches it, blocks
+    /// in parallel; then each step adds its block partials in block order.
     fn run(&self, steps: &[(f64, Rule)], outputs: Outputs) -> Result<Vec<McState>> {
         let n = self.population.len();
-        // Tasks (step, block start, block end) at fixed block boundaries.
-        let mut tasks = Vec::new();
-        let mut firsts = Vec::with_capacity(steps.len());
-        for (k, &(d, _)) in steps.iter().enumerate() {
-            let lo = self.first_in_range(d);
-            firsts.push(lo);
-            let mut start = lo;
-            while start < n {
-                let end = ((start / SUM_BLOCK) + 1) * SUM_BLOCK;
-                let end = end.min(n);
-                tasks.push((k, start, end));
-                start = end;
-            }
-        }
-        let partials: Vec<Partial> = tasks
-            .par_iter()
-            .map(|&(k, a, b)| {
-                let (d, rule) = steps[k];
-                self.block(a, b, d, rule)
+        let firsts: Vec<usize> = steps.iter().map(|&(d, _)| self.first_in_range(d)).collect();
+        let lowest = firsts.iter().copied().min().unwrap_or(n);
+        let first_block = lowest / SUM_BLOCK;
+        let blocks = n.div_ceil(SUM_BLOCK);
+        // partials[b - first_block][k]: block b at step k (zero if unreached).
+        let partials: Vec<Vec<Partial>> = (first_block..blocks)
+            .into_par_iter()
+            .map(|b| {
+                let (start, end) = (b * SUM_BLOCK, ((b + 1) * SUM_BLOCK).min(n));
+                steps
+                    .iter()
+                    .zip(&firsts)
+                    .map(|(&(d, rule), &lo)| {
+                        if lo < end {
+                            self.block(start.max(lo), end, d, rule)
+                        } else {
+                            Partial::default()
+                        }
+                    })
+                    .collect()
             })
             .collect();
-        // Reduce each step's blocks in block order.
-        let mut totals = vec![Partial::default(); steps.len()];
-        for (&(k, _, _), p) in tasks.iter().zip(&partials) {
-            totals[k].add(p);
+        let mut states = Vec::with_capacity(steps.len());
+        for (k, (&(d, _), &lo)) in steps.iter().zip(&firsts).enumerate() {
+            let mut total = Partial::default();
+            for (i, block) in partials.iter().enumerate() {
+                if (first_block + i + 1) * SUM_BLOCK > lo {
+                    total.add(&block[k]);
+                }
+            }
+            states.push(self.finish(d, &total, lo, outputs)?);
         }
-        totals
-            .iter()
-            .zip(steps)
-            .zip(&firsts)
-            .map(|((t, &(d, _)), &lo)| self.finish(d, t, lo, outputs))
-            .collect()
+        Ok(states)
     }
 
     /// The state from a step's total; an error if the load is not finite.

@@ -706,3 +706,17 @@ fn general_sequences_match_the_threshold_rule_for_every_radius() {
         Some("separations[1]")
     );
 }
+
+#[test]
+fn scaled_states_multiply_totals_and_errors() {
+    let mc = MonteCarlo::new(population(1000, 2), hertz()).unwrap();
+    let s = mc
+        .state(0.2 * SIGMA, History::Approach, Outputs::ALL)
+        .unwrap();
+    let t = s.scaled(10.0);
+    assert_eq!(t.load.unwrap(), 10.0 * s.load.unwrap());
+    assert_eq!(t.count.unwrap(), 10.0 * s.count.unwrap());
+    assert_eq!(t.standard_error[1], 10.0 * s.standard_error[1]);
+    assert_eq!(t.separation, s.separation);
+    assert_eq!(t.evaluations, s.evaluations);
+}
