@@ -720,3 +720,101 @@ fn scaled_states_multiply_totals_and_errors() {
     assert_eq!(t.separation, s.separation);
     assert_eq!(t.evaluations, s.evaluations);
 }
+
+// ---------------------------------------------------------------- properties
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Any size (block boundaries included), scale and seed: heights
+        /// finite, non-negative for the exponential, ascending, scaled by
+        /// sigma, and reproducible.
+        #[test]
+        fn samples_are_sorted_finite_and_reproducible(
+            n in 1usize..20_000,
+            log_sigma in -12.0f64..-3.0,
+            seed in any::<u64>(),
+        ) {
+            let sigma = 10f64.powf(log_sigma);
+            let spec = PopulationSpec::new(n, sigma, RadiusSpec::Fixed(R), seed).unwrap();
+            let p = Population::sample(&spec, &Exp).unwrap();
+            prop_assert_eq!(p.len(), n);
+            prop_assert!(p.heights().is_sorted());
+            prop_assert!(p.heights().iter().all(|z| z.is_finite() && *z >= 0.0));
+            // The largest of n exponentials is below ln(n) + 60 (tail e^-60).
+            prop_assert!(*p.heights().last().unwrap() / sigma < (n as f64).ln() + 60.0);
+            prop_assert_eq!(&p, &Population::sample(&spec, &Exp).unwrap());
+        }
+
+        /// The radius scaling is exact for Hertz, DMT and JKR over six
+        /// decades of radius ratio: the rescaled reference law equals the
+        /// law built at that radius, on both branches.
+        #[test]
+        fn radius_scaling_matches_a_law_built_for_the_radius(
+            log_rho in -3.0f64..3.0,
+            delta_bar in -1.0f64..20.0,
+            which in 0usize..3,
+        ) {
+            let kind = [LawKind::Hertz, LawKind::Dmt, LawKind::Jkr][which];
+            let contact = AsperityContact::new(R, 1e9, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
+            let family = SummitLaw::from_kind(kind, &contact).unwrap();
+            let rho = 10f64.powf(log_rho);
+            let f = family.factors_for(rho * R).unwrap();
+            let other = AsperityContact::new(rho * R, 1e9, contact.adhesion).unwrap();
+            let direct = kind.build(&other).unwrap();
+            // Interferences in the summit's own Maugis scale.
+            let scale = other.scales().unwrap().interference;
+            let delta = delta_bar * scale;
+            for branch in [Branch::Approach, Branch::Retract] {
+                let a = family.law().state(delta * f[0], branch);
+                let b = direct.state(delta, branch);
+                let (pa, pb) = (a.load * f[1], b.load);
+                let (ra, rb) = (a.radius * f[2], b.radius);
+                let ps = other.scales().unwrap().load;
+                let rs = other.scales().unwrap().radius;
+                prop_assert!((pa - pb).abs() <= 1e-9 * ps.max(pb.abs()), "{kind:?} {pa} {pb}");
+                prop_assert!((ra - rb).abs() <= 1e-9 * rs.max(rb), "{kind:?} {ra} {rb}");
+            }
+        }
+
+        /// Hertz totals fall as the flat retreats; the count never exceeds N;
+        /// retraction after any closer approach equals approach (no hysteresis).
+        #[test]
+        fn hertz_totals_are_monotone_and_history_free(
+            seed in any::<u64>(),
+            h1 in -2.0f64..6.0,
+            dh in 0.0f64..3.0,
+        ) {
+            let mc = MonteCarlo::new(population(2000, seed), hertz()).unwrap();
+            let (d1, d2) = (h1 * SIGMA, (h1 + dh) * SIGMA);
+            let s1 = mc.state(d1, History::Approach, Outputs::ALL).unwrap();
+            let s2 = mc.state(d2, History::Approach, Outputs::ALL).unwrap();
+            let (v1, v2) = (values(&s1), values(&s2));
+            for k in 0..3 {
+                prop_assert!(v2[k] <= v1[k]);
+            }
+            prop_assert!(v1[2] <= 2000.0);
+            let back = mc.state(d2, History::Retract { closest: d1 }, Outputs::ALL).unwrap();
+            prop_assert_eq!(values(&back), v2);
+        }
+
+        /// JKR: retraction is never less tensile than approach, summit by
+        /// summit, hence in total (exact, no statistics).
+        #[test]
+        fn jkr_retraction_is_at_most_the_approach_load(
+            seed in any::<u64>(),
+            hc in -1.0f64..2.0,
+            dh in 0.0f64..4.0,
+        ) {
+            let mc = MonteCarlo::new(population(2000, seed), jkr()).unwrap();
+            let (closest, d) = (hc * SIGMA, (hc + dh) * SIGMA);
+            let a = mc.state(d, History::Approach, Outputs::LOAD).unwrap().load.unwrap();
+            let r = mc.state(d, History::Retract { closest }, Outputs::LOAD).unwrap().load.unwrap();
+            prop_assert!(r <= a + 1e-12 * a.abs(), "{r} {a}");
+        }
+    }
+}
