@@ -14,8 +14,11 @@
 //! height order).
 //!
 //! **Reproducibility**: the summits are cut into fixed blocks of
-//! [`SAMPLING_BLOCK`]; block `b` draws from its own xoshiro256++ generator
-//! (a portable algorithm) seeded from `(seed, b)`. The blocks run in
+//! [`SAMPLING_BLOCK`]; block `b` draws its heights from its own xoshiro256++
+//! generator (a portable algorithm) seeded from `(seed, b)`, and its radii
+//! from another. The heights for a seed are therefore the same whatever the
+//! radius spec, and scale exactly with `sigma`: sweeps over `sigma` or the
+//! radius spread with one seed use common random numbers. The blocks run in
 //! parallel, the prefix sums are combined in block order, so the same seed
 //! gives bit-identical populations for any number of threads. Values can
 //! change only if `rand_distr`'s normal sampler changes (radii) or the
@@ -163,21 +166,18 @@ impl Population {
         let fill = |b: usize, h: &mut [f64], r: Option<&mut [f64]>| -> f64 {
             let mut rng = block_rng(spec.seed, b as u64);
             let mut s = 0.0;
-            match r {
-                Some(r) => {
-                    let (med, ls) = (spec.radius.reference(), lognormal.unwrap_or(0.0));
-                    for (hj, rj) in h.iter_mut().zip(r.iter_mut()) {
-                        s += standard_exponential(&mut rng);
-                        *hj = s;
-                        let z: f64 = StandardNormal.sample(&mut rng);
-                        *rj = med * (ls * z).exp();
-                    }
-                }
-                None => {
-                    for hj in h.iter_mut() {
-                        s += standard_exponential(&mut rng);
-                        *hj = s;
-                    }
+            for hj in h.iter_mut() {
+                s += standard_exponential(&mut rng);
+                *hj = s;
+            }
+            if let Some(r) = r {
+                // Radii from their own stream: the heights do not depend on
+                // the radius spec (common random numbers across sweeps).
+                let mut rng = block_rng(spec.seed ^ RADIUS_STREAM, b as u64);
+                let (med, ls) = (spec.radius.reference(), lognormal.unwrap_or(0.0));
+                for rj in r.iter_mut() {
+                    let z: f64 = StandardNormal.sample(&mut rng);
+                    *rj = med * (ls * z).exp();
                 }
             }
             s
@@ -340,6 +340,9 @@ fn sort_together(heights: &mut [f64], radii: Option<&mut Vec<f64>>) {
         }
     }
 }
+
+/// Seed offset of the radius streams (distinct from every height stream).
+const RADIUS_STREAM: u64 = 0x5241_4449_5553_0001;
 
 /// SplitMix64 finaliser (Steele, Lea & Flood 2014): a bijective mixer.
 fn splitmix(mut z: u64) -> u64 {

@@ -516,6 +516,13 @@ fn spec(summits: usize, sigma: f64, radius: RadiusSpec) -> PopulationSpec {
     }
 }
 
+impl PopulationSpec {
+    fn with_seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self
+    }
+}
+
 fn lognormal(median: f64, log_std: f64) -> RadiusSpec {
     RadiusSpec::LogNormal { median, log_std }
 }
@@ -817,4 +824,23 @@ mod properties {
             prop_assert!(r <= a + 1e-12 * a.abs(), "{r} {a}");
         }
     }
+}
+
+#[test]
+fn heights_do_not_depend_on_the_radius_spec_or_sigma() {
+    let a =
+        Population::sample(&spec(5000, SIGMA, RadiusSpec::Fixed(R)).with_seed(3), &Exp).unwrap();
+    let b = Population::sample(
+        &spec(5000, 2.0 * SIGMA, lognormal(R, 0.4)).with_seed(3),
+        &Exp,
+    )
+    .unwrap();
+    let c = Population::sample(&spec(5000, SIGMA, lognormal(R, 0.8)).with_seed(3), &Exp).unwrap();
+    for i in 0..5000 {
+        assert_eq!(2.0 * a.heights()[i], b.heights()[i]);
+        // Same normal deviates: ln(R/median) doubles with the spread.
+        let (lb, lc) = ((b.radius(i) / R).ln(), (c.radius(i) / R).ln());
+        assert!((2.0 * lb - lc).abs() < 1e-12, "{lb} {lc}");
+    }
+    assert_eq!(a.heights(), c.heights());
 }
