@@ -245,6 +245,62 @@ impl MonteCarlo {
         })
     }
 
+    /// Separation (m) at which the approach load first reaches
+    /// `max_load` (N, > 0) coming from far away: the closest separation of
+    /// a load-limited program (scene `program.max_load`). Brackets by
+    /// doubling steps down from the top summit, then bisects to `1e-12`
+    /// relative in separation; returns the bracket end whose load is
+    /// `>= max_load`. The crossing is the first one when the approach load
+    /// is monotone in separation (every law here in compression: each
+    /// summit's load grows with its interference once in contact).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `max_load`; [`Error::NoConvergence`]
+    /// when the load cannot reach it (e.g. a rigid law diverging first);
+    /// as [`MonteCarlo::state`].
+    pub fn separation_for_load(&self, max_load: f64) -> Result<f64> {
+        crate::error::positive("max_load", max_load)?;
+        let z = self.population.heights();
+        let (z_lo, z_hi) = (z[0], z[z.len() - 1]);
+        let load = |d: f64| -> Result<f64> {
+            Ok(self
+                .state(d, History::Approach, Outputs::LOAD)?
+                .load
+                .unwrap_or(0.0))
+        };
+        // Above the top summit no contact load acts (for laws with a
+        // finite range the load may still be adhesive, i.e. < max_load).
+        let mut hi = z_hi;
+        let mut width = (z_hi - z_lo).max(z_hi.abs() * 1e-6).max(f64::MIN_POSITIVE);
+        let mut lo = hi - width;
+        let mut tries = 0;
+        while load(lo)? < max_load {
+            hi = lo;
+            width *= 2.0;
+            lo = hi - width;
+            tries += 1;
+            if tries > 200 || !lo.is_finite() {
+                return Err(Error::NoConvergence {
+                    what: format!("separation where the approach load reaches {max_load:e} N"),
+                    iterations: tries,
+                    residual: max_load,
+                });
+            }
+        }
+        for _ in 0..200 {
+            if hi - lo <= 1e-12 * (hi.abs() + lo.abs()).max(z_hi - z_lo) {
+                break;
+            }
+            let mid = 0.5 * (lo + hi);
+            if load(mid)? >= max_load {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Ok(lo)
+    }
+
     /// Index of the first summit that can contribute at separation `d`.
     fn first_in_range(&self, d: f64) -> usize {
         self.first_above(d, self.law.law().cutoff_interference())

@@ -844,3 +844,32 @@ fn heights_do_not_depend_on_the_radius_spec_or_sigma() {
     }
     assert_eq!(a.heights(), c.heights());
 }
+
+#[test]
+fn separation_for_load_reaches_the_target() {
+    let mc = MonteCarlo::new(population(5000, 8), hertz()).unwrap();
+    let full = mc
+        .state(-SIGMA, History::Approach, Outputs::LOAD)
+        .unwrap()
+        .load
+        .unwrap();
+    for target in [1e-3 * full, 0.5 * full, 3.0 * full] {
+        let d = mc.separation_for_load(target).unwrap();
+        let at = |d: f64| {
+            mc.state(d, History::Approach, Outputs::LOAD)
+                .unwrap()
+                .load
+                .unwrap()
+        };
+        assert!(at(d) >= target);
+        // Just beyond it the load is below the target.
+        let step = 1e-9 * SIGMA;
+        assert!(at(d + step) < target, "{} {}", at(d + step), target);
+    }
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert_eq!(
+            mc.separation_for_load(bad).unwrap_err().field(),
+            Some("max_load")
+        );
+    }
+}
