@@ -195,12 +195,15 @@ fn populations_are_identical_for_one_and_two_threads() {
                 let pop = Arc::new(Population::sample(&spec, &Exp).unwrap());
                 let mc = MonteCarlo::new(pop.clone(), jkr()).unwrap();
                 let prog = LoadingProgram::new(8.0 * SIGMA, -SIGMA, 30).unwrap();
-                (pop, mc.curve(&prog, Outputs::ALL).unwrap())
+                let path: Vec<f64> = (0..40).map(|k| SIGMA * (3.0 - 0.1 * k as f64)).collect();
+                let seq = mc.sequence(&path, Outputs::ALL).unwrap();
+                (pop, mc.curve(&prog, Outputs::ALL).unwrap(), seq)
             })
     };
-    let (p1, c1) = run(1);
-    let (p2, c2) = run(2);
+    let (p1, c1, s1) = run(1);
+    let (p2, c2, s2) = run(2);
     assert_eq!(p1, p2);
+    assert_eq!(s1, s2);
     // Bitwise: compare the bit patterns, not just values.
     let bits = |c: &McCurve| -> Vec<u64> {
         c.approach
