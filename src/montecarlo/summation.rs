@@ -21,7 +21,7 @@
 use super::population::Population;
 use super::scaling::SummitLaw;
 use crate::error::{finite, Allowed, Error, Result};
-use crate::gw::{History, LoadingProgram, Outputs, PullOff};
+use crate::gw::{GwState, History, LoadingProgram, Outputs, PullOff};
 use crate::law::{Branch, ContactState};
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -50,6 +50,22 @@ pub struct McState {
 }
 
 impl McState {
+    /// Deviation from the Greenwood–Williamson expectation in standard
+    /// errors, per output: `(x_MC - x_GW) / sqrt(SE^2 + err_GW^2)`; about
+    /// N(0, 1) when the population is drawn from the model's distribution
+    /// (`|z| > 5` is significant). `None` for outputs missing on either
+    /// side or with a zero error (every summit in contact: the count is
+    /// exact).
+    pub fn deviation_from(&self, gw: &GwState) -> [Option<f64>; 3] {
+        let mc = [self.load, self.area, self.count];
+        let ex = [gw.load, gw.area, gw.count];
+        std::array::from_fn(|i| {
+            let (m, e) = (mc[i]?, ex[i]?);
+            let se = self.standard_error[i].hypot(gw.error[i]);
+            (se > 0.0).then(|| (m - e) / se)
+        })
+    }
+
     /// The state of a surface `factor` times larger than the population
     /// (a population drawn for a sub-area, `factor = N_surface / N`):
     /// totals and standard errors multiplied by `factor`. The errors then

@@ -876,3 +876,28 @@ fn separation_for_load_reaches_the_target() {
         );
     }
 }
+
+#[test]
+fn deviation_from_gw_is_the_z_score() {
+    let n = 20_000;
+    let mc = MonteCarlo::new(population(n, 31), hertz()).unwrap();
+    let model = gw(n, &hertz());
+    let s = mc
+        .state(0.4 * SIGMA, History::Approach, Outputs::LOAD)
+        .unwrap();
+    let g = model
+        .state(0.4 * SIGMA, History::Approach, Outputs::ALL, &acc())
+        .unwrap();
+    let z = s.deviation_from(&g);
+    let expect = (s.load.unwrap() - g.load.unwrap()) / s.standard_error[0].hypot(g.error[0]);
+    assert_eq!(z[0], Some(expect));
+    assert!(expect.abs() < 5.0);
+    assert_eq!(z[1], None);
+    // Deep contact: every summit touches, the count has no error.
+    let s = mc.state(-SIGMA, History::Approach, Outputs::ALL).unwrap();
+    let g = model
+        .state(-SIGMA, History::Approach, Outputs::ALL, &acc())
+        .unwrap();
+    assert_eq!(s.standard_error[2], 0.0);
+    assert!(s.deviation_from(&g)[0].is_some());
+}
