@@ -15,7 +15,16 @@
 //! - [`MonteCarlo`]: population + law; [`MonteCarlo::state`] at one
 //!   separation after a [`History`](crate::gw::History),
 //!   [`MonteCarlo::curve`] over a [`LoadingProgram`](crate::gw::LoadingProgram),
-//!   with standard errors ([`McState`]).
+//!   with standard errors ([`McState`]); [`MonteCarlo::sequence`] for any
+//!   path of separations (per-summit attach state);
+//!   [`MonteCarlo::separation_for_load`] for load-limited programs;
+//!   [`McState::deviation_from`] for z-scores against a
+//!   [`GwState`](crate::gw::GwState).
+//!
+//! Laws are summed exactly as [`GwModel`](crate::gw::GwModel) integrates
+//! them (same heights origin, same `state`/`state_after` calls), so a
+//! population drawn from the model's distribution with `N = eta A_n`
+//! summits is an unbiased estimate of the GW totals.
 //!
 //! ```
 //! use asperity::gw::{History, Outputs};
