@@ -33,6 +33,7 @@ pub mod gw;
 pub mod heights;
 pub mod law;
 pub mod material;
+pub mod montecarlo;
 pub mod numeric;
 pub mod plot;
 pub mod scene;

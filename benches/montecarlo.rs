@@ -1,0 +1,160 @@
+//! Monte Carlo summation throughput (criterion):
+//! `cargo bench --bench montecarlo -- --warm-up-time 1 --measurement-time 3`.
+//!
+//! - `mc_state/*`: one separation over a population of 1e6 summits, every
+//!   summit within range (throughput = law evaluations per second).
+//! - `mc_curve/*`: a 1e6-summit approach-retract program of 1000 states
+//!   (500 separations per leg).
+//! - `mc_sample/*`: drawing the population.
+use asperity::gw::{History, LoadingProgram, Outputs};
+use asperity::heights::HeightDistribution;
+use asperity::law::{Hertz, Jkr};
+use asperity::montecarlo::*;
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use std::hint::black_box;
+use std::sync::Arc;
+
+/// GW's exponential heights `phi(s) = e^-s` (a stand-in until the crate's
+/// own distributions land; only the quantile is used).
+#[derive(Debug)]
+struct Exp;
+
+impl HeightDistribution for Exp {
+    fn name(&self) -> &'static str {
+        "exponential"
+    }
+    fn pdf(&self, s: f64) -> f64 {
+        if s >= 0.0 {
+            (-s).exp()
+        } else {
+            0.0
+        }
+    }
+    fn tail(&self, s: f64) -> f64 {
+        (-s.max(0.0)).exp()
+    }
+    fn support(&self) -> (f64, f64) {
+        (0.0, f64::INFINITY)
+    }
+    fn moment_above(&self, _n: f64, _h: f64) -> f64 {
+        f64::NAN
+    }
+    fn quantile(&self, p: f64) -> f64 {
+        -(-p).ln_1p()
+    }
+    fn numerical_support(&self, eps: f64) -> (f64, f64) {
+        (0.0, -eps.ln())
+    }
+}
+
+const R: f64 = 1e-6;
+const SIGMA: f64 = 5e-9;
+const N: usize = 1_000_000;
+
+fn laws() -> Vec<(&'static str, SummitLaw)> {
+    vec![
+        (
+            "hertz",
+            SummitLaw::scaled(
+                Arc::new(Hertz::new(R, 4.8e10).unwrap()),
+                R,
+                RadiusScaling::MAUGIS,
+            )
+            .unwrap(),
+        ),
+        (
+            "jkr",
+            SummitLaw::scaled(
+                Arc::new(Jkr::new(R, 4.8e10, 0.5).unwrap()),
+                R,
+                RadiusScaling::MAUGIS,
+            )
+            .unwrap(),
+        ),
+    ]
+}
+
+fn populations() -> Vec<(&'static str, Arc<Population>)> {
+    let fixed = PopulationSpec::new(N, SIGMA, RadiusSpec::Fixed(R), 1).unwrap();
+    let logn = PopulationSpec::new(
+        N,
+        SIGMA,
+        RadiusSpec::LogNormal {
+            median: R,
+            log_std: 0.3,
+        },
+        1,
+    )
+    .unwrap();
+    vec![
+        ("fixed", Arc::new(Population::sample(&fixed, &Exp).unwrap())),
+        (
+            "lognormal",
+            Arc::new(Population::sample(&logn, &Exp).unwrap()),
+        ),
+    ]
+}
+
+fn bench_state(c: &mut Criterion) {
+    let mut group = c.benchmark_group("mc_state");
+    group.throughput(Throughput::Elements(N as u64));
+    for (pname, pop) in populations() {
+        for (lname, law) in laws() {
+            let mc = MonteCarlo::new(pop.clone(), law).unwrap();
+            // d = -sigma: every summit in contact.
+            let d = -SIGMA;
+            for (hname, history) in [
+                ("approach", History::Approach),
+                ("retract", History::Retract { closest: 2.0 * d }),
+            ] {
+                assert_eq!(mc.state(d, history, Outputs::ALL).unwrap().evaluations, N);
+                group.bench_function(BenchmarkId::new(format!("{lname}/{pname}"), hname), |b| {
+                    b.iter(|| black_box(mc.state(black_box(d), history, Outputs::ALL).unwrap()))
+                });
+            }
+        }
+    }
+    group.finish();
+}
+
+fn bench_curve(c: &mut Criterion) {
+    let mut group = c.benchmark_group("mc_curve");
+    group.sample_size(10);
+    let pop = populations().remove(0).1;
+    // Approach from 6 sigma to -sigma and back, 500 separations per leg.
+    let program = LoadingProgram::new(6.0 * SIGMA, -SIGMA, 500).unwrap();
+    for (lname, law) in laws() {
+        let mc = MonteCarlo::new(pop.clone(), law).unwrap();
+        let evals = mc.curve(&program, Outputs::ALL).unwrap().evaluations();
+        group.throughput(Throughput::Elements(evals as u64));
+        group.bench_function(BenchmarkId::new(lname, "1000_states"), |b| {
+            b.iter(|| black_box(mc.curve(&program, Outputs::ALL).unwrap()))
+        });
+    }
+    group.finish();
+}
+
+fn bench_sample(c: &mut Criterion) {
+    let mut group = c.benchmark_group("mc_sample");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(N as u64));
+    for (name, radius) in [
+        ("fixed", RadiusSpec::Fixed(R)),
+        (
+            "lognormal",
+            RadiusSpec::LogNormal {
+                median: R,
+                log_std: 0.3,
+            },
+        ),
+    ] {
+        let spec = PopulationSpec::new(N, SIGMA, radius, 1).unwrap();
+        group.bench_function(name, |b| {
+            b.iter(|| black_box(Population::sample(&spec, &Exp).unwrap()))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_state, bench_curve, bench_sample);
+criterion_main!(benches);
