@@ -166,3 +166,40 @@ fn plans_say_what_they_skip() {
     assert!(!plan.curve_outputs.count);
     assert!(plan.to_string().contains("not asked for"));
 }
+
+#[test]
+fn maugis_population_agrees_with_the_integral_within_its_statistical_error() {
+    let base = example("montecarlo-gold.toml");
+    for seed in 1..=4 {
+        let mut scene = base.clone();
+        scene.montecarlo.as_mut().unwrap().seed = seed;
+        let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
+        let res = plan.run().unwrap();
+        let mc = res.montecarlo.unwrap();
+        let z = mc.max_abs_z.unwrap();
+        assert!(z < 5.0, "seed {seed}: worst |z| = {z}");
+        // Every state with enough summits in range is compared.
+        let compared = mc.z.iter().filter(|z| z[0].is_some()).count();
+        assert!(compared > mc.z.len() / 3, "{compared} of {}", mc.z.len());
+    }
+    // Power: an integral for a 10% rougher surface is rejected.
+    let plan = Plan::new(&base, PlanMode::Planned).unwrap();
+    let mc = plan.run().unwrap().montecarlo.unwrap();
+    let mut rough = base.clone();
+    rough.surface.sigma *= 1.1;
+    rough.montecarlo = None;
+    rough.program.start_separation = Some(plan.start);
+    let wrong = Plan::new(&rough, PlanMode::Planned).unwrap().run().unwrap();
+    let worst = mc
+        .curve
+        .approach
+        .iter()
+        .zip(&wrong.curve.approach)
+        .filter(|(m, _)| m.evaluations >= 20)
+        .filter_map(|(m, g)| m.deviation_from(g)[0])
+        .fold(0.0f64, |a, z| a.max(z.abs()));
+    assert!(
+        worst > 5.0,
+        "a 10% sigma error went unnoticed: |z| = {worst}"
+    );
+}

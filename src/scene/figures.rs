@@ -58,6 +58,11 @@ pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<P
     let csv = dir.join("curve.csv");
     std::fs::write(&csv, curve_csv(results, plan)).map_err(io)?;
     written.push(csv);
+    if let Some(text) = super::output::montecarlo_csv(results) {
+        let path = dir.join("montecarlo.csv");
+        std::fs::write(&path, text).map_err(io)?;
+        written.push(path);
+    }
     let json = dir.join("summary.json");
     std::fs::write(&json, Summary::new(plan, results).to_json() + "\n").map_err(io)?;
     written.push(json);
@@ -83,13 +88,27 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
         leg.iter().filter_map(f).collect()
     };
     if o.load {
-        let series = legs
+        let mut series: Vec<Series> = legs
             .iter()
             .map(|(name, leg)| Series {
                 label: (*name).into(),
                 points: pick(&|s| Some((s.separation / ds, s.load? / ls)), leg),
             })
             .collect();
+        if let Some(m) = &results.montecarlo {
+            for (name, leg) in [
+                ("Monte Carlo approach", &m.curve.approach),
+                ("Monte Carlo retraction", &m.curve.retract),
+            ] {
+                series.push(Series {
+                    label: name.into(),
+                    points: leg
+                        .iter()
+                        .filter_map(|s| Some((s.separation / ds, s.load? / ls)))
+                        .collect(),
+                });
+            }
+        }
         out.push((
             "load_separation.svg".into(),
             Chart {

@@ -17,13 +17,13 @@ mod schema;
 
 pub use build::{build_contact, build_distribution, build_surface};
 pub use figures::{charts, si_prefix, si_prefix_area, write_outputs};
-pub use output::{curve_csv, Summary};
-pub use plan::{start_separation, Decision, LawChoice, Plan, PlanMode, Target};
-pub use run::Results;
+pub use output::{curve_csv, montecarlo_csv, McSummary, Summary};
+pub use plan::{start_separation, Decision, LawChoice, McPlan, Plan, PlanMode, Target};
+pub use run::{McResults, Results};
 
 pub use schema::{
-    AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, OutputsSpec, ProgramSpec, Scene,
-    SurfaceSpec,
+    AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, MonteCarloSpec, OutputsSpec, ProgramSpec,
+    Scene, SurfaceSpec,
 };
 
 /// The default scene (`examples/scenes/mems-gold.toml`), embedded so that

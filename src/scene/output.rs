@@ -45,8 +45,33 @@ pub struct Summary {
     pub seconds: f64,
     /// Law evaluations spent by quadrature.
     pub evaluations: usize,
+    /// The explicit population beside the integral, if asked for.
+    pub montecarlo: Option<McSummary>,
     /// The plan's decisions: `what: choice (why)`.
     pub plan: Vec<String>,
+}
+
+/// The Monte Carlo part of a summary.
+#[derive(Debug, Clone, Serialize)]
+pub struct McSummary {
+    /// Summits drawn.
+    pub summits: usize,
+    /// Seed.
+    pub seed: u64,
+    /// Largest approach load of the population (N), scaled to the surface.
+    pub max_load: Option<f64>,
+    /// Its standard error (N).
+    pub max_load_standard_error: Option<f64>,
+    /// Most tensile sampled retraction load (N).
+    pub pull_off_load: Option<f64>,
+    /// The integral's most tensile load at the same sampled separations
+    /// (N), to compare with `pull_off_load`.
+    pub integral_sampled_pull_off_load: Option<f64>,
+    /// Largest deviation from the integral over the curve, in standard
+    /// errors (`< 5` expected when the population follows the model).
+    pub max_abs_z: Option<f64>,
+    /// Wall-clock time of drawing and summing (s).
+    pub seconds: f64,
 }
 
 impl Summary {
@@ -73,6 +98,27 @@ impl Summary {
             rtol: plan.scene.accuracy.rtol,
             seconds: results.seconds,
             evaluations: results.evaluations,
+            montecarlo: results.montecarlo.as_ref().map(|m| {
+                let top = m
+                    .curve
+                    .approach
+                    .iter()
+                    .filter_map(|s| s.load.map(|p| (p, s.standard_error[0])))
+                    .max_by(|a, b| a.0.total_cmp(&b.0));
+                McSummary {
+                    summits: plan.montecarlo.as_ref().map_or(0, |p| p.summits),
+                    seed: plan.montecarlo.as_ref().map_or(0, |p| p.spec.seed),
+                    max_load: top.map(|t| t.0),
+                    max_load_standard_error: top.map(|t| t.1),
+                    pull_off_load: m.pull_off.map(|p| p.load),
+                    integral_sampled_pull_off_load: results
+                        .curve
+                        .sampled_pull_off()
+                        .map(|p| p.load),
+                    max_abs_z: m.max_abs_z,
+                    seconds: m.seconds,
+                }
+            }),
             plan: plan
                 .decisions
                 .iter()
@@ -115,4 +161,49 @@ pub fn curve_csv(results: &Results, plan: &Plan) -> String {
         row("retract", s);
     }
     out
+}
+
+/// The population's curve as CSV: `leg,separation_m,load_N,load_se_N,
+/// area_m2,area_se_m2,count,count_se,z_load,z_area,z_count` (standard
+/// errors and deviations from the integral in standard errors), in the
+/// order of [`curve_csv`].
+pub fn montecarlo_csv(results: &Results) -> Option<String> {
+    let m = results.montecarlo.as_ref()?;
+    let mut out = String::from(
+        "leg,separation_m,load_N,load_se_N,area_m2,area_se_m2,count,count_se,z_load,z_area,z_count\n",
+    );
+    let cell = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v:e}"));
+    let n = m.curve.approach.len();
+    let rows = m
+        .curve
+        .approach
+        .iter()
+        .enumerate()
+        .rev()
+        .map(|(i, s)| ("approach", s, m.z[i]))
+        .chain(
+            m.curve
+                .retract
+                .iter()
+                .enumerate()
+                .map(|(i, s)| ("retract", s, m.z[n + i])),
+        );
+    for (leg, s, z) in rows {
+        let se = |i: usize, x: Option<f64>| cell(x.map(|_| s.standard_error[i]));
+        let _ = writeln!(
+            out,
+            "{leg},{:e},{},{},{},{},{},{},{},{},{}",
+            s.separation,
+            cell(s.load),
+            se(0, s.load),
+            cell(s.area),
+            se(1, s.area),
+            cell(s.count),
+            se(2, s.count),
+            cell(z[0]),
+            cell(z[1]),
+            cell(z[2])
+        );
+    }
+    Some(out)
 }

@@ -139,6 +139,19 @@ impl Scene {
             });
         }
         Allowed::closed(1e-12, 0.1).check("accuracy.rtol", self.accuracy.rtol)?;
+        if let Some(mc) = &self.montecarlo {
+            if let Some(n) = mc.summits {
+                let max = crate::montecarlo::MAX_SUMMITS;
+                if n == 0 || n > max {
+                    return Err(Error::OutOfRange {
+                        name: "montecarlo.summits".into(),
+                        value: n as f64,
+                        allowed: Allowed::closed(1.0, max as f64),
+                    });
+                }
+            }
+            non_negative("montecarlo.radius_log_std", mc.radius_log_std)?;
+        }
         Ok(())
     }
 }

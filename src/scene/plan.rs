@@ -20,7 +20,7 @@
 //! report compare the two to show that skipping pays and costs nothing.
 
 use super::build::{build_contact, build_distribution, build_surface, rename};
-use super::schema::Scene;
+use super::schema::{MonteCarloSpec, Scene};
 use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
 use crate::heights::HeightDistribution;
@@ -28,6 +28,7 @@ use crate::law::errors::LawErrorTable;
 use crate::law::interpolated::InterpolatedLaw;
 use crate::law::{AsperityLaw, LawKind};
 use crate::material::AsperityContact;
+use crate::montecarlo::{PopulationSpec, RadiusSpec, SummitLaw, MAX_SUMMITS};
 use crate::numeric::roots::brent;
 use std::fmt;
 use std::sync::Arc;
@@ -63,6 +64,86 @@ pub struct LawChoice {
     /// The law's measured error against the full Lennard-Jones solution at
     /// this Tabor parameter (relative, from [`LawErrorTable`]), if known.
     pub measured_error: Option<f64>,
+}
+
+/// The Monte Carlo part of a plan.
+#[derive(Debug, Clone)]
+pub struct McPlan {
+    /// The scene's request.
+    pub spec: MonteCarloSpec,
+    /// Summits drawn.
+    pub summits: usize,
+    /// `eta A_n / summits`: totals are multiplied by it.
+    pub factor: f64,
+    /// The per-summit law (the plan's law; rescaled per radius with a
+    /// radius spread).
+    pub law: SummitLaw,
+}
+
+impl McPlan {
+    fn new(
+        spec: &MonteCarloSpec,
+        surface: &RoughSurface,
+        contact: &AsperityContact,
+        law: &LawChoice,
+    ) -> Result<McPlan> {
+        let expected = surface.summits();
+        let summits = match spec.summits {
+            Some(n) => n,
+            None => {
+                if !(expected >= 0.5 && expected <= MAX_SUMMITS as f64) {
+                    return Err(Error::invalid(
+                        "montecarlo.summits",
+                        format!(
+                            "eta A_n = {expected:e} summits is not a population size in 1 ..= {MAX_SUMMITS}; \
+                             give montecarlo.summits"
+                        ),
+                    ));
+                }
+                expected.round() as usize
+            }
+        };
+        let summit_law = if spec.radius_log_std == 0.0 {
+            SummitLaw::fixed(law.law.clone(), contact.radius)?
+        } else {
+            let kind = LawKind::parse(&law.name)
+                .ok()
+                .filter(|k| matches!(k, LawKind::Hertz | LawKind::Dmt | LawKind::Jkr))
+                .ok_or_else(|| {
+                    Error::invalid(
+                        "montecarlo.radius_log_std",
+                        format!(
+                            "a radius spread needs a law that scales with R (hertz, dmt, jkr), not {}",
+                            law.name
+                        ),
+                    )
+                })?;
+            SummitLaw::from_kind(kind, contact)?
+        };
+        Ok(McPlan {
+            spec: *spec,
+            summits,
+            factor: expected / summits as f64,
+            law: summit_law,
+        })
+    }
+
+    /// The population spec (heights scale `sigma`, radii, seed).
+    ///
+    /// # Errors
+    /// Bad values, naming the `montecarlo.` field.
+    pub fn population_spec(&self, surface: &RoughSurface) -> Result<PopulationSpec> {
+        let radius = if self.spec.radius_log_std > 0.0 {
+            RadiusSpec::LogNormal {
+                median: surface.radius,
+                log_std: self.spec.radius_log_std,
+            }
+        } else {
+            RadiusSpec::Fixed(surface.radius)
+        };
+        PopulationSpec::new(self.summits, surface.sigma, radius, self.spec.seed)
+            .map_err(|e| super::build::in_table("montecarlo", e))
+    }
 }
 
 /// Where the approach stops.
@@ -107,6 +188,8 @@ pub struct Plan {
     pub pull_off: bool,
     /// Whether the hysteresis energy is integrated.
     pub hysteresis_energy: bool,
+    /// The explicit random population, when the scene asks for one.
+    pub montecarlo: Option<McPlan>,
     /// The decisions, in order, for printing.
     pub decisions: Vec<Decision>,
 }
@@ -298,9 +381,36 @@ impl Plan {
                 "not asked for in [outputs]".into()
             },
         );
+        let montecarlo = match &scene.montecarlo {
+            Some(spec) => {
+                let mc = McPlan::new(spec, &surface, &contact, &law)?;
+                decide(
+                    "montecarlo",
+                    format!("{} summits, seed {}", mc.summits, spec.seed),
+                    format!(
+                        "drawn from the {} heights{}, summed exactly with each summit's attach/detach \
+                         state; compared point by point with the integral in standard errors{}",
+                        distribution.name(),
+                        if spec.radius_log_std > 0.0 {
+                            format!(", lognormal radii (log std {})", spec.radius_log_std)
+                        } else {
+                            String::new()
+                        },
+                        if mc.factor != 1.0 {
+                            format!("; totals scaled by {:.4} to the whole surface", mc.factor)
+                        } else {
+                            String::new()
+                        }
+                    ),
+                );
+                Some(mc)
+            }
+            None => None,
+        };
         let plan = Plan {
             scene: scene.clone(),
             mode,
+            montecarlo,
             contact,
             surface,
             distribution,

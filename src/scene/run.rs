@@ -1,9 +1,15 @@
 //! Executing a [`Plan`]: the loading program, pull-off and hysteresis energy.
 
-use super::plan::Plan;
+use super::plan::{McPlan, Plan};
 use crate::error::Result;
 use crate::gw::{Curve, GwState, LoadingProgram, PullOff};
+use crate::montecarlo::{McCurve, McState, MonteCarlo, Population};
+use std::sync::Arc;
 use std::time::Instant;
+
+/// Summits in range below which a population state is not compared with
+/// the integral in standard errors.
+pub const MIN_SUMMITS_FOR_Z: usize = 20;
 
 /// Number of retraction samples the pull-off search starts from.
 const PULL_OFF_SAMPLES: usize = 64;
@@ -24,6 +30,72 @@ pub struct Results {
     pub seconds: f64,
     /// Law evaluations spent by quadrature (0 for closed forms).
     pub evaluations: usize,
+    /// The explicit population's curve and its comparison with the
+    /// integral, when the scene asks for one.
+    pub montecarlo: Option<McResults>,
+}
+
+/// A population summed over the program, beside the integral.
+#[derive(Debug, Clone)]
+pub struct McResults {
+    /// The population's curve (totals scaled to the whole surface).
+    pub curve: McCurve,
+    /// Deviation from the integral in standard errors,
+    /// `(x_MC - x_GW)/sqrt(SE^2 + err_GW^2)`, per state and output
+    /// (approach states, then retraction states); `None` where fewer than
+    /// [`MIN_SUMMITS_FOR_Z`] summits are in range.
+    pub z: Vec<[Option<f64>; 3]>,
+    /// Largest `|z|` over the curve and outputs (`|z| < 5` expected when
+    /// the population follows the model).
+    pub max_abs_z: Option<f64>,
+    /// Most tensile sampled retraction load of the population.
+    pub pull_off: Option<PullOff>,
+    /// Wall-clock time of drawing and summing (s).
+    pub seconds: f64,
+}
+
+/// Draws the plan's population and sums it over `program`.
+fn run_montecarlo(plan: &Plan, mc: &McPlan, curve: &Curve) -> Result<McResults> {
+    let t0 = Instant::now();
+    let spec = mc.population_spec(&plan.surface)?;
+    let population = Arc::new(Population::sample(&spec, plan.distribution.as_ref())?);
+    let summer = MonteCarlo::new(population, mc.law.clone())?;
+    let raw = summer.curve(&curve.program, plan.curve_outputs)?;
+    let scale = |v: Vec<McState>| v.iter().map(|s| s.scaled(mc.factor)).collect::<Vec<_>>();
+    let mc_curve = McCurve {
+        program: raw.program,
+        approach: scale(raw.approach),
+        retract: scale(raw.retract),
+    };
+    let z: Vec<[Option<f64>; 3]> = mc_curve
+        .approach
+        .iter()
+        .zip(&curve.approach)
+        .chain(mc_curve.retract.iter().zip(&curve.retract))
+        .map(|(m, g)| {
+            // The standard error means something only with enough summits
+            // in range (central limit); with none in range the sum is an
+            // exact 0 that a tiny expectation cannot be "many errors" from.
+            if m.evaluations >= MIN_SUMMITS_FOR_Z {
+                m.deviation_from(g)
+            } else {
+                [None; 3]
+            }
+        })
+        .collect();
+    let max_abs_z = z
+        .iter()
+        .flatten()
+        .flatten()
+        .map(|v| v.abs())
+        .reduce(f64::max);
+    Ok(McResults {
+        pull_off: mc_curve.sampled_pull_off(),
+        curve: mc_curve,
+        z,
+        max_abs_z,
+        seconds: t0.elapsed().as_secs_f64(),
+    })
 }
 
 impl Results {
@@ -91,12 +163,17 @@ impl Plan {
             .flat_map(|l| l.iter())
             .map(|s| s.evaluations)
             .sum();
+        let montecarlo = match &self.montecarlo {
+            Some(mc) => Some(run_montecarlo(self, mc, &curve)?),
+            None => None,
+        };
         Ok(Results {
             curve,
             pull_off,
             hysteresis_energy,
             seconds: t0.elapsed().as_secs_f64(),
             evaluations,
+            montecarlo,
         })
     }
 }

@@ -31,6 +31,30 @@ pub struct Scene {
     /// Accuracy target (default `rtol = 1e-6`).
     #[serde(default)]
     pub accuracy: AccuracySpec,
+    /// Optional explicit random population, summed exactly beside the
+    /// statistical integral (absent: no Monte Carlo).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub montecarlo: Option<MonteCarloSpec>,
+}
+
+/// `[montecarlo]`: an explicit random population of summits drawn from the
+/// surface's height distribution and summed exactly over the same program.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MonteCarloSpec {
+    /// Summits drawn, >= 1; default `eta A_n` (rounded). Fewer than that
+    /// draws a sub-area and scales the totals up (their standard errors
+    /// then measure the distance to the expectation).
+    #[serde(default)]
+    pub summits: Option<usize>,
+    /// Seed of the population (default 0); sweeps set it per point.
+    #[serde(default)]
+    pub seed: u64,
+    /// Standard deviation of `ln R` (lognormal radii with median
+    /// `surface.radius`), >= 0; default 0 (every summit of radius R, as in
+    /// GW). Not available for Maugis–Dugdale or calibrated laws.
+    #[serde(default)]
+    pub radius_log_std: f64,
 }
 
 /// `[materials]`: Young's moduli (Pa) and Poisson ratios of body 1 (the

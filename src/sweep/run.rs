@@ -57,6 +57,14 @@ fn output_columns(scene: &Scene) -> Vec<&'static str> {
     if o.hysteresis_energy {
         cols.push("hysteresis_energy_J");
     }
+    if scene.montecarlo.is_some() {
+        cols.extend([
+            "mc_max_load_N",
+            "mc_max_load_se_N",
+            "mc_pull_off_N",
+            "mc_max_abs_z",
+        ]);
+    }
     cols
 }
 
@@ -79,8 +87,14 @@ fn point_row(
         for (v, x) in spec.vary.iter().zip(&p.values) {
             set_field(&mut scene_value, &v.path, *x)?;
         }
-        let scene = Scene::deserialize(scene_value)
+        let mut scene = Scene::deserialize(scene_value)
             .map_err(|e| Error::invalid("scene", e.message().to_string()))?;
+        // Each point draws its own population, unless the seed is varied.
+        if let Some(mc) = scene.montecarlo.as_mut() {
+            if !spec.vary.iter().any(|v| v.path == "montecarlo.seed") {
+                mc.seed = p.seed;
+            }
+        }
         scene.validate()?;
         let plan = Plan::new(&scene, PlanMode::Planned)?;
         let results = plan.run()?;
@@ -97,7 +111,14 @@ fn point_row(
                     "max_count" => s.max_count,
                     "pull_off_N" => s.pull_off_load,
                     "pull_off_separation_m" => s.pull_off_separation,
-                    _ => s.hysteresis_energy,
+                    "hysteresis_energy_J" => s.hysteresis_energy,
+                    "mc_max_load_N" => s.montecarlo.as_ref().and_then(|m| m.max_load),
+                    "mc_max_load_se_N" => s
+                        .montecarlo
+                        .as_ref()
+                        .and_then(|m| m.max_load_standard_error),
+                    "mc_pull_off_N" => s.montecarlo.as_ref().and_then(|m| m.pull_off_load),
+                    _ => s.montecarlo.as_ref().and_then(|m| m.max_abs_z),
                 }));
             }
         }

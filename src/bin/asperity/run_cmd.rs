@@ -95,6 +95,24 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
         "  run time           {:.3} s ({} law evaluations)",
         summary.seconds, summary.evaluations
     );
+    if let Some(m) = &summary.montecarlo {
+        println!(
+            "  Monte Carlo        {} summits (seed {}), {:.3} s",
+            m.summits, m.seed, m.seconds
+        );
+        if let (Some(p), Some(se)) = (m.max_load, m.max_load_standard_error) {
+            println!("    max load         {p:.4e} N +- {se:.2e} N (standard error)");
+        }
+        println!(
+            "    sampled pull-off {} (integral at the same separations: {})",
+            show(m.pull_off_load, "N"),
+            show(m.integral_sampled_pull_off_load, "N")
+        );
+        println!(
+            "    worst deviation from the integral: {} standard errors (< 5 expected)",
+            m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))
+        );
+    }
     println!("  wrote:");
     for f in files {
         println!("    {}", f.display());
