@@ -16,7 +16,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 #[non_exhaustive]
 pub enum Error {
     /// A numeric input is NaN, infinite or outside its physical range.
-    #[error("{name} = {value} is out of range: allowed {allowed}")]
+    #[error("{name} = {} is out of range: allowed {allowed}", show(*value))]
     OutOfRange {
         /// The field or argument, e.g. `poisson_ratio` or `surface.sigma`.
         name: String,
@@ -43,6 +43,17 @@ pub enum Error {
         /// Last residual (method-specific norm).
         residual: f64,
     },
+}
+
+/// A value as a person reads it: plain for moderate magnitudes,
+/// scientific (`-5e-9`) otherwise; full precision either way.
+fn show(x: f64) -> String {
+    let a = x.abs();
+    if a == 0.0 || !x.is_finite() || (1e-3..1e6).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
 }
 
 /// An allowed range for a scalar, printed in interval notation.
@@ -137,7 +148,7 @@ impl fmt::Display for Allowed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let l = if self.lo_inclusive { '[' } else { '(' };
         let r = if self.hi_inclusive { ']' } else { ')' };
-        write!(f, "finite, in {l}{}, {}{r}", self.lo, self.hi)
+        write!(f, "finite, in {l}{}, {}{r}", show(self.lo), show(self.hi))
     }
 }
 
@@ -186,6 +197,17 @@ mod tests {
         assert!(s.contains("-1"), "{s}");
         assert!(s.contains("(0, inf)"), "{s}");
         assert_eq!(e.field(), Some("radius"));
+    }
+
+    #[test]
+    fn small_values_print_in_scientific_notation() {
+        let e = positive("surface.sigma", -5e-9).unwrap_err();
+        assert!(
+            e.to_string().contains("surface.sigma = -5e-9 is out"),
+            "{e}"
+        );
+        let e = Allowed::closed(1e-12, 0.1).check("rtol", 0.5).unwrap_err();
+        assert!(e.to_string().contains("[1e-12, 0.1]"), "{e}");
     }
 
     #[test]

@@ -112,6 +112,13 @@ pub struct SweepPoint {
     pub seed: u64,
 }
 
+/// `x` rounded to 15 significant digits, so grid values that are short
+/// decimals print as such (`3.2e-9`, not `3.2000000000000005e-9`); the
+/// change is below 1e-15 relative.
+fn round15(x: f64) -> f64 {
+    format!("{x:.14e}").parse().unwrap_or(x)
+}
+
 /// SplitMix64 finaliser: a well-mixed 64-bit hash.
 pub fn splitmix64(x: u64) -> u64 {
     let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
@@ -190,7 +197,7 @@ impl SweepSpec {
                             } else {
                                 j as f64 / (v.n - 1) as f64
                             };
-                            vals[k] = v.at(t, self.log);
+                            vals[k] = round15(v.at(t, self.log));
                         }
                         vals
                     })
@@ -311,6 +318,14 @@ mod tests {
         assert!((p[1].values[1] - 100.0).abs() < 1e-12);
         assert!((p[3].values[0] - 3f64.sqrt()).abs() < 1e-12);
         assert_ne!(p[0].seed, p[1].seed);
+        let lin = SweepSpec {
+            vary: vec![Vary::parse("s=2e-9:8e-9:6").unwrap()],
+            design: Design::Grid,
+            log: false,
+            seed: 0,
+        };
+        let v: Vec<f64> = lin.points().iter().map(|p| p.values[0]).collect();
+        assert_eq!(v, vec![2e-9, 3.2e-9, 4.4e-9, 5.6e-9, 6.8e-9, 8e-9]);
     }
 
     #[test]
