@@ -161,6 +161,35 @@ impl Error {
         }
     }
 
+    /// The same error about field `name` instead (value, range and reason
+    /// kept); errors without a field are returned unchanged.
+    pub fn renamed(self, name: &str) -> Self {
+        match self {
+            Error::OutOfRange { value, allowed, .. } => Error::OutOfRange {
+                name: name.into(),
+                value,
+                allowed,
+            },
+            Error::Invalid { reason, .. } => Error::Invalid {
+                name: name.into(),
+                reason,
+            },
+            other => other,
+        }
+    }
+
+    /// The same error with its field placed under `table` (`sigma` ->
+    /// `surface.sigma`), so messages point into a scene file.
+    pub fn in_table(self, table: &str) -> Self {
+        match self.field() {
+            Some(f) if !f.starts_with(&format!("{table}.")) => {
+                let name = format!("{table}.{f}");
+                self.renamed(&name)
+            }
+            _ => self,
+        }
+    }
+
     /// The field this error is about, if it names one.
     pub fn field(&self) -> Option<&str> {
         match self {
@@ -197,6 +226,23 @@ mod tests {
         assert!(s.contains("-1"), "{s}");
         assert!(s.contains("(0, inf)"), "{s}");
         assert_eq!(e.field(), Some("radius"));
+    }
+
+    #[test]
+    fn renaming_keeps_value_range_and_reason() {
+        let e = positive("sigma", -1.0).unwrap_err().in_table("surface");
+        assert_eq!(e.field(), Some("surface.sigma"));
+        assert!(e.to_string().contains("-1 is out of range"));
+        // Already in the table: unchanged.
+        assert_eq!(e.clone().in_table("surface"), e);
+        let e = Error::invalid("law", "unknown").renamed("law.kind");
+        assert_eq!(e.to_string(), "law.kind: unknown");
+        let n = Error::NoConvergence {
+            what: "x".into(),
+            iterations: 1,
+            residual: 0.0,
+        };
+        assert_eq!(n.clone().renamed("y"), n);
     }
 
     #[test]

@@ -101,7 +101,8 @@ pub struct DistributionParams {
 /// [`Error::Invalid`] for an unknown name or a missing parameter;
 /// the constructor's error (renamed to the scene field) for a bad one.
 pub fn by_name(name: &str, params: &DistributionParams) -> Result<Arc<dyn HeightDistribution>> {
-    let field = |e: Error, f: &str| rename(e, f);
+    // `heights[3]` -> `surface.heights[3]`, for the field's table.
+    let field = |e: Error, f: &str| e.in_table(f.rsplit_once('.').map_or("", |(p, _)| p));
     let missing = |f: &str| {
         Error::invalid(
             format!("surface.{f}"),
@@ -135,26 +136,4 @@ pub fn by_name(name: &str, params: &DistributionParams) -> Result<Arc<dyn Height
             ))
         }
     })
-}
-
-/// Prefixes the error's field with the scene path (`heights[3]` ->
-/// `surface.heights[3]`).
-fn rename(e: Error, field: &str) -> Error {
-    let prefix = field.rsplit_once('.').map_or("", |(p, _)| p);
-    match e {
-        Error::OutOfRange {
-            name,
-            value,
-            allowed,
-        } => Error::OutOfRange {
-            name: format!("{prefix}.{name}"),
-            value,
-            allowed,
-        },
-        Error::Invalid { name, reason } => Error::Invalid {
-            name: format!("{prefix}.{name}"),
-            reason,
-        },
-        other => other,
-    }
 }

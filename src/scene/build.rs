@@ -7,27 +7,6 @@ use crate::heights::HeightDistribution;
 use crate::material::{contact_modulus, Adhesion, AsperityContact, Material};
 use std::sync::Arc;
 
-/// Prefixes the field of an error with the scene table (`radius` ->
-/// `surface.radius`), so messages point into the file.
-pub(crate) fn in_table(table: &str, e: Error) -> Error {
-    match e {
-        Error::OutOfRange {
-            name,
-            value,
-            allowed,
-        } => Error::OutOfRange {
-            name: format!("{table}.{name}"),
-            value,
-            allowed,
-        },
-        Error::Invalid { name, reason } => Error::Invalid {
-            name: format!("{table}.{name}"),
-            reason,
-        },
-        other => other,
-    }
-}
-
 /// The asperity contact: summit radius, contact modulus of the two
 /// materials, adhesion.
 ///
@@ -39,11 +18,11 @@ pub fn build_contact(scene: &Scene) -> Result<AsperityContact> {
     let b2 = Material::new(m.e2, m.nu2).map_err(|e| field(e, "materials.e2", "materials.nu2"))?;
     let adhesion =
         Adhesion::new(scene.adhesion.w, scene.adhesion.z0).map_err(|e| match e.field() {
-            Some("work_of_adhesion") => rename(e, "adhesion.w"),
-            _ => rename(e, "adhesion.z0"),
+            Some("work_of_adhesion") => e.renamed("adhesion.w"),
+            _ => e.renamed("adhesion.z0"),
         })?;
     AsperityContact::new(scene.surface.radius, contact_modulus(&b1, &b2), adhesion)
-        .map_err(|e| in_table("surface", e))
+        .map_err(|e| e.in_table("surface"))
 }
 
 /// The surface statistics. For `distribution = "empirical"` the height
@@ -56,12 +35,11 @@ pub fn build_surface(scene: &Scene) -> Result<RoughSurface> {
     let s = &scene.surface;
     let sigma = match (s.distribution.as_str(), &s.heights) {
         ("empirical", Some(h)) => crate::heights::Empirical::new(h)
-            .map_err(|e| in_table("surface", e))?
+            .map_err(|e| e.in_table("surface"))?
             .std_m(),
         _ => s.sigma,
     };
-    RoughSurface::new(s.density, s.radius, sigma, s.nominal_area)
-        .map_err(|e| in_table("surface", e))
+    RoughSurface::new(s.density, s.radius, sigma, s.nominal_area).map_err(|e| e.in_table("surface"))
 }
 
 /// The standardised height distribution named by `surface.distribution`.
@@ -74,34 +52,12 @@ pub fn build_distribution(spec: &SurfaceSpec) -> Result<Arc<dyn HeightDistributi
         truncation: spec.truncation,
         heights: spec.heights.clone(),
     };
-    crate::heights::by_name(&spec.distribution, &params).map_err(|e| {
-        if e.field().is_some_and(|f| f.starts_with("surface.")) {
-            e
-        } else {
-            in_table("surface", e)
-        }
-    })
+    crate::heights::by_name(&spec.distribution, &params).map_err(|e| e.in_table("surface"))
 }
 
 fn field(e: Error, modulus: &str, poisson: &str) -> Error {
     match e.field() {
-        Some("youngs_modulus") => rename(e, modulus),
-        _ => rename(e, poisson),
-    }
-}
-
-/// The same error, naming `name` instead.
-pub(crate) fn rename(e: Error, name: &str) -> Error {
-    match e {
-        Error::OutOfRange { value, allowed, .. } => Error::OutOfRange {
-            name: name.into(),
-            value,
-            allowed,
-        },
-        Error::Invalid { reason, .. } => Error::Invalid {
-            name: name.into(),
-            reason,
-        },
-        other => other,
+        Some("youngs_modulus") => e.renamed(modulus),
+        _ => e.renamed(poisson),
     }
 }

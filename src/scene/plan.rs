@@ -19,7 +19,7 @@
 //! [`PlanMode::EverythingOn`] switches every skip off; the tests and the
 //! report compare the two to show that skipping pays and costs nothing.
 
-use super::build::{build_contact, build_distribution, build_surface, rename};
+use super::build::{build_contact, build_distribution, build_surface};
 use super::schema::{MonteCarloSpec, Scene};
 use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
@@ -142,7 +142,7 @@ impl McPlan {
             RadiusSpec::Fixed(surface.radius)
         };
         PopulationSpec::new(self.summits, surface.sigma, radius, self.spec.seed)
-            .map_err(|e| super::build::in_table("montecarlo", e))
+            .map_err(|e| e.in_table("montecarlo"))
     }
 }
 
@@ -235,7 +235,7 @@ impl Plan {
             _ => Method::Quadrature,
         };
         let accuracy = Accuracy::new(rtol)
-            .map_err(|e| rename(e, "accuracy.rtol"))?
+            .map_err(|e| e.renamed("accuracy.rtol"))?
             .with_method(method);
         let how = if method == Method::Auto {
             (
@@ -608,7 +608,7 @@ fn choose_law(
             }
         }
     } else {
-        let k = LawKind::parse(kind_name).map_err(|e| rename(e, "law.kind"))?;
+        let k = LawKind::parse(kind_name).map_err(|e| e.renamed("law.kind"))?;
         (k, "given in the scene".to_string())
     };
     let law: Arc<dyn AsperityLaw> = Arc::from(kind.build(contact)?);
