@@ -144,6 +144,56 @@ impl Calibration {
         })
     }
 
+    /// The Maugis–Dugdale `lambda` that best reproduces this calibration:
+    /// the minimiser of the worst load error on the attached branch,
+    /// `max_i |Pbar_MD(Dbar_i) - Pbar_i| / (1 + |Pbar_i|)` over the table's
+    /// attached points with `Pbar_i <= max_load_bar` (the measure of
+    /// [`crate::law::errors`]), found by golden-section search in
+    /// `ln lambda` over `[1e-3, 1e3]` to `1e-6` relative. Returns
+    /// `(lambda, worst error)`; compare with `lambda_equivalent`
+    /// (`1.1570 mu`, the Dugdale stress matched to Lennard-Jones).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `max_load_bar` unless it is finite and
+    /// above the pull-off.
+    pub fn best_fit_lambda(&self, max_load_bar: f64) -> Result<(f64, f64)> {
+        use crate::law::{Branch, MaugisCurve};
+        crate::error::Allowed::open(self.table.pull_off.load_bar, f64::INFINITY)
+            .check("max_load_bar", max_load_bar)?;
+        let a = &self.table.attached;
+        let pts: Vec<(f64, f64)> = a
+            .interference_bar
+            .iter()
+            .zip(&a.load_bar)
+            .filter(|(_, &p)| p <= max_load_bar)
+            .map(|(&d, &p)| (d, p))
+            .collect();
+        let worst = |ln_lambda: f64| -> f64 {
+            match MaugisCurve::new(ln_lambda.exp()) {
+                Ok(md) => pts
+                    .iter()
+                    .map(|&(d, p)| (md.state_bar(d, Branch::Retract).1 - p).abs() / (1.0 + p.abs()))
+                    .fold(0.0, f64::max),
+                Err(_) => f64::INFINITY,
+            }
+        };
+        // A coarse scan first (the worst-error curve need not be unimodal
+        // over six decades), then golden section around the best node.
+        let (lo, hi, n) = (1e-3f64.ln(), 1e3f64.ln(), 48);
+        let step = (hi - lo) / n as f64;
+        let best = (0..=n)
+            .map(|i| lo + step * i as f64)
+            .min_by(|a, b| worst(*a).total_cmp(&worst(*b)))
+            .unwrap_or(0.0);
+        let (x, e) = crate::numeric::roots::golden_min(
+            worst,
+            (best - step).max(lo),
+            (best + step).min(hi),
+            1e-6,
+        );
+        Ok((x.exp(), e))
+    }
+
     /// The calibrated law for radius `R` (m), contact modulus `E*` (Pa) and
     /// work of adhesion `w` (J/m^2). The caller keeps `mu` consistent.
     ///

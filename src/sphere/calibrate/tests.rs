@@ -132,3 +132,41 @@ fn one_table_serves_every_contact() {
         }
     }
 }
+
+#[test]
+fn best_fit_lambda_beats_the_matched_dugdale_stress() {
+    let c = Calibration::compute(&problem()).unwrap();
+    let (lambda, err) = c.best_fit_lambda(4.0).unwrap();
+    // The error at the fitted lambda is no worse than at 1.1570 mu, or at
+    // twice or half the fitted value.
+    let at = |l: f64| {
+        let md = crate::law::MaugisCurve::new(l).unwrap();
+        c.table
+            .attached
+            .interference_bar
+            .iter()
+            .zip(&c.table.attached.load_bar)
+            .filter(|(_, &p)| p <= 4.0)
+            .map(|(&d, &p)| {
+                (md.state_bar(d, crate::law::Branch::Retract).1 - p).abs() / (1.0 + p.abs())
+            })
+            .fold(0.0, f64::max)
+    };
+    assert!((at(lambda) - err).abs() < 1e-12);
+    for other in [c.lambda_equivalent, 2.0 * lambda, 0.5 * lambda] {
+        assert!(
+            err <= at(other),
+            "lambda {lambda} ({err}) vs {other} ({})",
+            at(other)
+        );
+    }
+    assert!(
+        lambda > 0.1 * c.mu && lambda < 10.0 * c.mu,
+        "{lambda} at mu {}",
+        c.mu
+    );
+    assert_eq!(
+        c.best_fit_lambda(-10.0).unwrap_err().field(),
+        Some("max_load_bar")
+    );
+}
