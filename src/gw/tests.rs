@@ -1,60 +1,19 @@
-//! Machinery checks with a minimal exponential distribution whose `F_n` is
-//! exact (`Gamma(n+1) e^-h`, h >= 0); the full distributions are tested in
+//! Machinery checks on GW's exponential heights, whose `F_n` is exact
+//! (`Gamma(n+1) e^-h`, h >= 0); the full distributions are tested in
 //! `tests/`.
 
 use super::*;
-use crate::heights::HeightDistribution;
+use crate::heights::Exponential;
 use crate::law::{AsperityLaw, Hertz, Jkr};
 use std::sync::Arc;
 
-#[derive(Debug)]
-struct Exp;
-
-fn gamma_plus_one(n: f64) -> f64 {
-    // Exact for the n used here.
-    if n == 0.0 || n == 1.0 {
-        1.0
-    } else if n == 1.5 {
-        0.75 * std::f64::consts::PI.sqrt()
-    } else {
-        f64::NAN
-    }
-}
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "test-exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    fn moment_above(&self, n: f64, h: f64) -> f64 {
-        assert!(h >= 0.0);
-        gamma_plus_one(n) * (-h).exp()
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(1.0 - p).ln()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-    fn closed_form_moment(&self, n: f64) -> bool {
-        gamma_plus_one(n).is_finite()
-    }
-}
-
 fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
-    GwModel::new(RoughSurface::gold_microswitch(), Arc::new(Exp), law).unwrap()
+    GwModel::new(
+        RoughSurface::gold_microswitch(),
+        Arc::new(Exponential::new()),
+        law,
+    )
+    .unwrap()
 }
 
 #[test]
@@ -144,7 +103,7 @@ fn bad_inputs_are_rejected() {
     assert_eq!(Accuracy::new(0.5).unwrap_err().field(), Some("rel_tol"));
     assert_eq!(Accuracy::new(1e-16).unwrap_err().field(), Some("rel_tol"));
     let bradley = crate::law::Bradley::new(s.radius, 0.5, 3e-10).unwrap();
-    let e = GwModel::new(s, Arc::new(Exp), Arc::new(bradley)).unwrap_err();
+    let e = GwModel::new(s, Arc::new(Exponential::new()), Arc::new(bradley)).unwrap_err();
     assert_eq!(e.field(), Some("law"));
 }
 
