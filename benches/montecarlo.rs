@@ -7,45 +7,12 @@
 //!   (500 separations per leg).
 //! - `mc_sample/*`: drawing the population.
 use asperity::gw::{History, LoadingProgram, Outputs};
-use asperity::heights::HeightDistribution;
+use asperity::heights::Exponential;
 use asperity::law::{Hertz, Jkr};
 use asperity::montecarlo::*;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::hint::black_box;
 use std::sync::Arc;
-
-/// GW's exponential heights `phi(s) = e^-s` (a stand-in until the crate's
-/// own distributions land; only the quantile is used).
-#[derive(Debug)]
-struct Exp;
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    fn moment_above(&self, _n: f64, _h: f64) -> f64 {
-        f64::NAN
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(-p).ln_1p()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-}
 
 const R: f64 = 1e-6;
 const SIGMA: f64 = 5e-9;
@@ -87,10 +54,13 @@ fn populations() -> Vec<(&'static str, Arc<Population>)> {
     )
     .unwrap();
     vec![
-        ("fixed", Arc::new(Population::sample(&fixed, &Exp).unwrap())),
+        (
+            "fixed",
+            Arc::new(Population::sample(&fixed, &Exponential::new()).unwrap()),
+        ),
         (
             "lognormal",
-            Arc::new(Population::sample(&logn, &Exp).unwrap()),
+            Arc::new(Population::sample(&logn, &Exponential::new()).unwrap()),
         ),
     ]
 }
@@ -150,7 +120,7 @@ fn bench_sample(c: &mut Criterion) {
     ] {
         let spec = PopulationSpec::new(N, SIGMA, radius, 1).unwrap();
         group.bench_function(name, |b| {
-            b.iter(|| black_box(Population::sample(&spec, &Exp).unwrap()))
+            b.iter(|| black_box(Population::sample(&spec, &Exponential::new()).unwrap()))
         });
     }
     group.finish();

@@ -7,44 +7,11 @@
 //! with the statistical integral in units of its standard error; then shows
 //! what GW cannot do (lognormal radii) and times a 1e6-summit program.
 use asperity::gw::{Accuracy, GwModel, History, LoadingProgram, Outputs, RoughSurface};
-use asperity::heights::HeightDistribution;
+use asperity::heights::Exponential;
 use asperity::law::{AsperityLaw, Hertz, Jkr};
 use asperity::montecarlo::*;
 use std::sync::Arc;
 use std::time::Instant;
-
-/// GW's exponential heights `phi(s) = e^-s`, s >= 0 (a stand-in until the
-/// crate's own distributions land). `F_n` by quadrature.
-#[derive(Debug)]
-struct Exp;
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    fn moment_above(&self, _n: f64, _h: f64) -> f64 {
-        f64::NAN
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(-p).ln_1p()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-}
 
 fn main() -> asperity::Result<()> {
     let (r, sigma, e_star, w) = (1e-6, 5e-9, 4.8e10, 0.5);
@@ -62,7 +29,7 @@ fn main() -> asperity::Result<()> {
     ];
     for n in [100usize, 10_000, 1_000_000] {
         let spec = PopulationSpec::new(n, sigma, RadiusSpec::Fixed(r), 2024)?;
-        let pop = Arc::new(Population::sample(&spec, &Exp)?);
+        let pop = Arc::new(Population::sample(&spec, &Exponential::new())?);
         for (name, law) in &laws {
             let mc = MonteCarlo::new(
                 pop.clone(),
@@ -70,7 +37,7 @@ fn main() -> asperity::Result<()> {
             )?;
             let gw = GwModel::new(
                 RoughSurface::new(n as f64, r, sigma, 1.0)?,
-                Arc::new(Exp),
+                Arc::new(Exponential::new()),
                 law.clone(),
             )?;
             let history = History::Retract { closest: -sigma };
@@ -95,13 +62,13 @@ fn main() -> asperity::Result<()> {
         },
         7,
     )?;
-    let pop = Arc::new(Population::sample(&spec, &Exp)?);
+    let pop = Arc::new(Population::sample(&spec, &Exponential::new())?);
     let hertz = SummitLaw::scaled(laws[0].1.clone(), r, RadiusScaling::MAUGIS)?;
     let mc = MonteCarlo::new(pop, hertz)?;
     let m = mc.state(d, History::Approach, Outputs::ALL)?;
     let gw = GwModel::new(
         RoughSurface::new(1e6, r, sigma, 1.0)?,
-        Arc::new(Exp),
+        Arc::new(Exponential::new()),
         laws[0].1.clone(),
     )?;
     let g = gw.state(d, History::Approach, Outputs::ALL, &acc)?;
@@ -123,7 +90,7 @@ fn main() -> asperity::Result<()> {
     ] {
         let spec = PopulationSpec::new(n, sigma, RadiusSpec::Fixed(r), 1)?;
         let t0 = Instant::now();
-        let pop = Arc::new(Population::sample(&spec, &Exp)?);
+        let pop = Arc::new(Population::sample(&spec, &Exponential::new())?);
         let t_sample = t0.elapsed();
         let mc = MonteCarlo::new(pop, SummitLaw::scaled(law, r, RadiusScaling::MAUGIS)?)?;
         let t1 = Instant::now();

@@ -11,41 +11,10 @@
 //! sqrt(N) (constant when the error falls like N^-1/2), and the RMS of the
 //! z-scores (about 1 when the reported SE is right).
 use asperity::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
-use asperity::heights::HeightDistribution;
+use asperity::heights::Exponential;
 use asperity::law::{AsperityLaw, Hertz, Jkr};
 use asperity::montecarlo::*;
 use std::sync::Arc;
-
-#[derive(Debug)]
-struct Exp;
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    fn moment_above(&self, _n: f64, _h: f64) -> f64 {
-        f64::NAN
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(-p).ln_1p()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-}
 
 fn main() -> asperity::Result<()> {
     let (r, sigma) = (1e-6, 5e-9);
@@ -73,14 +42,14 @@ fn main() -> asperity::Result<()> {
         ] {
             let gw = GwModel::new(
                 RoughSurface::new(n as f64, r, sigma, 1.0)?,
-                Arc::new(Exp),
+                Arc::new(Exponential::new()),
                 law.clone(),
             )?;
             let expect = gw.state(d, *history, Outputs::LOAD, &acc)?.load.unwrap();
             let (mut m, mut sq, mut se, mut z2) = (0.0, 0.0, 0.0, 0.0);
             for seed in 0..seeds {
                 let spec = PopulationSpec::new(n, sigma, RadiusSpec::Fixed(r), seed)?;
-                let pop = Arc::new(Population::sample(&spec, &Exp)?);
+                let pop = Arc::new(Population::sample(&spec, &Exponential::new())?);
                 let mc = MonteCarlo::new(
                     pop,
                     SummitLaw::scaled(law.clone(), r, RadiusScaling::MAUGIS)?,

@@ -5,38 +5,16 @@
 
 use asperity::heights::{Gaussian, HeightDistribution};
 use asperity::special::{gamma, gaussian_fn, normal};
-use serde_json::Value;
 
-fn data() -> Value {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/gaussian_fn.json"
-    ))
-    .unwrap();
-    serde_json::from_str(&text).unwrap()
-}
-
-fn num(v: &Value) -> f64 {
-    match v {
-        Value::String(s) => s.parse().unwrap(),
-        other => other.as_f64().unwrap(),
-    }
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
-}
+mod common;
+use common::{local, num, rel, shared};
 
 /// The promise: relative error <= 1e-13 on [-5, 10], <= 1e-10 to h = 37.
 /// Measured (this implementation): ~1e-15 and ~1e-14; the asserted bounds
 /// are the promise itself.
 #[test]
 fn closed_forms_match_mpmath() {
-    let d = data();
+    let d = local("gaussian_fn.json");
     let g = Gaussian::new();
     for (n_str, rows) in d["F"].as_object().unwrap() {
         let n: f64 = n_str.parse().unwrap();
@@ -68,11 +46,10 @@ fn closed_forms_match_mpmath() {
 
 #[test]
 fn matches_shared_reference_if_present() {
-    let Ok(text) = std::fs::read_to_string("/work/shared/reference/gw_gaussian_Fn.json") else {
+    let Some(d) = shared("gw_gaussian_Fn.json") else {
         eprintln!("shared reference not present; skipped");
         return;
     };
-    let d: Value = serde_json::from_str(&text).unwrap();
     let mut worst = 0.0_f64;
     let mut count = 0;
     for (n_str, rows) in d["table"].as_object().unwrap() {
@@ -93,7 +70,7 @@ fn matches_shared_reference_if_present() {
 
 #[test]
 fn tail_and_erfc_match_mpmath() {
-    let d = data();
+    let d = local("gaussian_fn.json");
     let mut worst_q = 0.0_f64;
     for row in d["F"]["0"].as_array().unwrap() {
         let h = row["h"].as_f64().unwrap();
@@ -124,7 +101,7 @@ fn tail_and_erfc_match_mpmath() {
 
 #[test]
 fn gamma_matches_mpmath() {
-    let d = data();
+    let d = local("gaussian_fn.json");
     let mut worst = 0.0_f64;
     for row in d["gamma"].as_array().unwrap() {
         let x = row["x"].as_f64().unwrap();
@@ -141,7 +118,7 @@ fn gamma_matches_mpmath() {
 
 #[test]
 fn normal_quantile_matches_mpmath() {
-    let d = data();
+    let d = local("gaussian_fn.json");
     for row in d["normal_quantile"].as_array().unwrap() {
         let p = row["p"].as_f64().unwrap();
         let exact = num(&row["quantile"]);

@@ -7,30 +7,9 @@ use asperity::heights::{
     TruncatedGaussian, Weibull,
 };
 use proptest::prelude::*;
-use serde_json::Value;
 
-fn json(path: &str) -> Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
-}
-
-fn local(name: &str) -> Value {
-    json(&format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR")))
-}
-
-fn num(v: &Value) -> f64 {
-    match v {
-        Value::String(s) => s.parse().unwrap(),
-        other => other.as_f64().unwrap(),
-    }
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
-}
+mod common;
+use common::{local, num, rel, shared};
 
 #[test]
 fn exponential_matches_mpmath_and_shared_reference() {
@@ -44,8 +23,7 @@ fn exponential_matches_mpmath_and_shared_reference() {
     println!("exponential vs mpmath: max rel err {worst:.2e}");
     // Closed forms ~1e-15; the quadrature fallback (n = 0.3, 3 is integer) 1e-13.
     assert!(worst < 1e-12, "{worst:e}");
-    if let Ok(text) = std::fs::read_to_string("/work/shared/reference/gw_exponential_Fn.json") {
-        let d: Value = serde_json::from_str(&text).unwrap();
+    if let Some(d) = shared("gw_exponential_Fn.json") {
         let mut worst = 0.0_f64;
         for (n, rows) in d["table"].as_object().unwrap() {
             let n: f64 = n.parse().unwrap();

@@ -3,44 +3,17 @@
 //! converge on both branches, retraction is more tensile than approach, and
 //! large lambda reproduces JKR asperities (Fuller–Tabor).
 use asperity::gw::{Accuracy, GwModel, LoadingProgram, Outputs, RoughSurface};
-use asperity::heights::HeightDistribution;
+use asperity::heights::Exponential;
 use asperity::law::{AsperityLaw, Jkr, Maugis};
 use std::sync::Arc;
 
-/// Exponential summit heights `phi(s) = exp(-s)`, `s >= 0`.
-#[derive(Debug)]
-struct Exp;
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "test-exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    fn moment_above(&self, _n: f64, _h: f64) -> f64 {
-        f64::NAN
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(1.0 - p).ln()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-}
-
 fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
-    GwModel::new(RoughSurface::gold_microswitch(), Arc::new(Exp), law).unwrap()
+    GwModel::new(
+        RoughSurface::gold_microswitch(),
+        Arc::new(Exponential::new()),
+        law,
+    )
+    .unwrap()
 }
 
 #[test]

@@ -1,53 +1,10 @@
 //! A law calibrated from the full LJ sphere solver (mu = 1) runs through the
 //! Greenwood–Williamson integrator with the same API as the analytic laws.
 use asperity::gw::{Accuracy, GwModel, LoadingProgram, Outputs, RoughSurface};
-use asperity::heights::HeightDistribution;
+use asperity::heights::Exponential;
 use asperity::law::{AsperityLaw, Jkr};
 use asperity::sphere::{CalibrationCache, Shape, SolverOptions, SphereProblem};
 use std::sync::Arc;
-
-/// Minimal exponential heights (copied from src/gw/tests.rs).
-#[derive(Debug)]
-struct Exp;
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "test-exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    fn moment_above(&self, n: f64, h: f64) -> f64 {
-        assert!(h >= 0.0);
-        let g = if n == 0.0 || n == 1.0 {
-            1.0
-        } else if n == 1.5 {
-            0.75 * std::f64::consts::PI.sqrt()
-        } else {
-            f64::NAN
-        };
-        g * (-h).exp()
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(1.0 - p).ln()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-    fn closed_form_moment(&self, n: f64) -> bool {
-        n == 0.0 || n == 1.0 || n == 1.5
-    }
-}
 
 #[test]
 fn calibrated_law_in_gw_model() {
@@ -67,7 +24,7 @@ fn calibrated_law_in_gw_model() {
     let program = LoadingProgram::new(8.0 * s.sigma, 0.5 * s.sigma, 30).unwrap();
     let mut pulls = vec![];
     for law in laws {
-        let m = GwModel::new(s, Arc::new(Exp), law.clone()).unwrap();
+        let m = GwModel::new(s, Arc::new(Exponential::new()), law.clone()).unwrap();
         let c = m.curve(&program, Outputs::ALL, &acc).unwrap();
         for (a, r) in c.approach.iter().zip(&c.retract) {
             let tol = a.error[0] + r.error[0] + 1e-12 * a.load.unwrap().abs();

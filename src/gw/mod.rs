@@ -15,6 +15,7 @@ mod program;
 mod surface;
 
 pub use model::{Accuracy, GwModel, GwState, History, Method, MethodUsed, Outputs};
+pub(crate) use program::{hysteresis_energy, most_tensile};
 pub use program::{Curve, LoadingProgram, PullOff};
 pub use surface::RoughSurface;
 

@@ -79,26 +79,54 @@ impl Curve {
     /// program, trapezoidal on the program's separations (error
     /// `O(step^2)`); `None` if loads were not computed.
     pub fn hysteresis_energy(&self) -> Option<f64> {
-        let mut w = 0.0;
-        for i in 1..self.approach.len() {
-            let d0 = self.approach[i - 1].separation;
-            let d1 = self.approach[i].separation;
-            let g0 = self.approach[i - 1].load? - self.retract[i - 1].load?;
-            let g1 = self.approach[i].load? - self.retract[i].load?;
-            w += 0.5 * (g0 + g1) * (d1 - d0);
-        }
-        Some(w)
+        hysteresis_energy(
+            self.approach
+                .iter()
+                .enumerate()
+                .map(|(i, a)| (a.separation, a.load, self.retract[i].load)),
+        )
     }
 
     /// The most tensile sampled retraction load, if any is tensile.
     pub fn sampled_pull_off(&self) -> Option<PullOff> {
-        self.retract
-            .iter()
-            .filter_map(|s| s.load.map(|p| (p, s.separation)))
-            .filter(|&(p, _)| p < 0.0)
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(load, separation)| PullOff { load, separation })
+        most_tensile(self.retract.iter().map(|s| (s.load, s.separation)))
     }
+}
+
+/// Energy lost per cycle (J) over `(separation, approach load, retraction
+/// load)` points ascending in separation: trapezoidal
+/// `int (P_approach - P_retract) dd` (error `O(step^2)`). `None` when a
+/// load the rule needs is missing. Shared by [`Curve`] and
+/// [`McCurve`](crate::montecarlo::McCurve).
+pub(crate) fn hysteresis_energy(
+    points: impl IntoIterator<Item = (f64, Option<f64>, Option<f64>)>,
+) -> Option<f64> {
+    let mut points = points.into_iter();
+    let Some(mut prev) = points.next() else {
+        return Some(0.0);
+    };
+    let mut w = 0.0;
+    for p in points {
+        let g0 = prev.1? - prev.2?;
+        let g1 = p.1? - p.2?;
+        w += 0.5 * (g0 + g1) * (p.0 - prev.0);
+        prev = p;
+    }
+    Some(w)
+}
+
+/// The most tensile (most negative) of `(load, separation)` samples, if any
+/// load is tensile; missing loads are skipped. Shared by [`Curve`] and
+/// [`McCurve`](crate::montecarlo::McCurve).
+pub(crate) fn most_tensile(
+    samples: impl IntoIterator<Item = (Option<f64>, f64)>,
+) -> Option<PullOff> {
+    samples
+        .into_iter()
+        .filter_map(|(load, separation)| load.map(|p| (p, separation)))
+        .filter(|&(p, _)| p < 0.0)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(load, separation)| PullOff { load, separation })
 }
 
 impl GwModel {
@@ -208,5 +236,39 @@ mod tests {
             Some("points")
         );
         assert!(LoadingProgram::new(f64::NAN, 1.0, 5).is_err());
+    }
+
+    #[test]
+    fn most_tensile_skips_missing_and_compressive_loads() {
+        let samples = [
+            (Some(1.0), 0.0),
+            (None, 1.0),
+            (Some(-2.0), 2.0),
+            (Some(-3.0), 3.0),
+            (Some(-1.0), 4.0),
+        ];
+        assert_eq!(
+            most_tensile(samples),
+            Some(PullOff {
+                load: -3.0,
+                separation: 3.0
+            })
+        );
+        assert_eq!(most_tensile([(Some(0.0), 0.0), (None, 1.0)]), None);
+        assert_eq!(most_tensile([]), None);
+    }
+
+    #[test]
+    fn hysteresis_energy_is_the_trapezoidal_gap() {
+        // Gap 0, 2, 2 over steps 1 and 2: 0.5 (0 + 2) 1 + 0.5 (2 + 2) 2 = 5.
+        let pts = [
+            (0.0, Some(1.0), Some(1.0)),
+            (1.0, Some(0.0), Some(-2.0)),
+            (3.0, Some(1.0), Some(-1.0)),
+        ];
+        assert_eq!(hysteresis_energy(pts), Some(5.0));
+        assert_eq!(hysteresis_energy([]), Some(0.0));
+        let missing = [(0.0, Some(1.0), Some(1.0)), (1.0, Some(0.0), None)];
+        assert_eq!(hysteresis_energy(missing), None);
     }
 }

@@ -1,60 +1,20 @@
-//! Machinery checks with a minimal exponential distribution whose `F_n` is
-//! exact (`Gamma(n+1) e^-h`, h >= 0); the full distributions are tested in
-//! `tests/`.
+//! Machinery checks on GW's exponential heights, whose `F_n` is exact
+//! (`Gamma(n+1) e^-h`, h >= 0); the full distributions, and the
+//! exponential's constant load/area/count ratios, are tested in `tests/`
+//! (`gw_closed_forms.rs`).
 
 use super::*;
-use crate::heights::HeightDistribution;
+use crate::heights::Exponential;
 use crate::law::{AsperityLaw, Hertz, Jkr};
 use std::sync::Arc;
 
-#[derive(Debug)]
-struct Exp;
-
-fn gamma_plus_one(n: f64) -> f64 {
-    // Exact for the n used here.
-    if n == 0.0 || n == 1.0 {
-        1.0
-    } else if n == 1.5 {
-        0.75 * std::f64::consts::PI.sqrt()
-    } else {
-        f64::NAN
-    }
-}
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "test-exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    fn moment_above(&self, n: f64, h: f64) -> f64 {
-        assert!(h >= 0.0);
-        gamma_plus_one(n) * (-h).exp()
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(1.0 - p).ln()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-    fn closed_form_moment(&self, n: f64) -> bool {
-        gamma_plus_one(n).is_finite()
-    }
-}
-
 fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
-    GwModel::new(RoughSurface::gold_microswitch(), Arc::new(Exp), law).unwrap()
+    GwModel::new(
+        RoughSurface::gold_microswitch(),
+        Arc::new(Exponential::new()),
+        law,
+    )
+    .unwrap()
 }
 
 #[test]
@@ -87,25 +47,6 @@ fn quadrature_reproduces_closed_form_for_hertz() {
                 );
             }
         }
-    }
-}
-
-#[test]
-fn exponential_hertz_ratios_are_constant() {
-    let s = RoughSurface::gold_microswitch();
-    let m = model(Arc::new(Hertz::new(s.radius, 4.8e10).unwrap()));
-    let acc = Accuracy::new(1e-12).unwrap();
-    let r0 = m.state(0.0, History::Approach, Outputs::ALL, &acc).unwrap();
-    for h in [0.3, 1.0, 4.0, 20.0] {
-        let r = m
-            .state(h * s.sigma, History::Approach, Outputs::ALL, &acc)
-            .unwrap();
-        let q0 = r0.load.unwrap() / r0.area.unwrap();
-        let q = r.load.unwrap() / r.area.unwrap();
-        assert!((q / q0 - 1.0).abs() < 1e-12);
-        let c0 = r0.load.unwrap() / r0.count.unwrap();
-        let c = r.load.unwrap() / r.count.unwrap();
-        assert!((c / c0 - 1.0).abs() < 1e-12);
     }
 }
 
@@ -144,7 +85,7 @@ fn bad_inputs_are_rejected() {
     assert_eq!(Accuracy::new(0.5).unwrap_err().field(), Some("rel_tol"));
     assert_eq!(Accuracy::new(1e-16).unwrap_err().field(), Some("rel_tol"));
     let bradley = crate::law::Bradley::new(s.radius, 0.5, 3e-10).unwrap();
-    let e = GwModel::new(s, Arc::new(Exp), Arc::new(bradley)).unwrap_err();
+    let e = GwModel::new(s, Arc::new(Exponential::new()), Arc::new(bradley)).unwrap_err();
     assert_eq!(e.field(), Some("law"));
 }
 

@@ -28,21 +28,12 @@
 //!
 //! ```
 //! use asperity::gw::{History, Outputs};
+//! use asperity::heights::Exponential;
 //! use asperity::law::Hertz;
 //! use asperity::montecarlo::*;
 //! use std::sync::Arc;
-//! # #[derive(Debug)] struct Exp;
-//! # impl asperity::heights::HeightDistribution for Exp {
-//! #   fn name(&self) -> &'static str { "exp" }
-//! #   fn pdf(&self, s: f64) -> f64 { if s >= 0.0 { (-s).exp() } else { 0.0 } }
-//! #   fn tail(&self, s: f64) -> f64 { (-s.max(0.0)).exp() }
-//! #   fn support(&self) -> (f64, f64) { (0.0, f64::INFINITY) }
-//! #   fn moment_above(&self, _n: f64, _h: f64) -> f64 { unimplemented!() }
-//! #   fn quantile(&self, p: f64) -> f64 { -(-p).ln_1p() }
-//! #   fn numerical_support(&self, eps: f64) -> (f64, f64) { (0.0, -eps.ln()) }
-//! # }
 //! let spec = PopulationSpec::new(10_000, 5e-9, RadiusSpec::Fixed(1e-6), 42)?;
-//! let pop = Arc::new(Population::sample(&spec, &Exp)?);
+//! let pop = Arc::new(Population::sample(&spec, &Exponential::new())?);
 //! let law = SummitLaw::scaled(Arc::new(Hertz::new(1e-6, 5e10)?), 1e-6, RadiusScaling::MAUGIS)?;
 //! let mc = MonteCarlo::new(pop, law)?;
 //! let s = mc.state(1e-8, History::Approach, Outputs::ALL)?;

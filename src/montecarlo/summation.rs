@@ -21,7 +21,7 @@
 use super::population::Population;
 use super::scaling::SummitLaw;
 use crate::error::{finite, Allowed, Error, Result};
-use crate::gw::{GwState, History, LoadingProgram, Outputs, PullOff};
+use crate::gw::{self, GwState, History, LoadingProgram, Outputs, PullOff};
 use crate::law::{Branch, ContactState};
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -97,24 +97,17 @@ impl McCurve {
     /// Energy lost per cycle (J), trapezoidal over the program's separations
     /// (error `O(step^2)`); `None` if loads were not computed.
     pub fn hysteresis_energy(&self) -> Option<f64> {
-        let mut w = 0.0;
-        for i in 1..self.approach.len() {
-            let dd = self.approach[i].separation - self.approach[i - 1].separation;
-            let g0 = self.approach[i - 1].load? - self.retract[i - 1].load?;
-            let g1 = self.approach[i].load? - self.retract[i].load?;
-            w += 0.5 * (g0 + g1) * dd;
-        }
-        Some(w)
+        gw::hysteresis_energy(
+            self.approach
+                .iter()
+                .enumerate()
+                .map(|(i, a)| (a.separation, a.load, self.retract[i].load)),
+        )
     }
 
     /// The most tensile sampled retraction load, if any is tensile.
     pub fn sampled_pull_off(&self) -> Option<PullOff> {
-        self.retract
-            .iter()
-            .filter_map(|s| s.load.map(|p| (p, s.separation)))
-            .filter(|&(p, _)| p < 0.0)
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(load, separation)| PullOff { load, separation })
+        gw::most_tensile(self.retract.iter().map(|s| (s.load, s.separation)))
     }
 
     /// Total law evaluations spent on the curve.

@@ -1,6 +1,6 @@
-//! Monte Carlo checks against exact expectations and the GW integral, with
-//! a small exact exponential distribution (`phi(s) = e^-s`, `s >= 0`; the
-//! full distributions are tested in `tests/`).
+//! Monte Carlo checks against exact expectations and the GW integral, on
+//! GW's exponential heights (`phi(s) = e^-s`, `s >= 0`; the full
+//! distributions are tested in `tests/`).
 //!
 //! Statistical bounds: a total is accepted within 5 standard errors of its
 //! expectation. For a normal estimator a false failure has probability
@@ -11,42 +11,10 @@
 use super::*;
 use crate::error::Error;
 use crate::gw::{Accuracy, GwModel, History, LoadingProgram, Method, Outputs, RoughSurface};
-use crate::heights::HeightDistribution;
+use crate::heights::Exponential;
 use crate::law::{AsperityLaw, Bradley, Branch, Hertz, Jkr, LawKind};
 use crate::material::{Adhesion, AsperityContact};
 use std::sync::Arc;
-
-#[derive(Debug)]
-pub(crate) struct Exp;
-
-impl HeightDistribution for Exp {
-    fn name(&self) -> &'static str {
-        "test-exponential"
-    }
-    fn pdf(&self, s: f64) -> f64 {
-        if s >= 0.0 {
-            (-s).exp()
-        } else {
-            0.0
-        }
-    }
-    fn tail(&self, s: f64) -> f64 {
-        (-s.max(0.0)).exp()
-    }
-    fn support(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-    /// Only used through quadrature here (`closed_form_moment` is false).
-    fn moment_above(&self, _n: f64, _h: f64) -> f64 {
-        f64::NAN
-    }
-    fn quantile(&self, p: f64) -> f64 {
-        -(-p).ln_1p()
-    }
-    fn numerical_support(&self, eps: f64) -> (f64, f64) {
-        (0.0, -eps.ln())
-    }
-}
 
 const R: f64 = 1e-6;
 const SIGMA: f64 = 5e-9;
@@ -54,7 +22,7 @@ const E_STAR: f64 = 4.8e10;
 
 fn population(n: usize, seed: u64) -> Arc<Population> {
     let spec = PopulationSpec::new(n, SIGMA, RadiusSpec::Fixed(R), seed).unwrap();
-    Arc::new(Population::sample(&spec, &Exp).unwrap())
+    Arc::new(Population::sample(&spec, &Exponential::new()).unwrap())
 }
 
 fn hertz() -> SummitLaw {
@@ -76,11 +44,16 @@ fn jkr() -> SummitLaw {
     .unwrap()
 }
 
-/// The GW model of `n` summits of the same surface (quadrature: the test
-/// exponential has no closed forms for `h < 0`).
+/// The GW model of `n` summits of the same surface (integrated by
+/// quadrature in [`acc`], independent of the exponential's closed forms).
 fn gw(n: usize, law: &SummitLaw) -> GwModel {
     let surface = RoughSurface::new(n as f64, R, SIGMA, 1.0).unwrap();
-    GwModel::new(surface, Arc::new(Exp), Arc::from(law_arc(law))).unwrap()
+    GwModel::new(
+        surface,
+        Arc::new(Exponential::new()),
+        Arc::from(law_arc(law)),
+    )
+    .unwrap()
 }
 
 fn law_arc(law: &SummitLaw) -> Box<dyn AsperityLaw> {
@@ -150,7 +123,7 @@ fn lognormal_radii_have_their_moments() {
     let n = 100_000;
     let (median, log_std) = (2e-6, 0.4);
     let spec = PopulationSpec::new(n, SIGMA, RadiusSpec::LogNormal { median, log_std }, 1).unwrap();
-    let p = Population::sample(&spec, &Exp).unwrap();
+    let p = Population::sample(&spec, &Exponential::new()).unwrap();
     let r = p.radii().unwrap();
     let logs: Vec<f64> = r.iter().map(|x| (x / median).ln()).collect();
     let m = logs.iter().sum::<f64>() / n as f64;
@@ -171,7 +144,10 @@ fn lognormal_radii_have_their_moments() {
         1,
     )
     .unwrap();
-    assert!(Population::sample(&spec0, &Exp).unwrap().radii().is_none());
+    assert!(Population::sample(&spec0, &Exponential::new())
+        .unwrap()
+        .radii()
+        .is_none());
 }
 
 #[test]
@@ -192,7 +168,7 @@ fn populations_are_identical_for_one_and_two_threads() {
                     11,
                 )
                 .unwrap();
-                let pop = Arc::new(Population::sample(&spec, &Exp).unwrap());
+                let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
                 let mc = MonteCarlo::new(pop.clone(), jkr()).unwrap();
                 let prog = LoadingProgram::new(8.0 * SIGMA, -SIGMA, 30).unwrap();
                 let path: Vec<f64> = (0..40).map(|k| SIGMA * (3.0 - 0.1 * k as f64)).collect();
@@ -279,7 +255,7 @@ fn lognormal_radii_use_the_law_of_each_radius() {
         9,
     )
     .unwrap();
-    let pop = Arc::new(Population::sample(&spec, &Exp).unwrap());
+    let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
     let contact = AsperityContact::new(R, 1e9, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
     for kind in [LawKind::Hertz, LawKind::Dmt, LawKind::Jkr] {
         let mc =
@@ -403,7 +379,11 @@ fn lognormal_hertz_matches_the_radius_averaged_integral() {
         4,
     )
     .unwrap();
-    let mc = MonteCarlo::new(Arc::new(Population::sample(&spec, &Exp).unwrap()), hertz()).unwrap();
+    let mc = MonteCarlo::new(
+        Arc::new(Population::sample(&spec, &Exponential::new()).unwrap()),
+        hertz(),
+    )
+    .unwrap();
     let model = gw(n, &hertz());
     for h in [-2.0, 0.5] {
         let st = mc
@@ -492,7 +472,9 @@ fn bad_population_specs_name_the_field() {
         assert_eq!(e.field(), Some(field), "{s:?}");
         // `sample` validates too (fields are public).
         assert_eq!(
-            Population::sample(&s, &Exp).unwrap_err().field(),
+            Population::sample(&s, &Exponential::new())
+                .unwrap_err()
+                .field(),
             Some(field)
         );
     }
@@ -567,7 +549,7 @@ fn bad_evaluation_input_names_the_field() {
     // A law without radius scaling cannot serve other radii.
     let fixed = SummitLaw::fixed(Arc::new(Hertz::new(R, E_STAR).unwrap()), R).unwrap();
     let spec = PopulationSpec::new(10, SIGMA, lognormal(R, 0.2), 0).unwrap();
-    let varied = Arc::new(Population::sample(&spec, &Exp).unwrap());
+    let varied = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
     let e = MonteCarlo::new(varied, fixed.clone()).unwrap_err();
     assert!(matches!(e, Error::Invalid { .. }));
     assert_eq!(e.field(), Some("radius"));
@@ -679,7 +661,7 @@ fn general_sequences_match_the_threshold_rule_for_every_radius() {
     let contact = AsperityContact::new(R, 1e9, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
     for radius in [RadiusSpec::Fixed(R), lognormal(R, 0.4)] {
         let spec = PopulationSpec::new(3000, SIGMA, radius, 12).unwrap();
-        let pop = Arc::new(Population::sample(&spec, &Exp).unwrap());
+        let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
         let mc = MonteCarlo::new(
             pop.clone(),
             SummitLaw::from_kind(LawKind::Jkr, &contact).unwrap(),
@@ -751,13 +733,13 @@ mod properties {
         ) {
             let sigma = 10f64.powf(log_sigma);
             let spec = PopulationSpec::new(n, sigma, RadiusSpec::Fixed(R), seed).unwrap();
-            let p = Population::sample(&spec, &Exp).unwrap();
+            let p = Population::sample(&spec, &Exponential::new()).unwrap();
             prop_assert_eq!(p.len(), n);
             prop_assert!(p.heights().is_sorted());
             prop_assert!(p.heights().iter().all(|z| z.is_finite() && *z >= 0.0));
             // The largest of n exponentials is below ln(n) + 60 (tail e^-60).
             prop_assert!(*p.heights().last().unwrap() / sigma < (n as f64).ln() + 60.0);
-            prop_assert_eq!(&p, &Population::sample(&spec, &Exp).unwrap());
+            prop_assert_eq!(&p, &Population::sample(&spec, &Exponential::new()).unwrap());
         }
 
         /// The radius scaling is exact for Hertz, DMT and JKR over six
@@ -831,14 +813,21 @@ mod properties {
 
 #[test]
 fn heights_do_not_depend_on_the_radius_spec_or_sigma() {
-    let a =
-        Population::sample(&spec(5000, SIGMA, RadiusSpec::Fixed(R)).with_seed(3), &Exp).unwrap();
-    let b = Population::sample(
-        &spec(5000, 2.0 * SIGMA, lognormal(R, 0.4)).with_seed(3),
-        &Exp,
+    let a = Population::sample(
+        &spec(5000, SIGMA, RadiusSpec::Fixed(R)).with_seed(3),
+        &Exponential::new(),
     )
     .unwrap();
-    let c = Population::sample(&spec(5000, SIGMA, lognormal(R, 0.8)).with_seed(3), &Exp).unwrap();
+    let b = Population::sample(
+        &spec(5000, 2.0 * SIGMA, lognormal(R, 0.4)).with_seed(3),
+        &Exponential::new(),
+    )
+    .unwrap();
+    let c = Population::sample(
+        &spec(5000, SIGMA, lognormal(R, 0.8)).with_seed(3),
+        &Exponential::new(),
+    )
+    .unwrap();
     for i in 0..5000 {
         assert_eq!(2.0 * a.heights()[i], b.heights()[i]);
         // Same normal deviates: ln(R/median) doubles with the spread.
