@@ -179,3 +179,53 @@ fn empirical_heights_give_the_exact_sum_over_summits() {
         assert!((st.count.unwrap() / count - 1.0).abs() < 1e-12, "d {d}");
     }
 }
+
+#[test]
+fn measured_heights_are_summed_exactly_for_any_law() {
+    use asperity::gw::LoadingProgram;
+    use asperity::heights::Empirical;
+    use asperity::law::{AsperityLaw, Branch, Jkr};
+    let heights_m: Vec<f64> = (0..40)
+        .map(|i| 1e-9 * ((i * 37 % 40) as f64 - 17.3) / 4.0)
+        .collect();
+    let emp = Empirical::new(&heights_m).unwrap();
+    let (mean, sd) = (emp.mean_m(), emp.std_m());
+    let surface = RoughSurface::new(1e12, 1e-6, sd, 1e-8).unwrap();
+    let jkr = Jkr::new(1e-6, 4.8e10, 0.5).unwrap();
+    let model = GwModel::new(surface, Arc::new(emp), Arc::new(jkr)).unwrap();
+    let acc = Accuracy::new(1e-8).unwrap();
+    let n_total = surface.summits();
+    let closest = -0.5 * sd;
+    for d in [closest, 0.0, 0.7 * sd, 1.5 * sd] {
+        for history in [History::Approach, History::Retract { closest }] {
+            let st = model.state(d, history, Outputs::ALL, &acc).unwrap();
+            assert_eq!(st.method, MethodUsed::SampleSum);
+            // Brute force over the measured heights (from their mean).
+            let (mut p, mut a, mut c) = (0.0, 0.0, 0.0);
+            for &z in &heights_m {
+                let delta = (z - mean) - d;
+                let s = match history {
+                    History::Approach => jkr.state(delta, Branch::Approach),
+                    History::Retract { closest } => jkr.state_after(delta, (z - mean) - closest),
+                };
+                p += s.load;
+                a += s.area();
+                c += f64::from(u8::from(s.in_contact()));
+            }
+            let k = n_total / heights_m.len() as f64;
+            let close = |x: f64, y: f64| (x - y).abs() <= 1e-12 * y.abs().max(1e-30);
+            assert!(
+                close(st.load.unwrap(), k * p),
+                "{d}: {:?} vs {}",
+                st.load,
+                k * p
+            );
+            assert!(close(st.area.unwrap(), k * a));
+            assert_eq!(st.count.unwrap(), k * c);
+        }
+    }
+    // The whole program runs on the same exact sums.
+    let program = LoadingProgram::new(3.0 * sd, closest, 20).unwrap();
+    let curve = model.curve(&program, Outputs::LOAD, &acc).unwrap();
+    assert!(curve.hysteresis_energy().unwrap() > 0.0);
+}

@@ -122,6 +122,10 @@ impl HeightDistribution for Empirical {
         "empirical"
     }
 
+    fn sample_points(&self) -> Option<&[f64]> {
+        Some(&self.s)
+    }
+
     fn pdf(&self, s: f64) -> f64 {
         if s.is_nan() {
             return f64::NAN;

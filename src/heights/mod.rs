@@ -47,6 +47,14 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     /// probability in each tail; integrators skip heights beyond it.
     fn numerical_support(&self, eps: f64) -> (f64, f64);
 
+    /// The standardised heights themselves, ascending, when the
+    /// distribution is a finite sample (measured summits): integrals over it
+    /// are then exact averages over these points, and integrators sum them
+    /// instead of integrating a smoothed density. Default: `None`.
+    fn sample_points(&self) -> Option<&[f64]> {
+        None
+    }
+
     /// Whether [`moment_above`](HeightDistribution::moment_above) is a closed
     /// form accurate to about 1e-13 relative for this `n` (not quadrature).
     /// Integrators use closed forms only then. Default: `false`.

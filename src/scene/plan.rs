@@ -237,7 +237,15 @@ impl Plan {
         let accuracy = Accuracy::new(rtol)
             .map_err(|e| e.renamed("accuracy.rtol"))?
             .with_method(method);
-        let how = if method == Method::Auto {
+        let how = if distribution.sample_points().is_some() && !closed {
+            (
+                "exact sum over the sample".to_string(),
+                format!(
+                    "{} heights are a finite sample: the totals are exact averages over the measured summits",
+                    distribution.name()
+                ),
+            )
+        } else if method == Method::Auto {
             (
                 "closed form F_n".to_string(),
                 format!(
