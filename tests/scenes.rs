@@ -203,3 +203,14 @@ fn maugis_population_agrees_with_the_integral_within_its_statistical_error() {
         "a 10% sigma error went unnoticed: |z| = {worst}"
     );
 }
+
+#[test]
+fn radius_spread_needs_a_law_that_scales_with_the_radius() {
+    let mut scene = example("montecarlo-gold.toml");
+    scene.montecarlo.as_mut().unwrap().radius_log_std = 0.2;
+    let e = Plan::new(&scene, PlanMode::Planned).unwrap_err();
+    assert_eq!(e.field(), Some("montecarlo.radius_log_std"), "{e}");
+    scene.law.kind = "jkr".into();
+    let res = Plan::new(&scene, PlanMode::Planned).unwrap().run().unwrap();
+    assert!(res.montecarlo.unwrap().max_abs_z.is_some());
+}

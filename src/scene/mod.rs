@@ -78,6 +78,26 @@ mod tests {
     }
 
     #[test]
+    fn montecarlo_section_is_validated() {
+        for (extra, field) in [
+            ("summits = 0", "montecarlo.summits"),
+            ("summits = 2000000000", "montecarlo.summits"),
+            ("radius_log_std = -0.1", "montecarlo.radius_log_std"),
+            ("radius_log_std = nan", "montecarlo.radius_log_std"),
+            ("seeds = 3", "montecarlo.seeds"),
+            ("seed = -1", "montecarlo.seed"),
+        ] {
+            let text = format!("{DEFAULT_SCENE}\n[montecarlo]\n{extra}\n");
+            let (got, msg) = field_of(&text);
+            assert_eq!(got, field, "{extra}: {msg}");
+        }
+        let ok = format!("{DEFAULT_SCENE}\n[montecarlo]\nseed = 3\n");
+        let s = Scene::from_toml(&ok).unwrap();
+        assert_eq!(s.montecarlo.unwrap().seed, 3);
+        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+    }
+
+    #[test]
     fn parse_errors_carry_the_line() {
         let text = with("sigma = 5e-9", "sigmaa = 5e-9");
         let line = text.lines().position(|l| l.starts_with("sigmaa")).unwrap() + 1;
