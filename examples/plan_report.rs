@@ -12,7 +12,7 @@
 //! the curve, worst of load and area.
 
 use asperity::gw::GwState;
-use asperity::scene::{Plan, PlanMode, Scene};
+use asperity::study::scene::{Plan, PlanMode, Scene};
 use std::fmt::Write as _;
 use std::time::Instant;
 

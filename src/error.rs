@@ -43,6 +43,16 @@ pub enum Error {
         /// Last residual (method-specific norm).
         residual: f64,
     },
+    /// Reading or writing a file failed for a reason that is not the
+    /// input's content (missing permission, full disk, a lock held by
+    /// another run). Not bad input: the CLI exits 1.
+    #[error("{path}: {reason}")]
+    Io {
+        /// The file or directory.
+        path: String,
+        /// What went wrong (the operating system's message).
+        reason: String,
+    },
 }
 
 /// A value as a person reads it: plain for moderate magnitudes,
@@ -194,7 +204,21 @@ impl Error {
     pub fn field(&self) -> Option<&str> {
         match self {
             Error::OutOfRange { name, .. } | Error::Invalid { name, .. } => Some(name),
-            Error::NoConvergence { .. } => None,
+            Error::NoConvergence { .. } | Error::Io { .. } => None,
+        }
+    }
+
+    /// Whether the error is the input's fault (CLI exit 2) rather than a
+    /// failure of the computation or the system (exit 1).
+    pub fn is_bad_input(&self) -> bool {
+        matches!(self, Error::OutOfRange { .. } | Error::Invalid { .. })
+    }
+
+    /// An [`Error::Io`] about `path` from an operating-system error.
+    pub fn io(path: impl std::fmt::Display, e: impl std::fmt::Display) -> Self {
+        Error::Io {
+            path: path.to_string(),
+            reason: e.to_string(),
         }
     }
 }

@@ -35,11 +35,10 @@ pub mod law;
 pub mod material;
 pub mod montecarlo;
 pub mod numeric;
-pub mod plot;
-pub mod scene;
 pub mod special;
 pub mod sphere;
-pub mod sweep;
+#[cfg(feature = "study")]
+pub mod study;
 
 pub use error::{Error, Result};
 

@@ -3,7 +3,9 @@
 
 use asperity::gw::{Accuracy, GwModel, History, Method, Outputs};
 use asperity::law::LawKind;
-use asperity::scene::{build_contact, build_distribution, build_surface, Plan, PlanMode, Scene};
+use asperity::study::scene::{
+    build_contact, build_distribution, build_surface, Plan, PlanMode, Scene,
+};
 use std::sync::Arc;
 
 fn example(name: &str) -> Scene {

@@ -5,7 +5,7 @@
 
 use asperity::law::LawKind;
 use asperity::prelude::*;
-use asperity::scene::{si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_SCENE};
+use asperity::study::scene::{si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_SCENE};
 use std::path::Path;
 
 /// Rows of the printed load–separation table.

@@ -55,9 +55,10 @@ pub enum CliError {
 
 impl From<asperity::Error> for CliError {
     fn from(e: asperity::Error) -> Self {
-        match e {
-            asperity::Error::NoConvergence { .. } => CliError::Failed(e.to_string()),
-            _ => CliError::Usage(e.to_string()),
+        if e.is_bad_input() {
+            CliError::Usage(e.to_string())
+        } else {
+            CliError::Failed(e.to_string())
         }
     }
 }

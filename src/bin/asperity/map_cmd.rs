@@ -1,7 +1,7 @@
 //! `asperity map [--tolerance T] [--out DIR]`: the adhesion map.
 
 use asperity::law::errors::LawErrorTable;
-use asperity::plot::{adhesion_map_csv, write_adhesion_map};
+use asperity::study::plot::{adhesion_map_csv, write_adhesion_map};
 use clap::Args;
 use std::path::PathBuf;
 

@@ -2,7 +2,7 @@
 //! run of the embedded gold-microswitch scene.
 
 use crate::CliError;
-use asperity::scene::{write_outputs, Plan, PlanMode, Results, Scene, Summary};
+use asperity::study::scene::{write_outputs, Plan, PlanMode, Results, Scene, Summary};
 use clap::Args;
 use std::path::{Path, PathBuf};
 

@@ -1,8 +1,8 @@
 //! `asperity sweep` and `asperity merge`.
 
 use crate::CliError;
-use asperity::scene::Scene;
-use asperity::sweep::{merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary};
+use asperity::study::scene::Scene;
+use asperity::study::sweep::{merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::PathBuf;

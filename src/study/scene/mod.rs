@@ -28,7 +28,7 @@ pub use schema::{
 
 /// The default scene (`examples/scenes/mems-gold.toml`), embedded so that
 /// `asperity` with no arguments runs anywhere.
-pub const DEFAULT_SCENE: &str = include_str!("../../examples/scenes/mems-gold.toml");
+pub const DEFAULT_SCENE: &str = include_str!("../../../examples/scenes/mems-gold.toml");
 
 #[cfg(test)]
 mod tests {

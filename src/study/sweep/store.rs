@@ -283,7 +283,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<PathBuf> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sweep::spec::{Design, Vary};
+    use crate::study::sweep::spec::{Design, Vary};
 
     fn meta(shard: Option<Shard>) -> SweepMeta {
         SweepMeta {

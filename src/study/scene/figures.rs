@@ -7,7 +7,7 @@ use super::plan::Plan;
 use super::run::Results;
 use crate::error::{Error, Result};
 use crate::gw::GwState;
-use crate::plot::{Chart, Series};
+use crate::study::plot::{Chart, Series};
 use std::path::{Path, PathBuf};
 
 /// A display unit for a set of values: the SI prefix that puts the largest

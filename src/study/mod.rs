@@ -1,0 +1,11 @@
+//! The study layer: scenes (what to compute), the planner (how), runs,
+//! outputs (tables, JSON, charts) and sweeps. It only assembles pieces of the
+//! physics core; it owns the file formats (TOML scenes, CSV, JSON, SVG) and
+//! maps core errors onto scene fields.
+//!
+//! Compiled with the default feature `study`; the physics core builds without
+//! it (`cargo build --lib --no-default-features`).
+
+pub mod plot;
+pub mod scene;
+pub mod sweep;
