@@ -6,9 +6,9 @@
 //! - `mc_curve/*`: a 1e6-summit approach-retract program of 1000 states
 //!   (500 separations per leg).
 //! - `mc_sample/*`: drawing the population.
-use asperity::gw::{History, LoadingProgram, Outputs};
 use asperity::heights::Exponential;
-use asperity::law::{Hertz, Jkr};
+use asperity::law::{Hertz, Jkr, RadiusScaling};
+use asperity::loading::{History, LoadingModel, LoadingProgram, Observables};
 use asperity::montecarlo::*;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::hint::black_box;
@@ -77,9 +77,14 @@ fn bench_state(c: &mut Criterion) {
                 ("approach", History::Approach),
                 ("retract", History::Retract { closest: 2.0 * d }),
             ] {
-                assert_eq!(mc.state(d, history, Outputs::ALL).unwrap().evaluations, N);
+                assert_eq!(
+                    mc.state(d, history, &Observables::ALL).unwrap().evaluations,
+                    N
+                );
                 group.bench_function(BenchmarkId::new(format!("{lname}/{pname}"), hname), |b| {
-                    b.iter(|| black_box(mc.state(black_box(d), history, Outputs::ALL).unwrap()))
+                    b.iter(|| {
+                        black_box(mc.state(black_box(d), history, &Observables::ALL).unwrap())
+                    })
                 });
             }
         }
@@ -95,10 +100,10 @@ fn bench_curve(c: &mut Criterion) {
     let program = LoadingProgram::new(6.0 * SIGMA, -SIGMA, 500).unwrap();
     for (lname, law) in laws() {
         let mc = MonteCarlo::new(pop.clone(), law).unwrap();
-        let evals = mc.curve(&program, Outputs::ALL).unwrap().evaluations();
+        let evals = mc.curve(&program, &Observables::ALL).unwrap().evaluations();
         group.throughput(Throughput::Elements(evals as u64));
         group.bench_function(BenchmarkId::new(lname, "1000_states"), |b| {
-            b.iter(|| black_box(mc.curve(&program, Outputs::ALL).unwrap()))
+            b.iter(|| black_box(mc.curve(&program, &Observables::ALL).unwrap()))
         });
     }
     group.finish();

@@ -18,10 +18,11 @@
 //! (per output; the worst output is reported). Time = median of repeated
 //! runs, each a whole curve.
 
-use asperity::gw::{Accuracy, Curve, GwModel, LoadingProgram, Method, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::interpolated::InterpolatedLaw;
 use asperity::law::{AsperityLaw, Hertz, Maugis};
+use asperity::loading::{Curve, History, LoadingModel, LoadingProgram, Observables};
 use asperity::material::{contact_modulus, Material};
 use std::fmt::Write as _;
 use std::sync::Arc;
@@ -47,17 +48,17 @@ fn time<T>(mut f: impl FnMut() -> T) -> (f64, T) {
 }
 
 /// Per-output values of a curve: both legs, in order.
-fn values(c: &Curve, outputs: Outputs) -> Vec<Vec<f64>> {
+fn values(c: &Curve, outputs: Observables) -> Vec<Vec<f64>> {
     let legs = || c.approach.iter().chain(c.retract.iter());
     let mut v = Vec::new();
     if outputs.load {
-        v.push(legs().map(|s| s.load.unwrap()).collect());
+        v.push(legs().map(|s| s.load().unwrap()).collect());
     }
     if outputs.area {
-        v.push(legs().map(|s| s.area.unwrap()).collect());
+        v.push(legs().map(|s| s.area().unwrap()).collect());
     }
     if outputs.count {
-        v.push(legs().map(|s| s.count.unwrap()).collect());
+        v.push(legs().map(|s| s.count().unwrap()).collect());
     }
     v
 }
@@ -111,11 +112,12 @@ fn main() {
     let program = LoadingProgram::new(6.0 * sigma, -3.0 * sigma, POINTS).unwrap();
     let approach_only = |acc: &Accuracy| {
         let seps = program.separations();
+        let model = model.clone().with_accuracy(*acc);
         let states: Vec<_> = seps
             .iter()
             .map(|&d| {
                 model
-                    .state(d, asperity::gw::History::Approach, Outputs::ALL, acc)
+                    .state(d, History::Approach, &Observables::ALL)
                     .unwrap()
             })
             .collect();
@@ -129,7 +131,7 @@ fn main() {
         .unwrap()
         .with_method(Method::ClosedForm);
     let (t, reference) = time(|| approach_only(&closed));
-    let reference = values(&reference, Outputs::ALL);
+    let reference = values(&reference, Observables::ALL);
     let _ = writeln!(
         md,
         "### Hertz asperities, Gaussian heights: {POINTS}-point curve (load, area, count)\n"
@@ -146,7 +148,7 @@ fn main() {
             &mut md,
             &format!("adaptive Gauss–Kronrod, rtol {tol:e}"),
             t,
-            error(&values(&c, Outputs::ALL), &reference),
+            error(&values(&c, Observables::ALL), &reference),
             evaluations(&c),
         );
     }
@@ -159,7 +161,7 @@ fn main() {
             &mut md,
             &format!("fixed K21, {panels} panel(s) per piece"),
             t,
-            error(&values(&c, Outputs::ALL), &reference),
+            error(&values(&c, Observables::ALL), &reference),
             evaluations(&c),
         );
     }
@@ -172,13 +174,14 @@ fn main() {
     let curve_of = |law: Arc<dyn AsperityLaw>, acc: &Accuracy| {
         GwModel::new(surface, gauss.clone(), law)
             .unwrap()
-            .curve(&program, Outputs::LOAD, acc)
+            .with_accuracy(*acc)
+            .curve(&program, &Observables::LOAD)
             .unwrap()
     };
     let t0 = Instant::now();
     let reference = values(
         &curve_of(exact.clone(), &Accuracy::new(1e-12).unwrap()),
-        Outputs::LOAD,
+        Observables::LOAD,
     );
     eprintln!("MD reference: {:.1} s", t0.elapsed().as_secs_f64());
     let _ = writeln!(
@@ -196,7 +199,7 @@ fn main() {
             &mut md,
             &format!("exact law, adaptive, rtol {tol:e}"),
             t,
-            error(&values(&c, Outputs::LOAD), &reference),
+            error(&values(&c, Observables::LOAD), &reference),
             evaluations(&c),
         );
     }
@@ -209,7 +212,7 @@ fn main() {
             &mut md,
             &format!("exact law, fixed K21, {panels} panel(s) per piece"),
             t,
-            error(&values(&c, Outputs::LOAD), &reference),
+            error(&values(&c, Observables::LOAD), &reference),
             evaluations(&c),
         );
     }
@@ -229,7 +232,7 @@ fn main() {
                 panels.0, panels.1
             ),
             t,
-            error(&values(&c, Outputs::LOAD), &reference),
+            error(&values(&c, Observables::LOAD), &reference),
             evaluations(&c),
         );
     }

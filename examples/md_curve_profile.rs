@@ -1,10 +1,11 @@
 //! Profiling target: one Maugis–Dugdale (lambda = 1) GW curve at rtol 1e-6,
 //! the way the planner computes it (Chebyshev table to 1e-7 + adaptive
 //! quadrature), repeated. `perf record cargo run --release --example md_curve_profile`.
-use asperity::gw::{Accuracy, GwModel, LoadingProgram, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::interpolated::InterpolatedLaw;
 use asperity::law::{AsperityLaw, Maugis};
+use asperity::loading::{LoadingModel, LoadingProgram, Observables};
 use asperity::material::{contact_modulus, Material};
 use std::sync::Arc;
 
@@ -26,7 +27,12 @@ fn main() {
         )
         .unwrap();
         let m = GwModel::new(s, Arc::new(Gaussian::new()), Arc::new(table)).unwrap();
-        std::hint::black_box(m.curve(&program, Outputs::LOAD, &acc).unwrap());
+        std::hint::black_box(
+            m.clone()
+                .with_accuracy(acc)
+                .curve(&program, &Observables::LOAD)
+                .unwrap(),
+        );
     }
     println!(
         "{:.2} ms per curve",

@@ -6,9 +6,10 @@
 //! distribution, sums Hertz and JKR summits exactly, and compares each total
 //! with the statistical integral in units of its standard error; then shows
 //! what GW cannot do (lognormal radii) and times a 1e6-summit program.
-use asperity::gw::{Accuracy, GwModel, History, LoadingProgram, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Exponential;
-use asperity::law::{AsperityLaw, Hertz, Jkr};
+use asperity::law::{AsperityLaw, Hertz, Jkr, RadiusScaling};
+use asperity::loading::{History, LoadingModel, LoadingProgram, Observables};
 use asperity::montecarlo::*;
 use std::sync::Arc;
 use std::time::Instant;
@@ -41,9 +42,16 @@ fn main() -> asperity::Result<()> {
                 law.clone(),
             )?;
             let history = History::Retract { closest: -sigma };
-            let m = mc.state(d, history, Outputs::LOAD)?;
-            let g = gw.state(d, history, Outputs::LOAD, &acc)?;
-            let (pm, pg, se) = (m.load.unwrap(), g.load.unwrap(), m.standard_error[0]);
+            let m = mc.state(d, history, &Observables::LOAD)?;
+            let g = gw
+                .clone()
+                .with_accuracy(acc)
+                .state(d, history, &Observables::LOAD)?;
+            let (pm, pg, se) = (
+                m.load().unwrap(),
+                g.load().unwrap(),
+                m.totals.error(0).unwrap(),
+            );
             println!(
                 "{n:>9} {name:>6} {pm:>14.6e} {pg:>14.6e} {se:>10.2e} {:>7.2}",
                 (pm - pg) / se
@@ -65,18 +73,21 @@ fn main() -> asperity::Result<()> {
     let pop = Arc::new(Population::sample(&spec, &Exponential::new())?);
     let hertz = SummitLaw::scaled(laws[0].1.clone(), r, RadiusScaling::MAUGIS)?;
     let mc = MonteCarlo::new(pop, hertz)?;
-    let m = mc.state(d, History::Approach, Outputs::ALL)?;
+    let m = mc.state(d, History::Approach, &Observables::ALL)?;
     let gw = GwModel::new(
         RoughSurface::new(1e6, r, sigma, 1.0)?,
         Arc::new(Exponential::new()),
         laws[0].1.clone(),
     )?;
-    let g = gw.state(d, History::Approach, Outputs::ALL, &acc)?;
+    let g = gw
+        .clone()
+        .with_accuracy(acc)
+        .state(d, History::Approach, &Observables::ALL)?;
     println!(
         "\nlognormal radii (log-std {s}): MC load {:.6e} +- {:.1e} N; GW(median R) x exp(s^2/8) = {:.6e} N",
-        m.load.unwrap(),
-        m.standard_error[0],
-        g.load.unwrap() * (s * s / 8.0).exp()
+        m.load().unwrap(),
+        m.totals.error(0).unwrap(),
+        g.load().unwrap() * (s * s / 8.0).exp()
     );
 
     // Timing: approach-retract programs of 1000 states (500 separations per
@@ -94,7 +105,7 @@ fn main() -> asperity::Result<()> {
         let t_sample = t0.elapsed();
         let mc = MonteCarlo::new(pop, SummitLaw::scaled(law, r, RadiusScaling::MAUGIS)?)?;
         let t1 = Instant::now();
-        let curve = mc.curve(&program, Outputs::ALL)?;
+        let curve = mc.curve(&program, &Observables::ALL)?;
         let t_curve = t1.elapsed();
         let evals = curve.evaluations();
         println!(

@@ -10,9 +10,10 @@
 //! seeds, RMS relative error, mean reported relative SE, RMS error x
 //! sqrt(N) (constant when the error falls like N^-1/2), and the RMS of the
 //! z-scores (about 1 when the reported SE is right).
-use asperity::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Exponential;
-use asperity::law::{AsperityLaw, Hertz, Jkr};
+use asperity::law::{AsperityLaw, Hertz, Jkr, RadiusScaling};
+use asperity::loading::{History, LoadingModel, Observables};
 use asperity::montecarlo::*;
 use std::sync::Arc;
 
@@ -45,7 +46,12 @@ fn main() -> asperity::Result<()> {
                 Arc::new(Exponential::new()),
                 law.clone(),
             )?;
-            let expect = gw.state(d, *history, Outputs::LOAD, &acc)?.load.unwrap();
+            let expect = gw
+                .clone()
+                .with_accuracy(acc)
+                .state(d, *history, &Observables::LOAD)?
+                .load()
+                .unwrap();
             let (mut m, mut sq, mut se, mut z2) = (0.0, 0.0, 0.0, 0.0);
             for seed in 0..seeds {
                 let spec = PopulationSpec::new(n, sigma, RadiusSpec::Fixed(r), seed)?;
@@ -54,12 +60,12 @@ fn main() -> asperity::Result<()> {
                     pop,
                     SummitLaw::scaled(law.clone(), r, RadiusScaling::MAUGIS)?,
                 )?;
-                let s = mc.state(d, *history, Outputs::LOAD)?;
-                let e = s.load.unwrap() / expect - 1.0;
+                let s = mc.state(d, *history, &Observables::LOAD)?;
+                let e = s.load().unwrap() / expect - 1.0;
                 m += e;
                 sq += e * e;
-                se += s.standard_error[0] / expect.abs();
-                let z = (s.load.unwrap() - expect) / s.standard_error[0];
+                se += s.totals.error(0).unwrap() / expect.abs();
+                let z = (s.load().unwrap() - expect) / s.totals.error(0).unwrap();
                 z2 += z * z;
             }
             let k = seeds as f64;

@@ -11,8 +11,8 @@
 //! difference = max |planned - everything-on| / max |everything-on| over
 //! the curve, worst of load and area.
 
-use asperity::gw::GwState;
-use asperity::study::scene::{Plan, PlanMode, Scene};
+use asperity::loading::State;
+use asperity::study::{Plan, PlanMode, Scene};
 use std::fmt::Write as _;
 use std::time::Instant;
 
@@ -28,15 +28,15 @@ fn median_seconds(plan: &Plan) -> f64 {
     t[3]
 }
 
-fn gap(a: &[GwState], b: &[GwState]) -> f64 {
-    let worst = |f: &dyn Fn(&GwState) -> Option<f64>| {
+fn gap(a: &[State], b: &[State]) -> f64 {
+    let worst = |f: &dyn Fn(&State) -> Option<f64>| {
         let scale = b.iter().filter_map(f).fold(0.0f64, |m, v| m.max(v.abs()));
         a.iter()
             .zip(b)
             .filter_map(|(x, y)| Some((f(x)? - f(y)?).abs() / scale))
             .fold(0.0, f64::max)
     };
-    worst(&|s| s.load).max(worst(&|s| s.area))
+    worst(&|s| s.load()).max(worst(&|s| s.area()))
 }
 
 fn main() {
@@ -59,8 +59,8 @@ fn main() {
         let how: Vec<String> = planned
             .decisions
             .iter()
-            .filter(|x| ["law", "load", "retraction", "law evaluation"].contains(&x.what.as_str()))
-            .map(|x| format!("{}: {}", x.what, x.choice))
+            .filter(|x| ["law", "load", "retraction", "law evaluation"].contains(&x.topic()))
+            .map(|x| format!("{}: {}", x.topic(), x.choice()))
             .collect();
         let _ = writeln!(
             md,

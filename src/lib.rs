@@ -32,6 +32,7 @@ pub mod error;
 pub mod gw;
 pub mod heights;
 pub mod law;
+pub mod loading;
 pub mod material;
 pub mod montecarlo;
 pub mod numeric;

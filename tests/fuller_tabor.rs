@@ -7,6 +7,7 @@ use asperity::gw::dimensionless::fuller_tabor_parameter;
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::Jkr;
+use asperity::loading::LoadingModel;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -24,7 +25,14 @@ fn pull_off(theta: f64) -> f64 {
     )
     .unwrap();
     let acc = Accuracy::new(1e-11).unwrap();
-    model.pull_off(0.0, 200, &acc).unwrap().unwrap().load / (PI * w * r)
+    model
+        .clone()
+        .with_accuracy(acc)
+        .pull_off(0.0, 200)
+        .unwrap()
+        .unwrap()
+        .load
+        / (PI * w * r)
 }
 
 #[test]

@@ -2,9 +2,10 @@
 //! classic (load/area and load/count exactly constant) and adaptive
 //! quadrature of the Hertz law reproducing the Gaussian closed forms.
 
-use asperity::gw::{Accuracy, GwModel, History, Method, MethodUsed, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::{Exponential, Gaussian};
 use asperity::law::Hertz;
+use asperity::loading::{History, LoadingModel, MethodUsed, Observables};
 use std::sync::Arc;
 
 fn hertz_model(dist: Arc<dyn asperity::heights::HeightDistribution>) -> (GwModel, RoughSurface) {
@@ -20,16 +21,22 @@ fn hertz_model(dist: Arc<dyn asperity::heights::HeightDistribution>) -> (GwModel
 fn exponential_hertz_ratios_are_constant() {
     let (m, s) = hertz_model(Arc::new(Exponential::new()));
     let acc = Accuracy::new(1e-12).unwrap();
-    let r0 = m.state(0.0, History::Approach, Outputs::ALL, &acc).unwrap();
+    let r0 = m
+        .clone()
+        .with_accuracy(acc)
+        .state(0.0, History::Approach, &Observables::ALL)
+        .unwrap();
     assert_eq!(r0.method, MethodUsed::ClosedForm);
-    let q0 = r0.load.unwrap() / r0.area.unwrap();
-    let c0 = r0.load.unwrap() / r0.count.unwrap();
+    let q0 = r0.load().unwrap() / r0.area().unwrap();
+    let c0 = r0.load().unwrap() / r0.count().unwrap();
     for h in [0.1, 0.3, 1.0, 2.5, 4.0, 10.0, 20.0, 100.0] {
         let r = m
-            .state(h * s.sigma, History::Approach, Outputs::ALL, &acc)
+            .clone()
+            .with_accuracy(acc)
+            .state(h * s.sigma, History::Approach, &Observables::ALL)
             .unwrap();
-        let q = r.load.unwrap() / r.area.unwrap();
-        let c = r.load.unwrap() / r.count.unwrap();
+        let q = r.load().unwrap() / r.area().unwrap();
+        let c = r.load().unwrap() / r.count().unwrap();
         assert!((q / q0 - 1.0).abs() < 1e-12, "h {h}: {q} {q0}");
         assert!((c / c0 - 1.0).abs() < 1e-12, "h {h}: {c} {c0}");
     }
@@ -52,27 +59,21 @@ fn gaussian_hertz_quadrature_meets_each_tolerance() {
         for &h in &hs {
             let d = h * s.sigma;
             let exact = m
-                .state(
-                    d,
-                    History::Approach,
-                    Outputs::ALL,
-                    &acc.with_method(Method::ClosedForm),
-                )
+                .clone()
+                .with_accuracy(acc.with_method(Method::ClosedForm))
+                .state(d, History::Approach, &Observables::ALL)
                 .unwrap();
             assert_eq!(exact.method, MethodUsed::ClosedForm);
             let quad = m
-                .state(
-                    d,
-                    History::Approach,
-                    Outputs::ALL,
-                    &acc.with_method(Method::Quadrature),
-                )
+                .clone()
+                .with_accuracy(acc.with_method(Method::Quadrature))
+                .state(d, History::Approach, &Observables::ALL)
                 .unwrap();
             assert_eq!(quad.method, MethodUsed::Quadrature);
             for (i, (a, b)) in [
-                (exact.load, quad.load),
-                (exact.area, quad.area),
-                (exact.count, quad.count),
+                (exact.load(), quad.load()),
+                (exact.area(), quad.area()),
+                (exact.count(), quad.count()),
             ]
             .into_iter()
             .enumerate()
@@ -86,7 +87,7 @@ fn gaussian_hertz_quadrature_meets_each_tolerance() {
                 );
                 // The reported error estimate covers the true error.
                 assert!(
-                    (a - b).abs() <= quad.error[i] + 1e-12 * a.abs(),
+                    (a - b).abs() <= quad.totals.error(i).unwrap() + 1e-12 * a.abs(),
                     "estimate, tol {tol:e} h {h} output {i}"
                 );
             }
@@ -116,7 +117,9 @@ fn quadrature_over_pdf_matches_moment_above_for_every_distribution() {
             .with_method(Method::Quadrature);
         for h in [-1.0, 0.2, 1.5, 2.9] {
             let q = m
-                .state(h * s.sigma, History::Approach, Outputs::ALL, &acc)
+                .clone()
+                .with_accuracy(acc)
+                .state(h * s.sigma, History::Approach, &Observables::ALL)
                 .unwrap();
             let load: f64 = form
                 .load
@@ -126,17 +129,17 @@ fn quadrature_over_pdf_matches_moment_above_for_every_distribution() {
                 * s.summits();
             let count = s.summits() * dist.moment_above(0.0, h);
             if load == 0.0 {
-                assert_eq!(q.load.unwrap(), 0.0, "{} h {h}", dist.name());
+                assert_eq!(q.load().unwrap(), 0.0, "{} h {h}", dist.name());
                 continue;
             }
-            let e = (q.load.unwrap() / load - 1.0).abs();
+            let e = (q.load().unwrap() / load - 1.0).abs();
             assert!(
                 e < 1e-9,
                 "{} h {h}: {} vs {load} ({e:e})",
                 dist.name(),
-                q.load.unwrap()
+                q.load().unwrap()
             );
-            let e = (q.count.unwrap() / count - 1.0).abs();
+            let e = (q.count().unwrap() / count - 1.0).abs();
             assert!(e < 1e-9, "{} h {h}: count {e:e}", dist.name());
         }
     }
@@ -158,7 +161,11 @@ fn empirical_heights_give_the_exact_sum_over_summits() {
     let m = GwModel::new(s, Arc::new(e.clone()), law).unwrap();
     let acc = Accuracy::new(1e-12).unwrap();
     for d in [-6e-9, -1e-9, 0.0, 2e-9, 4e-9] {
-        let st = m.state(d, History::Approach, Outputs::ALL, &acc).unwrap();
+        let st = m
+            .clone()
+            .with_accuracy(acc)
+            .state(d, History::Approach, &Observables::ALL)
+            .unwrap();
         assert_eq!(st.method, MethodUsed::ClosedForm);
         let mut load = 0.0;
         let mut count = 0.0;
@@ -172,19 +179,19 @@ fn empirical_heights_give_the_exact_sum_over_summits() {
         let scale = s.summits() / z.len() as f64;
         let (load, count) = (load * scale, count * scale);
         assert!(
-            (st.load.unwrap() / load - 1.0).abs() < 1e-12,
+            (st.load().unwrap() / load - 1.0).abs() < 1e-12,
             "d {d}: {} {load}",
-            st.load.unwrap()
+            st.load().unwrap()
         );
-        assert!((st.count.unwrap() / count - 1.0).abs() < 1e-12, "d {d}");
+        assert!((st.count().unwrap() / count - 1.0).abs() < 1e-12, "d {d}");
     }
 }
 
 #[test]
 fn measured_heights_are_summed_exactly_for_any_law() {
-    use asperity::gw::LoadingProgram;
     use asperity::heights::Empirical;
     use asperity::law::{AsperityLaw, Branch, Jkr};
+    use asperity::loading::LoadingProgram;
     let heights_m: Vec<f64> = (0..40)
         .map(|i| 1e-9 * ((i * 37 % 40) as f64 - 17.3) / 4.0)
         .collect();
@@ -198,7 +205,11 @@ fn measured_heights_are_summed_exactly_for_any_law() {
     let closest = -0.5 * sd;
     for d in [closest, 0.0, 0.7 * sd, 1.5 * sd] {
         for history in [History::Approach, History::Retract { closest }] {
-            let st = model.state(d, history, Outputs::ALL, &acc).unwrap();
+            let st = model
+                .clone()
+                .with_accuracy(acc)
+                .state(d, history, &Observables::ALL)
+                .unwrap();
             assert_eq!(st.method, MethodUsed::SampleSum);
             // Brute force over the measured heights (from their mean).
             let (mut p, mut a, mut c) = (0.0, 0.0, 0.0);
@@ -215,17 +226,21 @@ fn measured_heights_are_summed_exactly_for_any_law() {
             let k = n_total / heights_m.len() as f64;
             let close = |x: f64, y: f64| (x - y).abs() <= 1e-12 * y.abs().max(1e-30);
             assert!(
-                close(st.load.unwrap(), k * p),
+                close(st.load().unwrap(), k * p),
                 "{d}: {:?} vs {}",
-                st.load,
+                st.load(),
                 k * p
             );
-            assert!(close(st.area.unwrap(), k * a));
-            assert_eq!(st.count.unwrap(), k * c);
+            assert!(close(st.area().unwrap(), k * a));
+            assert_eq!(st.count().unwrap(), k * c);
         }
     }
     // The whole program runs on the same exact sums.
     let program = LoadingProgram::new(3.0 * sd, closest, 20).unwrap();
-    let curve = model.curve(&program, Outputs::LOAD, &acc).unwrap();
+    let curve = model
+        .clone()
+        .with_accuracy(acc)
+        .curve(&program, &Observables::LOAD)
+        .unwrap();
     assert!(curve.hysteresis_energy().unwrap() > 0.0);
 }

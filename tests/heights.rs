@@ -3,7 +3,7 @@
 //! property tests of F_n (positivity, monotonicity, F_n' = -n F_(n-1)).
 
 use asperity::heights::{
-    by_name, DistributionParams, Empirical, Exponential, Gaussian, HeightDistribution,
+    DistributionKind, DistributionParams, Empirical, Exponential, Gaussian, HeightDistribution,
     TruncatedGaussian, Weibull,
 };
 use proptest::prelude::*;
@@ -285,43 +285,43 @@ fn constructors_validate() {
 }
 
 #[test]
-fn by_name_builds_and_names_fields() {
-    let p = DistributionParams {
-        weibull_shape: Some(2.0),
-        truncation: Some(3.0),
-        heights: Some(vec![1e-9, 2e-9, 4e-9]),
-    };
-    for name in asperity::heights::NAMES {
-        let d = by_name(name, &p).unwrap();
-        assert_eq!(d.name(), name);
-    }
+fn kinds_build_and_name_their_own_parameters() {
+    let by_name = |name: &str, p: &DistributionParams| DistributionKind::parse(name)?.build(p);
     let none = DistributionParams::default();
     for (name, field) in [
-        ("weibull", "surface.weibull_shape"),
-        ("truncated-gaussian", "surface.truncation"),
-        ("empirical", "surface.heights"),
+        ("weibull", "weibull_shape"),
+        ("truncated-gaussian", "truncation"),
+        ("empirical", "heights"),
     ] {
         assert_eq!(by_name(name, &none).unwrap_err().field(), Some(field));
     }
-    let bad = DistributionParams {
-        weibull_shape: Some(-1.0),
-        truncation: Some(f64::NAN),
-        heights: Some(vec![1.0, f64::INFINITY]),
-    };
-    assert_eq!(
-        by_name("weibull", &bad).unwrap_err().field(),
-        Some("surface.weibull_shape")
+    let bad = |p: DistributionParams| p;
+    let e = by_name(
+        "weibull",
+        &bad(DistributionParams {
+            weibull_shape: Some(-1.0),
+            ..Default::default()
+        }),
     );
-    assert_eq!(
-        by_name("truncated-gaussian", &bad).unwrap_err().field(),
-        Some("surface.truncation")
+    assert_eq!(e.unwrap_err().field(), Some("weibull_shape"));
+    let e = by_name(
+        "truncated-gaussian",
+        &bad(DistributionParams {
+            truncation: Some(f64::NAN),
+            ..Default::default()
+        }),
     );
-    assert_eq!(
-        by_name("empirical", &bad).unwrap_err().field(),
-        Some("surface.heights[1]")
+    assert_eq!(e.unwrap_err().field(), Some("truncation"));
+    let e = by_name(
+        "empirical",
+        &bad(DistributionParams {
+            heights: Some(vec![1.0, f64::INFINITY]),
+            ..Default::default()
+        }),
     );
-    let e = by_name("lorentz", &p).unwrap_err();
-    assert_eq!(e.field(), Some("surface.distribution"));
+    assert_eq!(e.unwrap_err().field(), Some("heights[1]"));
+    let e = by_name("lorentz", &none).unwrap_err();
+    assert_eq!(e.field(), Some("distribution"));
     assert!(e.to_string().contains("truncated-gaussian"));
 }
 

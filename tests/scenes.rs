@@ -1,11 +1,11 @@
 //! Scenes end to end: every example scene parses, runs and matches direct
 //! library calls; the planner's skips pay and cost nothing.
 
-use asperity::gw::{Accuracy, GwModel, History, Method, Outputs};
+use asperity::gw::{Accuracy, GwModel, Method};
 use asperity::law::LawKind;
-use asperity::study::scene::{
-    build_contact, build_distribution, build_surface, Plan, PlanMode, Scene,
-};
+use asperity::loading::{History, LoadingModel, Observables};
+use asperity::study::scene::{build_contact, build_distribution, build_surface};
+use asperity::study::{Plan, PlanMode, Scene};
 use std::sync::Arc;
 
 fn example(name: &str) -> Scene {
@@ -58,19 +58,38 @@ fn every_example_scene_runs_and_matches_library_calls() {
             ] {
                 let got = leg[k];
                 let want = model
-                    .state(got.separation, history, Outputs::ALL, &acc)
+                    .clone()
+                    .with_accuracy(acc)
+                    .state(got.separation, history, &Observables::ALL)
                     .unwrap();
                 for (g, w, asked, e) in [
-                    (got.load, want.load, scene.outputs.load, want.error[0]),
-                    (got.area, want.area, scene.outputs.area, want.error[1]),
-                    (got.count, want.count, scene.outputs.count, want.error[2]),
+                    (
+                        got.load(),
+                        want.load(),
+                        scene.outputs.load,
+                        want.totals.error(0).unwrap(),
+                    ),
+                    (
+                        got.area(),
+                        want.area(),
+                        scene.outputs.area,
+                        want.totals.error(1).unwrap(),
+                    ),
+                    (
+                        got.count(),
+                        want.count(),
+                        scene.outputs.count,
+                        want.totals.error(2).unwrap(),
+                    ),
                 ] {
                     if asked {
                         let (g, w) = (g.unwrap(), w.unwrap());
                         // The exact law, not the plan's table (if it made one):
                         // equal to the scene's rtol plus the error estimates.
                         let rtol = scene.accuracy.rtol;
-                        let tol = 2.0 * e + got.error.iter().sum::<f64>() + rtol * w.abs();
+                        let tol = 2.0 * e
+                            + (0..3).filter_map(|i| got.totals.error(i)).sum::<f64>()
+                            + rtol * w.abs();
                         assert!((g - w).abs() <= tol, "{name} {k}: {g} vs {w} (tol {tol})");
                     }
                 }
@@ -78,7 +97,11 @@ fn every_example_scene_runs_and_matches_library_calls() {
         }
         if scene.outputs.pull_off && scene.adhesion.w > 0.0 {
             // A stiff, rough surface may never go tensile: both say so.
-            let direct = model.pull_off(closest, 64, &acc).unwrap();
+            let direct = model
+                .clone()
+                .with_accuracy(acc)
+                .pull_off(closest, 64)
+                .unwrap();
             match (res.pull_off, direct) {
                 (Some(p), Some(d)) => {
                     let tol = scene.accuracy.rtol * d.load.abs();
@@ -92,7 +115,7 @@ fn every_example_scene_runs_and_matches_library_calls() {
         }
         if !scene.outputs.count {
             assert!(
-                res.curve.approach.iter().all(|s| s.count.is_none()),
+                res.curve.approach.iter().all(|s| s.count().is_none()),
                 "{name}"
             );
         }
@@ -139,9 +162,9 @@ fn planned_runs_do_less_work_and_agree_within_tolerance() {
             (&rp.curve.retract, &rf.curve.retract),
         ] {
             let loads =
-                |v: &Vec<asperity::gw::GwState>| v.iter().map(|s| s.load).collect::<Vec<_>>();
+                |v: &Vec<asperity::loading::State>| v.iter().map(|s| s.load()).collect::<Vec<_>>();
             let areas =
-                |v: &Vec<asperity::gw::GwState>| v.iter().map(|s| s.area).collect::<Vec<_>>();
+                |v: &Vec<asperity::loading::State>| v.iter().map(|s| s.area()).collect::<Vec<_>>();
             let gap = worst_gap(&loads(pa), &loads(fa)).max(worst_gap(&areas(pa), &areas(fa)));
             assert!(
                 gap <= rtol,

@@ -1,8 +1,9 @@
 //! A law calibrated from the full LJ sphere solver (mu = 1) runs through the
 //! Greenwood–Williamson integrator with the same API as the analytic laws.
-use asperity::gw::{Accuracy, GwModel, LoadingProgram, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Exponential;
 use asperity::law::{AsperityLaw, Jkr};
+use asperity::loading::{LoadingModel, LoadingProgram, Observables};
 use asperity::sphere::{CalibrationCache, Shape, SolverOptions, SphereProblem};
 use std::sync::Arc;
 
@@ -25,17 +26,28 @@ fn calibrated_law_in_gw_model() {
     let mut pulls = vec![];
     for law in laws {
         let m = GwModel::new(s, Arc::new(Exponential::new()), law.clone()).unwrap();
-        let c = m.curve(&program, Outputs::ALL, &acc).unwrap();
+        let c = m
+            .clone()
+            .with_accuracy(acc)
+            .curve(&program, &Observables::ALL)
+            .unwrap();
         for (a, r) in c.approach.iter().zip(&c.retract) {
-            let tol = a.error[0] + r.error[0] + 1e-12 * a.load.unwrap().abs();
+            let tol = a.totals.error(0).unwrap()
+                + r.totals.error(0).unwrap()
+                + 1e-12 * a.load().unwrap().abs();
             assert!(
-                r.load.unwrap() <= a.load.unwrap() + tol,
+                r.load().unwrap() <= a.load().unwrap() + tol,
                 "{}: {a:?} {r:?}",
                 law.name()
             );
         }
         assert!(c.hysteresis_energy().unwrap() > 0.0, "{}", law.name());
-        let pull = m.pull_off(0.5 * s.sigma, 40, &acc).unwrap().unwrap();
+        let pull = m
+            .clone()
+            .with_accuracy(acc)
+            .pull_off(0.5 * s.sigma, 40)
+            .unwrap()
+            .unwrap();
         assert!(pull.load < 0.0);
         pulls.push(pull.load);
     }

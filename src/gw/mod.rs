@@ -4,19 +4,18 @@
 //! retraction (adhesive hysteresis).
 //!
 //! - [`RoughSurface`]: summit density, radius, height scale, nominal area.
-//! - [`GwModel`]: surface + distribution + law; [`GwModel::state`] at one
-//!   separation, [`GwModel::curve`] over a [`LoadingProgram`],
-//!   [`GwModel::pull_off`].
+//! - [`GwModel`]: surface + distribution + law + [`Accuracy`]; a
+//!   [`LoadingModel`](crate::loading::LoadingModel): `state` at one
+//!   separation, `curve` over a [`LoadingProgram`](crate::loading::LoadingProgram),
+//!   `pull_off`, `separation_at_load` (the loading vocabulary of
+//!   [`crate::loading`], shared with Monte Carlo populations).
 //! - [`dimensionless`]: Fuller–Tabor's adhesion parameter and friends.
 
 pub mod dimensionless;
 mod model;
-mod program;
 mod surface;
 
-pub use model::{Accuracy, GwModel, GwState, History, Method, MethodUsed, Outputs};
-pub(crate) use program::{hysteresis_energy, most_tensile};
-pub use program::{Curve, LoadingProgram, PullOff};
+pub use model::{Accuracy, GwModel, Method, REACH_CEILING_SIGMAS, REACH_FLOOR_SIGMAS};
 pub use surface::RoughSurface;
 
 #[cfg(test)]

@@ -22,58 +22,13 @@
 //! quadrature in `s`, split at every point where the integrand jumps, with
 //! an error estimate measured against `int |integrand|`.
 
-use crate::error::{finite, Allowed, Error, Result};
+use crate::error::{Allowed, Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::law::{AsperityLaw, Branch, ContactState};
+use crate::law::{AsperityLaw, Branch};
+use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
 use crate::numeric::quadrature::{integrate_pieces_n, kronrod21_n, QuadOptions};
 use std::sync::Arc;
-
-/// Which totals to compute; the others are skipped (reported as `None`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Outputs {
-    /// Total load (N).
-    pub load: bool,
-    /// Real contact area (m^2).
-    pub area: bool,
-    /// Number of contacts.
-    pub count: bool,
-}
-
-impl Outputs {
-    /// Load, area and count.
-    pub const ALL: Outputs = Outputs {
-        load: true,
-        area: true,
-        count: true,
-    };
-    /// Load only.
-    pub const LOAD: Outputs = Outputs {
-        load: true,
-        area: false,
-        count: false,
-    };
-
-    fn mask(&self) -> [f64; 3] {
-        [
-            f64::from(u8::from(self.load)),
-            f64::from(u8::from(self.area)),
-            f64::from(u8::from(self.count)),
-        ]
-    }
-}
-
-/// Where in the loading program the flat is.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum History {
-    /// Approaching from far away: every asperity on its approach branch.
-    Approach,
-    /// Retracting after the flat came as close as `closest` (m).
-    Retract {
-        /// Closest separation reached (m).
-        closest: f64,
-    },
-}
 
 /// How to integrate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -93,19 +48,6 @@ pub enum Method {
     },
 }
 
-/// Which method served a result.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum MethodUsed {
-    /// `F_n` closed forms.
-    ClosedForm,
-    /// Adaptive Gauss–Kronrod quadrature.
-    Quadrature,
-    /// A fixed composite Kronrod rule.
-    Fixed,
-    /// An exact average over a finite sample of heights (measured summits).
-    SampleSum,
-}
-
 /// Accuracy asked of the integration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Accuracy {
@@ -119,6 +61,13 @@ pub struct Accuracy {
 }
 
 impl Accuracy {
+    /// `rel_tol = 1e-8` with [`Method::Auto`].
+    pub const DEFAULT: Accuracy = Accuracy {
+        rel_tol: 1e-8,
+        method: Method::Auto,
+        max_intervals: 4000,
+    };
+
     /// Tolerance `rel_tol` with [`Method::Auto`].
     ///
     /// # Errors
@@ -139,30 +88,18 @@ impl Accuracy {
     }
 }
 
-/// Totals at one separation. Outputs not asked for are `None`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct GwState {
-    /// Separation `d` of the flat from the reference plane (m).
-    pub separation: f64,
-    /// Total load (N), > 0 compressive.
-    pub load: Option<f64>,
-    /// Real contact area (m^2).
-    pub area: Option<f64>,
-    /// Expected number of contacts.
-    pub count: Option<f64>,
-    /// Estimated absolute errors of (load, area, count), same units.
-    pub error: [f64; 3],
-    /// Method that produced the numbers.
-    pub method: MethodUsed,
-    /// Law evaluations spent (0 for closed forms).
-    pub evaluations: usize,
-}
-
 /// Relative accuracy credited to closed forms: the `F_n` promise (1e-13)
 /// times a margin for the handful of products and sums.
 const CLOSED_FORM_REL_ERROR: f64 = 1e-12;
 /// Tail probability beyond which heights are skipped: below any double.
 const SUPPORT_EPS: f64 = 1e-300;
+/// Lowest interference of [`GwModel::reachable_interferences`], in
+/// standard deviations: laws with a long-range tail contribute nothing
+/// measurable from summits further below the flat.
+pub const REACH_FLOOR_SIGMAS: f64 = 10.0;
+/// Highest summit of [`GwModel::reachable_interferences`], in standard
+/// deviations: Gaussian tails underflow f64 near 38.5.
+pub const REACH_CEILING_SIGMAS: f64 = 40.0;
 
 /// A rough surface with one asperity law and one height distribution.
 #[derive(Debug, Clone)]
@@ -170,11 +107,13 @@ pub struct GwModel {
     surface: RoughSurface,
     distribution: Arc<dyn HeightDistribution>,
     law: Arc<dyn AsperityLaw>,
+    accuracy: Accuracy,
 }
 
 impl GwModel {
     /// Combines a surface, a standardised height distribution and a law built
-    /// for the surface's summit radius.
+    /// for the surface's summit radius, integrated to [`Accuracy::DEFAULT`]
+    /// (change it with [`GwModel::with_accuracy`]).
     ///
     /// # Errors
     /// [`Error::Invalid`] naming `law` when the law diverges at a finite
@@ -200,7 +139,14 @@ impl GwModel {
             surface,
             distribution,
             law,
+            accuracy: Accuracy::DEFAULT,
         })
+    }
+
+    /// The same model integrated to `accuracy`.
+    pub fn with_accuracy(mut self, accuracy: Accuracy) -> Self {
+        self.accuracy = accuracy;
+        self
     }
 
     /// The surface.
@@ -218,75 +164,59 @@ impl GwModel {
         self.distribution.as_ref()
     }
 
-    /// Largest separation (m) at which any asperity within the numerical
-    /// support feels the flat: `sigma s_max - cutoff`. Beyond it every total
-    /// is exactly zero.
-    pub fn interaction_onset(&self) -> f64 {
-        let (_, s_hi) = self.distribution.numerical_support(SUPPORT_EPS);
-        self.surface.sigma * s_hi - self.law.cutoff_interference()
+    /// The accuracy asked of the integration.
+    pub fn accuracy(&self) -> &Accuracy {
+        &self.accuracy
     }
 
-    /// Load, area and count at separation `d` (m) after `history`.
-    ///
-    /// # Errors
-    /// [`Error::OutOfRange`] for a non-finite separation or a retraction
-    /// from a `closest` separation above `d`; [`Error::Invalid`] when
-    /// [`Method::ClosedForm`] is asked of a law without one;
-    /// [`Error::NoConvergence`] when quadrature cannot meet the tolerance.
-    pub fn state(
-        &self,
-        separation: f64,
-        history: History,
-        outputs: Outputs,
-        accuracy: &Accuracy,
-    ) -> Result<GwState> {
-        finite("separation", separation)?;
-        if let History::Retract { closest } = history {
-            finite("closest_separation", closest)?;
-            if closest > separation {
-                return Err(Error::OutOfRange {
-                    name: "separation".into(),
-                    value: separation,
-                    allowed: Allowed::closed(closest, f64::INFINITY),
-                });
-            }
-        }
-        let closed = match accuracy.method {
-            Method::Quadrature | Method::Fixed { .. } => None,
-            Method::Auto => self.closed_form(separation, outputs),
-            Method::ClosedForm => Some(self.closed_form(separation, outputs).ok_or_else(|| {
-                Error::invalid(
-                    "method",
-                    format!(
-                        "no closed form for law {} on {} heights",
-                        self.law.name(),
-                        self.distribution.name()
-                    ),
-                )
-            })?),
-        };
-        match (closed, self.distribution.sample_points(), accuracy.method) {
-            (Some(s), _, _) => Ok(s),
-            (None, Some(points), Method::Auto | Method::Quadrature) => {
-                Ok(self.sample_sum(points, separation, history, outputs))
-            }
-            _ => self.quadrature(separation, history, outputs, accuracy),
-        }
+    /// Whether the law and distribution give closed forms for `observables`
+    /// (a sum of powers over `F_n` with closed forms; load, area and count
+    /// only).
+    pub fn has_closed_form(&self, observables: &Observables) -> bool {
+        observables.extras().is_empty()
+            && self.law.power_form().is_some_and(|f| {
+                f.load
+                    .iter()
+                    .chain(&f.area)
+                    .all(|&(_, n)| self.distribution.closed_form_moment(n))
+                    && self.distribution.closed_form_moment(0.0)
+            })
+    }
+
+    /// Default start of a program (m): the separation beyond which the
+    /// summits the flat can reach (`z > d + cutoff`) make up less than
+    /// `fraction` of all summits, `sigma q(1 - fraction) - cutoff`, capped
+    /// at the [interaction onset](LoadingModel::interaction_onset).
+    pub fn start_separation(&self, fraction: f64) -> f64 {
+        let s = self.distribution.quantile(1.0 - fraction);
+        let top = self.interaction_onset();
+        (self.surface.sigma * s - self.law.cutoff_interference()).min(top)
+    }
+
+    /// Interferences (m) the summits reach in a program that comes as close
+    /// as `closest` (m): from the law's cutoff (but no lower than
+    /// [`REACH_FLOOR_SIGMAS`] `sigma` below contact) up to the highest
+    /// represented summit (no higher than [`REACH_CEILING_SIGMAS`] `sigma`)
+    /// minus `closest`. A table of the law over this interval serves the
+    /// whole program.
+    pub fn reachable_interferences(&self, closest: f64) -> (f64, f64) {
+        let sigma = self.surface.sigma;
+        let (_, s_top) = self.distribution.numerical_support(SUPPORT_EPS);
+        let lo = self
+            .law
+            .cutoff_interference()
+            .max(-REACH_FLOOR_SIGMAS * sigma);
+        let hi = sigma * s_top.min(REACH_CEILING_SIGMAS) - closest;
+        (lo, hi)
     }
 
     /// Closed forms: `eta A_n sum c sigma^n F_n((d + onset)/sigma)`.
-    fn closed_form(&self, d: f64, outputs: Outputs) -> Option<GwState> {
-        let form = self.law.power_form()?;
-        let dist = self.distribution.as_ref();
-        let all_closed = form
-            .load
-            .iter()
-            .chain(form.area.iter())
-            .all(|&(_, n)| dist.closed_form_moment(n))
-            && dist.closed_form_moment(0.0);
-        if !all_closed {
+    fn closed_form(&self, d: f64, observables: &Observables) -> Option<State> {
+        if !self.has_closed_form(observables) {
             return None;
         }
+        let form = self.law.power_form()?;
+        let dist = self.distribution.as_ref();
         let sigma = self.surface.sigma;
         let h = (d + form.onset) / sigma;
         let n_total = self.surface.summits();
@@ -299,23 +229,20 @@ impl GwModel {
             }
             (n_total * v, n_total * mag * CLOSED_FORM_REL_ERROR)
         };
-        let (load, load_err) = if outputs.load {
-            sum(&form.load)
-        } else {
-            (0.0, 0.0)
-        };
-        let (area, area_err) = if outputs.area {
-            sum(&form.area)
-        } else {
-            (0.0, 0.0)
-        };
+        let mut values = [0.0; SLOTS];
+        let mut errors = [0.0; SLOTS];
+        if observables.load {
+            (values[0], errors[0]) = sum(&form.load);
+        }
+        if observables.area {
+            (values[1], errors[1]) = sum(&form.area);
+        }
         let count = n_total * dist.moment_above(0.0, h);
-        Some(GwState {
+        values[2] = count;
+        errors[2] = count * CLOSED_FORM_REL_ERROR;
+        Some(State {
             separation: d,
-            load: outputs.load.then_some(load),
-            area: outputs.area.then_some(area),
-            count: outputs.count.then_some(count),
-            error: [load_err, area_err, count * CLOSED_FORM_REL_ERROR],
+            totals: Totals::new(values, errors, observables.mask()),
             method: MethodUsed::ClosedForm,
             evaluations: 0,
         })
@@ -324,30 +251,30 @@ impl GwModel {
     /// Exact totals over a finite sample of standardised heights `s_i`:
     /// `eta A_n (1/n) sum f(sigma s_i - d)`; only summits above the law's
     /// cutoff are visited (the points are sorted). Error: rounding only.
-    fn sample_sum(&self, points: &[f64], d: f64, history: History, outputs: Outputs) -> GwState {
+    fn sample_sum(&self, points: &[f64], d: f64, history: History, obs: &Observables) -> State {
         let sigma = self.surface.sigma;
         let law = self.law.as_ref();
         let first = points.partition_point(|&s| sigma * s - d < law.cutoff_interference());
-        let (mut load, mut area, mut count) = (0.0, 0.0, 0.0);
+        let mut sum = [0.0; SLOTS];
         for &s in &points[first..] {
             let delta = sigma * s - d;
             let st = match history {
                 History::Approach => law.state(delta, Branch::Approach),
                 History::Retract { closest } => law.state_after(delta, sigma * s - closest),
             };
-            load += st.load;
-            area += st.area();
-            count += if st.in_contact() { 1.0 } else { 0.0 };
+            let v = obs.evaluate(&st);
+            for k in 0..SLOTS {
+                sum[k] += v[k];
+            }
         }
         let scale = self.surface.summits() / points.len() as f64;
         let visited = points.len() - first;
-        let rounding = |x: f64| 4.0 * f64::EPSILON * x.abs() * (visited as f64).sqrt();
-        GwState {
+        let values = sum.map(|x| scale * x);
+        let mut errors = values.map(|x| 4.0 * f64::EPSILON * x.abs() * (visited as f64).sqrt());
+        errors[2] = 0.0; // counting is exact
+        State {
             separation: d,
-            load: outputs.load.then_some(scale * load),
-            area: outputs.area.then_some(scale * area),
-            count: outputs.count.then_some(scale * count),
-            error: [rounding(scale * load), rounding(scale * area), 0.0],
+            totals: Totals::new(values, errors, obs.mask()),
             method: MethodUsed::SampleSum,
             evaluations: visited,
         }
@@ -355,57 +282,45 @@ impl GwModel {
 
     /// Adaptive quadrature over standardised heights, split where the
     /// integrand jumps.
-    fn quadrature(
-        &self,
-        d: f64,
-        history: History,
-        outputs: Outputs,
-        accuracy: &Accuracy,
-    ) -> Result<GwState> {
+    fn quadrature(&self, d: f64, history: History, obs: &Observables) -> Result<State> {
         let sigma = self.surface.sigma;
         let law = self.law.as_ref();
         let dist = self.distribution.as_ref();
+        let accuracy = &self.accuracy;
         let (sup_lo, sup_hi) = dist.numerical_support(SUPPORT_EPS);
         // Below the cutoff every branch gives exactly zero: skip.
         let s_lo = ((d + law.cutoff_interference()) / sigma).max(sup_lo);
         // A rigid law is bounded by its own divergence (checked in `new`).
         let s_hi = sup_hi.min((d + law.max_interference()) / sigma);
-        let mask = outputs.mask();
-        let empty = GwState {
-            separation: d,
-            load: outputs.load.then_some(0.0),
-            area: outputs.area.then_some(0.0),
-            count: outputs.count.then_some(0.0),
-            error: [0.0; 3],
-            method: MethodUsed::Quadrature,
-            evaluations: 0,
-        };
+        let mask = obs.mask();
         if !(s_hi > s_lo) {
-            return Ok(empty);
+            return Ok(State {
+                separation: d,
+                totals: Totals::new([0.0; SLOTS], [0.0; SLOTS], mask),
+                method: MethodUsed::Quadrature,
+                evaluations: 0,
+            });
         }
         let points = self.split_points(d, history, s_lo, s_hi);
         // Load alone needs no contact radius: cheaper for tabulated laws.
-        let load_only = mask[1] == 0.0 && mask[2] == 0.0;
-        let eval = |s: f64| -> [f64; 3] {
+        let load_only = obs.load_only();
+        let eval = |s: f64| -> [f64; SLOTS] {
             let delta = sigma * s - d;
+            let w = dist.pdf(s);
             if load_only {
                 let p = match history {
                     History::Approach => law.load(delta, Branch::Approach),
                     History::Retract { closest } => law.load_after(delta, sigma * s - closest),
                 };
-                return [p * dist.pdf(s), 0.0, 0.0];
+                let mut v = [0.0; SLOTS];
+                v[0] = p * w;
+                return v;
             }
-            let st: ContactState = match history {
+            let st = match history {
                 History::Approach => law.state(delta, Branch::Approach),
                 History::Retract { closest } => law.state_after(delta, sigma * s - closest),
             };
-            let w = dist.pdf(s);
-            let contact = if st.radius > 0.0 { 1.0 } else { 0.0 };
-            [
-                mask[0] * st.load * w,
-                mask[1] * st.area() * w,
-                mask[2] * contact * w,
-            ]
+            obs.evaluate(&st).map(|x| x * w)
         };
         let opts = QuadOptions {
             rel_tol: accuracy.rel_tol,
@@ -413,70 +328,31 @@ impl GwModel {
             max_intervals: accuracy.max_intervals,
             relative_to_magnitude: true,
         };
-        if let Method::Fixed { panels } = accuracy.method {
-            return Ok(self.fixed_rule(d, outputs, eval, &points, panels.max(1)));
-        }
-        let q = integrate_pieces_n(eval, &points, &opts);
-        if !q.converged {
-            let worst = (0..3)
-                .map(|i| q.error[i] / q.value[i].abs().max(f64::MIN_POSITIVE))
-                .fold(0.0, f64::max);
-            return Err(Error::NoConvergence {
-                what: format!("GW quadrature of {} at separation {d:e} m", law.name()),
-                iterations: q.evaluations,
-                residual: worst,
-            });
-        }
         let n_total = self.surface.summits();
-        Ok(GwState {
-            separation: d,
-            load: outputs.load.then_some(n_total * q.value[0]),
-            area: outputs.area.then_some(n_total * q.value[1]),
-            count: outputs.count.then_some(n_total * q.value[2]),
-            error: [
-                n_total * q.error[0],
-                n_total * q.error[1],
-                n_total * q.error[2],
-            ],
-            method: MethodUsed::Quadrature,
-            evaluations: q.evaluations,
-        })
-    }
-
-    /// The fixed composite rule: `panels` K21 panels on every piece.
-    fn fixed_rule<F: FnMut(f64) -> [f64; 3]>(
-        &self,
-        d: f64,
-        outputs: Outputs,
-        mut eval: F,
-        points: &[f64],
-        panels: usize,
-    ) -> GwState {
-        let (mut value, mut error) = ([0.0; 3], [0.0; 3]);
-        let mut evaluations = 0;
-        for w in points.windows(2) {
-            let step = (w[1] - w[0]) / panels as f64;
-            for k in 0..panels {
-                let a = w[0] + step * k as f64;
-                let b = if k + 1 == panels { w[1] } else { a + step };
-                let (v, e, _) = kronrod21_n(&mut eval, a, b);
-                evaluations += 21;
-                for i in 0..3 {
-                    value[i] += v[i];
-                    error[i] += e[i];
-                }
+        let (value, error, evaluations, method) = if let Method::Fixed { panels } = accuracy.method
+        {
+            let (v, e, n) = fixed_rule(eval, &points, panels.max(1));
+            (v, e, n, MethodUsed::Fixed)
+        } else {
+            let q = integrate_pieces_n(eval, &points, &opts);
+            if !q.converged {
+                let worst = (0..SLOTS)
+                    .map(|i| q.error[i] / q.value[i].abs().max(f64::MIN_POSITIVE))
+                    .fold(0.0, f64::max);
+                return Err(Error::NoConvergence {
+                    what: format!("GW quadrature of {} at separation {d:e} m", law.name()),
+                    iterations: q.evaluations,
+                    residual: worst,
+                });
             }
-        }
-        let n_total = self.surface.summits();
-        GwState {
+            (q.value, q.error, q.evaluations, MethodUsed::Quadrature)
+        };
+        Ok(State {
             separation: d,
-            load: outputs.load.then_some(n_total * value[0]),
-            area: outputs.area.then_some(n_total * value[1]),
-            count: outputs.count.then_some(n_total * value[2]),
-            error: error.map(|e| n_total * e),
-            method: MethodUsed::Fixed,
+            totals: Totals::new(value.map(|x| n_total * x), error.map(|x| n_total * x), mask),
+            method,
             evaluations,
-        }
+        })
     }
 
     /// Panel ends in `s`: the range, every law breakpoint (both branches),
@@ -514,5 +390,89 @@ impl GwModel {
         pts.sort_by(f64::total_cmp);
         pts.dedup();
         pts
+    }
+}
+
+/// The fixed composite rule: `panels` K21 panels on every piece; returns
+/// values, error estimates and evaluations.
+fn fixed_rule<F: FnMut(f64) -> [f64; SLOTS]>(
+    mut eval: F,
+    points: &[f64],
+    panels: usize,
+) -> ([f64; SLOTS], [f64; SLOTS], usize) {
+    let (mut value, mut error) = ([0.0; SLOTS], [0.0; SLOTS]);
+    let mut evaluations = 0;
+    for w in points.windows(2) {
+        let step = (w[1] - w[0]) / panels as f64;
+        for k in 0..panels {
+            let a = w[0] + step * k as f64;
+            let b = if k + 1 == panels { w[1] } else { a + step };
+            let (v, e, _) = kronrod21_n(&mut eval, a, b);
+            evaluations += 21;
+            for i in 0..SLOTS {
+                value[i] += v[i];
+                error[i] += e[i];
+            }
+        }
+    }
+    (value, error, evaluations)
+}
+
+impl LoadingModel for GwModel {
+    /// Totals at separation `d` (m) after `history`: closed forms where they
+    /// exist (and the method allows), an exact sum over a finite sample of
+    /// heights, or quadrature.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] for a non-finite separation or a retraction
+    /// from a `closest` separation above `d`; [`Error::Invalid`] when
+    /// [`Method::ClosedForm`] is asked of a law without one;
+    /// [`Error::NoConvergence`] when quadrature cannot meet the tolerance.
+    fn state(&self, separation: f64, history: History, observables: &Observables) -> Result<State> {
+        history.check(separation)?;
+        let closed = match self.accuracy.method {
+            Method::Quadrature | Method::Fixed { .. } => None,
+            Method::Auto => self.closed_form(separation, observables),
+            Method::ClosedForm => {
+                Some(self.closed_form(separation, observables).ok_or_else(|| {
+                    Error::invalid(
+                        "method",
+                        format!(
+                            "no closed form for law {} on {} heights",
+                            self.law.name(),
+                            self.distribution.name()
+                        ),
+                    )
+                })?)
+            }
+        };
+        match (
+            closed,
+            self.distribution.sample_points(),
+            self.accuracy.method,
+        ) {
+            (Some(s), _, _) => Ok(s),
+            (None, Some(points), Method::Auto | Method::Quadrature) => {
+                Ok(self.sample_sum(points, separation, history, observables))
+            }
+            _ => self.quadrature(separation, history, observables),
+        }
+    }
+
+    /// `sigma s_max - cutoff`, `s_max` the end of the numerical support:
+    /// beyond it every total is exactly zero.
+    fn interaction_onset(&self) -> f64 {
+        let (_, s_hi) = self.distribution.numerical_support(SUPPORT_EPS);
+        self.surface.sigma * s_hi - self.law.cutoff_interference()
+    }
+
+    /// `rtol sigma`.
+    fn separation_tolerance(&self) -> f64 {
+        self.accuracy.rel_tol * self.surface.sigma
+    }
+
+    /// `sigma`.
+    fn height_scale(&self) -> f64 {
+        self.surface.sigma
     }
 }

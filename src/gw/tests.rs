@@ -6,6 +6,7 @@
 use super::*;
 use crate::heights::Exponential;
 use crate::law::{AsperityLaw, Hertz, Jkr};
+use crate::loading::{History, LoadingModel, LoadingProgram, MethodUsed, Observables};
 use std::sync::Arc;
 
 fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
@@ -25,20 +26,21 @@ fn quadrature_reproduces_closed_form_for_hertz() {
         let acc = Accuracy::new(tol).unwrap();
         for h in [0.0, 0.5, 2.0, 6.0] {
             let d = h * s.sigma;
-            let exact = m.state(d, History::Approach, Outputs::ALL, &acc).unwrap();
+            let exact = m
+                .clone()
+                .with_accuracy(acc)
+                .state(d, History::Approach, &Observables::ALL)
+                .unwrap();
             assert_eq!(exact.method, MethodUsed::ClosedForm);
             let quad = m
-                .state(
-                    d,
-                    History::Approach,
-                    Outputs::ALL,
-                    &acc.with_method(Method::Quadrature),
-                )
+                .clone()
+                .with_accuracy(acc.with_method(Method::Quadrature))
+                .state(d, History::Approach, &Observables::ALL)
                 .unwrap();
             for (a, b) in [
-                (exact.load, quad.load),
-                (exact.area, quad.area),
-                (exact.count, quad.count),
+                (exact.load(), quad.load()),
+                (exact.area(), quad.area()),
+                (exact.count(), quad.count()),
             ] {
                 let (a, b) = (a.unwrap(), b.unwrap());
                 assert!(
@@ -57,15 +59,25 @@ fn jkr_retraction_is_more_tensile_than_approach() {
     let m = model(Arc::new(Jkr::new(s.radius, 1e9, 0.5).unwrap()));
     let acc = Accuracy::new(1e-8).unwrap();
     let program = LoadingProgram::new(8.0 * s.sigma, 0.5 * s.sigma, 40).unwrap();
-    let c = m.curve(&program, Outputs::ALL, &acc).unwrap();
+    let c = m
+        .clone()
+        .with_accuracy(acc)
+        .curve(&program, &Observables::ALL)
+        .unwrap();
     for (a, r) in c.approach.iter().zip(&c.retract) {
         assert!(
-            r.load.unwrap() <= a.load.unwrap() + a.error[0] + r.error[0],
+            r.load().unwrap()
+                <= a.load().unwrap() + a.totals.error(0).unwrap() + r.totals.error(0).unwrap(),
             "{a:?} {r:?}"
         );
     }
     assert!(c.hysteresis_energy().unwrap() > 0.0);
-    let pull = m.pull_off(0.5 * s.sigma, 60, &acc).unwrap().unwrap();
+    let pull = m
+        .clone()
+        .with_accuracy(acc)
+        .pull_off(0.5 * s.sigma, 60)
+        .unwrap()
+        .unwrap();
     assert!(pull.load < 0.0);
     assert!(pull.load <= c.sampled_pull_off().unwrap().load + 1e-12);
 }
@@ -76,10 +88,14 @@ fn bad_inputs_are_rejected() {
     let m = model(Arc::new(Hertz::new(s.radius, 4.8e10).unwrap()));
     let acc = Accuracy::new(1e-6).unwrap();
     assert!(m
-        .state(f64::NAN, History::Approach, Outputs::ALL, &acc)
+        .clone()
+        .with_accuracy(acc)
+        .state(f64::NAN, History::Approach, &Observables::ALL)
         .is_err());
     let e = m
-        .state(0.0, History::Retract { closest: 1e-9 }, Outputs::ALL, &acc)
+        .clone()
+        .with_accuracy(acc)
+        .state(0.0, History::Retract { closest: 1e-9 }, &Observables::ALL)
         .unwrap_err();
     assert_eq!(e.field(), Some("separation"));
     assert_eq!(Accuracy::new(0.5).unwrap_err().field(), Some("rel_tol"));
@@ -95,9 +111,11 @@ fn unrequested_outputs_are_none() {
     let m = model(Arc::new(Jkr::new(s.radius, 1e9, 0.5).unwrap()));
     let acc = Accuracy::new(1e-6).unwrap();
     let st = m
-        .state(s.sigma, History::Approach, Outputs::LOAD, &acc)
+        .clone()
+        .with_accuracy(acc)
+        .state(s.sigma, History::Approach, &Observables::LOAD)
         .unwrap();
-    assert!(st.load.is_some() && st.area.is_none() && st.count.is_none());
+    assert!(st.load().is_some() && st.area().is_none() && st.count().is_none());
 }
 
 #[test]
@@ -107,22 +125,21 @@ fn fixed_rule_converges_as_panels_grow() {
     let acc = Accuracy::new(1e-12).unwrap();
     let d = 0.7 * s.sigma;
     let exact = m
-        .state(d, History::Approach, Outputs::LOAD, &acc)
+        .clone()
+        .with_accuracy(acc)
+        .state(d, History::Approach, &Observables::LOAD)
         .unwrap()
-        .load
+        .load()
         .unwrap();
     let mut last = f64::INFINITY;
     for panels in [1, 2, 8, 32] {
         let st = m
-            .state(
-                d,
-                History::Approach,
-                Outputs::LOAD,
-                &acc.with_method(Method::Fixed { panels }),
-            )
+            .clone()
+            .with_accuracy(acc.with_method(Method::Fixed { panels }))
+            .state(d, History::Approach, &Observables::LOAD)
             .unwrap();
         assert_eq!(st.method, MethodUsed::Fixed);
-        let err = (st.load.unwrap() - exact).abs() / exact;
+        let err = (st.load().unwrap() - exact).abs() / exact;
         assert!(
             err < last || err < 1e-14,
             "panels {panels}: {err} after {last}"

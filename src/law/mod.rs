@@ -31,7 +31,9 @@ pub mod errors;
 pub mod hertz;
 pub mod interpolated;
 pub mod jkr;
+mod kind;
 pub mod maugis;
+mod scaling;
 pub mod tabulated;
 
 pub use bradley::Bradley;
@@ -39,11 +41,11 @@ pub use cos::Cos;
 pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
+pub use kind::{LawInputs, LawKind};
 pub use maugis::{Maugis, MaugisCurve};
+pub use scaling::RadiusScaling;
 pub use tabulated::Tabulated;
 
-use crate::error::{Error, Result};
-use crate::material::AsperityContact;
 use std::f64::consts::PI;
 use std::fmt;
 
@@ -202,138 +204,4 @@ pub struct PowerForm {
     pub load: Vec<(f64, f64)>,
     /// Area terms `(d, m)`: `d (delta - onset)^m` in m^2.
     pub area: Vec<(f64, f64)>,
-}
-
-/// The laws the CLI and scenes can name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum LawKind {
-    /// [`Hertz`]: no adhesion.
-    Hertz,
-    /// [`Bradley`]: rigid sphere, Lennard-Jones 9-3 surface force.
-    Bradley,
-    /// [`Dmt`]: Hertz profile plus a constant adhesive pull `2 pi w R`.
-    Dmt,
-    /// [`Jkr`]: short-range adhesion, surface energy inside the contact.
-    Jkr,
-    /// [`Maugis`]: exact Maugis–Dugdale, Dugdale stress matched to
-    /// Lennard-Jones (`lambda = 1.1570 mu`, [`AsperityContact::lambda`]).
-    Maugis,
-    /// [`Cos`]: the Carpick–Ogletree–Salmeron fit at the same `lambda`.
-    Cos,
-}
-
-impl LawKind {
-    /// Every kind, in the order tables list them.
-    pub const ALL: [LawKind; 6] = [
-        LawKind::Hertz,
-        LawKind::Bradley,
-        LawKind::Dmt,
-        LawKind::Jkr,
-        LawKind::Maugis,
-        LawKind::Cos,
-    ];
-
-    /// Lower-case name as used on the command line and in scenes.
-    pub fn name(self) -> &'static str {
-        match self {
-            LawKind::Hertz => "hertz",
-            LawKind::Bradley => "bradley",
-            LawKind::Dmt => "dmt",
-            LawKind::Jkr => "jkr",
-            LawKind::Maugis => "maugis",
-            LawKind::Cos => "cos",
-        }
-    }
-
-    /// Parses a lower-case name.
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `law` and listing the known names.
-    pub fn parse(name: &str) -> Result<Self> {
-        LawKind::ALL
-            .iter()
-            .copied()
-            .find(|k| k.name() == name)
-            .ok_or_else(|| {
-                let known: Vec<_> = LawKind::ALL.iter().map(|k| k.name()).collect();
-                Error::invalid(
-                    "law",
-                    format!("unknown law {name:?}; known: {}", known.join(", ")),
-                )
-            })
-    }
-
-    /// Whether the law needs a work of adhesion `w > 0`.
-    pub fn is_adhesive(self) -> bool {
-        !matches!(self, LawKind::Hertz)
-    }
-
-    /// Builds the law for one asperity contact.
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `work_of_adhesion` when an adhesive law is
-    /// asked for with `w = 0`; otherwise what the law's constructor reports.
-    pub fn build(self, contact: &AsperityContact) -> Result<Box<dyn AsperityLaw>> {
-        let r = contact.radius;
-        let e = contact.contact_modulus;
-        let w = contact.adhesion.work();
-        if self.is_adhesive() && !(w > 0.0) {
-            return Err(Error::invalid(
-                "work_of_adhesion",
-                format!(
-                    "the {} law needs adhesion (w > 0, got {w}); use hertz for w = 0",
-                    self.name()
-                ),
-            ));
-        }
-        Ok(match self {
-            LawKind::Hertz => Box::new(Hertz::new(r, e)?),
-            LawKind::Bradley => Box::new(Bradley::new(r, w, contact.adhesion.range())?),
-            LawKind::Dmt => Box::new(Dmt::new(r, e, w)?),
-            LawKind::Jkr => Box::new(Jkr::new(r, e, w)?),
-            LawKind::Maugis => Box::new(Maugis::new(r, e, w, contact.lambda())?),
-            LawKind::Cos => Box::new(Cos::new(r, e, w, contact.lambda())?),
-        })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn law_kind_round_trips_and_rejects_unknown() {
-        for k in LawKind::ALL {
-            assert_eq!(LawKind::parse(k.name()).unwrap(), k);
-        }
-        let e = LawKind::parse("hertzz").unwrap_err();
-        assert_eq!(e.field(), Some("law"));
-        assert!(e.to_string().contains("hertzz"));
-    }
-
-    #[test]
-    fn laws_are_send_sync_and_object_safe() {
-        fn assert_send_sync<T: Send + Sync + ?Sized>() {}
-        assert_send_sync::<dyn AsperityLaw>();
-        let c = AsperityContact::gold_microswitch();
-        let laws: Vec<Box<dyn AsperityLaw>> =
-            LawKind::ALL.iter().map(|k| k.build(&c).unwrap()).collect();
-        assert_eq!(laws.len(), LawKind::ALL.len());
-    }
-
-    #[test]
-    fn adhesive_laws_reject_zero_work_of_adhesion() {
-        let mut c = AsperityContact::gold_microswitch();
-        c.adhesion = crate::material::Adhesion::new(0.0, 3e-10).unwrap();
-        for k in LawKind::ALL {
-            let r = k.build(&c);
-            if k.is_adhesive() {
-                let e = r.unwrap_err();
-                assert_eq!(e.field(), Some("work_of_adhesion"), "{k:?}");
-                assert!(e.to_string().contains(k.name()), "{e}");
-            } else {
-                assert!(r.is_ok());
-            }
-        }
-    }
 }

@@ -10,16 +10,17 @@
 //!   [`HeightDistribution`](crate::heights::HeightDistribution) (exact sorted
 //!   order statistics, seeded, thread-count independent), optional
 //!   lognormal radii ([`RadiusSpec`]).
-//! - [`SummitLaw`]: a law plus its [`RadiusScaling`], so one law object
+//! - [`SummitLaw`]: a law plus its [`RadiusScaling`](crate::law::RadiusScaling), so one law object
 //!   serves every radius.
-//! - [`MonteCarlo`]: population + law; [`MonteCarlo::state`] at one
-//!   separation after a [`History`](crate::gw::History),
-//!   [`MonteCarlo::curve`] over a [`LoadingProgram`](crate::gw::LoadingProgram),
-//!   with standard errors ([`McState`]); [`MonteCarlo::sequence`] for any
-//!   path of separations (per-summit attach state);
-//!   [`MonteCarlo::separation_for_load`] for load-limited programs;
-//!   [`McState::deviation_from`] for z-scores against a
-//!   [`GwState`](crate::gw::GwState).
+//! - [`MonteCarlo`]: population + law, a
+//!   [`LoadingModel`](crate::loading::LoadingModel) like
+//!   [`GwModel`](crate::gw::GwModel): `state` at one separation after a
+//!   [`History`](crate::loading::History), `curve` over a
+//!   [`LoadingProgram`](crate::loading::LoadingProgram), `separation_at_load`,
+//!   with standard errors as the states' uncertainties;
+//!   [`MonteCarlo::sequence`] for any path of separations (per-summit attach
+//!   state); [`State::deviation_from`](crate::loading::State::deviation_from)
+//!   for z-scores against the integral.
 //!
 //! Laws are summed exactly as [`GwModel`](crate::gw::GwModel) integrates
 //! them (same heights origin, same `state`/`state_after` calls), so a
@@ -27,19 +28,19 @@
 //! summits is an unbiased estimate of the GW totals.
 //!
 //! ```
-//! use asperity::gw::{History, Outputs};
+//! use asperity::loading::{History, LoadingModel, Observables};
 //! use asperity::heights::Exponential;
-//! use asperity::law::Hertz;
+//! use asperity::law::{Hertz, RadiusScaling};
 //! use asperity::montecarlo::*;
 //! use std::sync::Arc;
 //! let spec = PopulationSpec::new(10_000, 5e-9, RadiusSpec::Fixed(1e-6), 42)?;
 //! let pop = Arc::new(Population::sample(&spec, &Exponential::new())?);
 //! let law = SummitLaw::scaled(Arc::new(Hertz::new(1e-6, 5e10)?), 1e-6, RadiusScaling::MAUGIS)?;
 //! let mc = MonteCarlo::new(pop, law)?;
-//! let s = mc.state(1e-8, History::Approach, Outputs::ALL)?;
+//! let s = mc.state(1e-8, History::Approach, &Observables::ALL)?;
 //! // Exponential heights: E[count] = N e^(-d/sigma) = 1353, SE ~ 35.
-//! let n = s.count.unwrap();
-//! assert!((n - 1e4 * (-2.0f64).exp()).abs() < 5.0 * s.standard_error[2]);
+//! let n = s.count().unwrap();
+//! assert!((n - 1e4 * (-2.0f64).exp()).abs() < 5.0 * s.totals.error(2).unwrap());
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
@@ -48,8 +49,8 @@ mod scaling;
 mod summation;
 
 pub use population::{Population, PopulationSpec, Radii, RadiusSpec, MAX_SUMMITS, SAMPLING_BLOCK};
-pub use scaling::{RadiusScaling, SummitLaw};
-pub use summation::{McCurve, McState, MonteCarlo, SUM_BLOCK};
+pub use scaling::SummitLaw;
+pub use summation::{MonteCarlo, SUM_BLOCK};
 
 #[cfg(test)]
 mod tests;

@@ -24,48 +24,9 @@
 //! against one law build per summit otherwise.
 
 use crate::error::{positive, Error, Result};
-use crate::law::{AsperityLaw, Bradley, Dmt, Hertz, Jkr, LawKind};
+use crate::law::{AsperityLaw, LawKind, RadiusScaling};
 use crate::material::AsperityContact;
 use std::sync::Arc;
-
-/// Exponents of `rho = R/R_ref` by which a law's interference, load and
-/// contact radius scale (see the module notes).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RadiusScaling {
-    /// `alpha`: interferences scale as `rho^alpha`.
-    pub interference: f64,
-    /// `beta`: loads scale as `rho^beta`.
-    pub load: f64,
-    /// `gamma`: contact radii scale as `rho^gamma`.
-    pub contact_radius: f64,
-}
-
-impl RadiusScaling {
-    /// Maugis units: `(1/3, 1, 2/3)` (JKR, DMT, Hertz at fixed `E*`, `w`).
-    pub const MAUGIS: RadiusScaling = RadiusScaling {
-        interference: 1.0 / 3.0,
-        load: 1.0,
-        contact_radius: 2.0 / 3.0,
-    };
-    /// Rigid sphere with a Derjaguin surface force: `(0, 1, 0)` (Bradley).
-    pub const RIGID: RadiusScaling = RadiusScaling {
-        interference: 0.0,
-        load: 1.0,
-        contact_radius: 0.0,
-    };
-
-    /// Factors `[rho^-alpha, rho^beta, rho^gamma]` for radius ratio `rho`.
-    pub fn factors(&self, rho: f64) -> [f64; 3] {
-        if rho == 1.0 {
-            return [1.0; 3];
-        }
-        [
-            rho.powf(-self.interference),
-            rho.powf(self.load),
-            rho.powf(self.contact_radius),
-        ]
-    }
-}
 
 /// A law for the summits of a population: a law built for
 /// `reference_radius`, and how to rescale it for other radii (if it can be).
@@ -112,32 +73,16 @@ impl SummitLaw {
     }
 
     /// The law of `kind` for `contact` (at `contact.radius`), with the radius
-    /// scaling the kind obeys: Maugis units for Hertz, DMT and JKR, rigid for
-    /// Bradley; other kinds (Maugis–Dugdale) get none and serve only
-    /// populations of that one radius.
+    /// scaling the kind obeys ([`LawKind::radius_scaling`]); kinds without
+    /// one (Maugis–Dugdale) serve only populations of that one radius.
     ///
     /// # Errors
     /// As [`LawKind::build`].
     pub fn from_kind(kind: LawKind, contact: &AsperityContact) -> Result<Self> {
-        let r = contact.radius;
-        let (e, w) = (contact.contact_modulus, contact.adhesion.work());
-        // Not a `match`: kinds added later fall to "no scaling".
-        let (law, scaling): (Arc<dyn AsperityLaw>, _) = if kind == LawKind::Hertz {
-            (Arc::new(Hertz::new(r, e)?), Some(RadiusScaling::MAUGIS))
-        } else if kind == LawKind::Dmt {
-            (Arc::new(Dmt::new(r, e, w)?), Some(RadiusScaling::MAUGIS))
-        } else if kind == LawKind::Jkr {
-            (Arc::new(Jkr::new(r, e, w)?), Some(RadiusScaling::MAUGIS))
-        } else if kind == LawKind::Bradley {
-            let b = Bradley::new(r, w, contact.adhesion.range())?;
-            (Arc::new(b), Some(RadiusScaling::RIGID))
-        } else {
-            (Arc::from(kind.build(contact)?), None)
-        };
         Ok(SummitLaw {
-            law,
-            reference_radius: r,
-            scaling,
+            law: Arc::from(kind.build(contact)?),
+            reference_radius: contact.radius,
+            scaling: kind.radius_scaling(),
         })
     }
 

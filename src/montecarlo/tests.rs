@@ -10,9 +10,11 @@
 
 use super::*;
 use crate::error::Error;
-use crate::gw::{Accuracy, GwModel, History, LoadingProgram, Method, Outputs, RoughSurface};
+use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
 use crate::heights::Exponential;
+use crate::law::RadiusScaling;
 use crate::law::{AsperityLaw, Bradley, Branch, Hertz, Jkr, LawKind};
+use crate::loading::{Curve, History, LoadingModel, LoadingProgram, Observables, State};
 use crate::material::{Adhesion, AsperityContact};
 use std::sync::Arc;
 
@@ -71,12 +73,12 @@ fn acc() -> Accuracy {
         .with_method(Method::Quadrature)
 }
 
-fn values(s: &McState) -> [f64; 3] {
-    [s.load.unwrap(), s.area.unwrap(), s.count.unwrap()]
+fn values(s: &State) -> [f64; 3] {
+    [s.load().unwrap(), s.area().unwrap(), s.count().unwrap()]
 }
 
-fn gw_values(s: &crate::gw::GwState) -> [f64; 3] {
-    [s.load.unwrap(), s.area.unwrap(), s.count.unwrap()]
+fn gw_values(s: &State) -> [f64; 3] {
+    [s.load().unwrap(), s.area().unwrap(), s.count().unwrap()]
 }
 
 // ---------------------------------------------------------------- sampling
@@ -172,8 +174,8 @@ fn populations_are_identical_for_one_and_two_threads() {
                 let mc = MonteCarlo::new(pop.clone(), jkr()).unwrap();
                 let prog = LoadingProgram::new(8.0 * SIGMA, -SIGMA, 30).unwrap();
                 let path: Vec<f64> = (0..40).map(|k| SIGMA * (3.0 - 0.1 * k as f64)).collect();
-                let seq = mc.sequence(&path, Outputs::ALL).unwrap();
-                (pop, mc.curve(&prog, Outputs::ALL).unwrap(), seq)
+                let seq = mc.sequence(&path, &Observables::ALL).unwrap();
+                (pop, mc.curve(&prog, &Observables::ALL).unwrap(), seq)
             })
     };
     let (p1, c1, s1) = run(1);
@@ -181,14 +183,14 @@ fn populations_are_identical_for_one_and_two_threads() {
     assert_eq!(p1, p2);
     assert_eq!(s1, s2);
     // Bitwise: compare the bit patterns, not just values.
-    let bits = |c: &McCurve| -> Vec<u64> {
+    let bits = |c: &Curve| -> Vec<u64> {
         c.approach
             .iter()
             .chain(&c.retract)
             .flat_map(|s| {
                 values(s)
                     .into_iter()
-                    .chain(s.standard_error)
+                    .chain((0..3).map(|i| s.totals.error(i).unwrap()))
                     .map(f64::to_bits)
             })
             .collect()
@@ -215,7 +217,7 @@ fn sum_equals_brute_force_and_skips_out_of_range_summits() {
                 Box::new(|z: f64| law.state_after(z - d, z - closest)),
             ),
         ] {
-            let s = mc.state(d, history, Outputs::ALL).unwrap();
+            let s = mc.state(d, history, &Observables::ALL).unwrap();
             let (mut p, mut a, mut c, mut touched) = (0.0, 0.0, 0.0, 0usize);
             for &z in pop.heights() {
                 let st = brute(z);
@@ -262,7 +264,7 @@ fn lognormal_radii_use_the_law_of_each_radius() {
             MonteCarlo::new(pop.clone(), SummitLaw::from_kind(kind, &contact).unwrap()).unwrap();
         let (d, closest) = (0.5 * SIGMA, -0.2 * SIGMA);
         let s = mc
-            .state(d, History::Retract { closest }, Outputs::ALL)
+            .state(d, History::Retract { closest }, &Observables::ALL)
             .unwrap();
         let (mut p, mut a) = (0.0, 0.0);
         for (i, &z) in pop.heights().iter().enumerate() {
@@ -292,29 +294,31 @@ fn hertz_population_converges_to_gw_and_a_wrong_integral_is_detected() {
         let mc = MonteCarlo::new(population(n, seed), law.clone()).unwrap();
         for h in [-3.0, 0.0, 1.0, 3.0] {
             let d = h * SIGMA;
-            let s = mc.state(d, History::Approach, Outputs::ALL).unwrap();
+            let s = mc.state(d, History::Approach, &Observables::ALL).unwrap();
             let g = model
-                .state(d, History::Approach, Outputs::ALL, &acc())
+                .clone()
+                .with_accuracy(acc())
+                .state(d, History::Approach, &Observables::ALL)
                 .unwrap();
             let (v, e) = (values(&s), gw_values(&g));
             for k in 0..3 {
                 // Every summit in contact: the count is exact (SE 0).
-                let bound = 5.0 * s.standard_error[k] + 1e-9 * e[k];
+                let bound = 5.0 * s.totals.error(k).unwrap() + 1e-9 * e[k];
                 assert!(
                     (v[k] - e[k]).abs() < bound,
                     "seed {seed} h {h} output {k}: {} vs {}, SE {}",
                     v[k],
                     e[k],
-                    s.standard_error[k]
+                    s.totals.error(k).unwrap()
                 );
             }
             if h == -3.0 {
-                let wrong = (v[0] - 1.01 * e[0]) / s.standard_error[0];
+                let wrong = (v[0] - 1.01 * e[0]) / s.totals.error(0).unwrap();
                 assert!(
                     wrong.abs() > 5.0,
                     "seed {seed}: 1% error not seen, z = {wrong}"
                 );
-                assert!(s.standard_error[0] / v[0] < 2e-3);
+                assert!(s.totals.error(0).unwrap() / v[0] < 2e-3);
             }
         }
     }
@@ -329,8 +333,12 @@ fn jkr_population_hysteresis_matches_gw_retraction() {
     let acc = Accuracy::new(1e-9).unwrap();
     for seed in [21, 22] {
         let mc = MonteCarlo::new(population(n, seed), law.clone()).unwrap();
-        let c = mc.curve(&program, Outputs::ALL).unwrap();
-        let g = model.curve(&program, Outputs::ALL, &acc).unwrap();
+        let c = mc.curve(&program, &Observables::ALL).unwrap();
+        let g = model
+            .clone()
+            .with_accuracy(acc)
+            .curve(&program, &Observables::ALL)
+            .unwrap();
         let mut compared = 0;
         for (m, e) in c
             .approach
@@ -339,12 +347,12 @@ fn jkr_population_hysteresis_matches_gw_retraction() {
             .chain(c.retract.iter().zip(&g.retract))
         {
             // Only where the CLT applies: expected contacts >= 20.
-            if e.count.unwrap() < 20.0 {
+            if e.count().unwrap() < 20.0 {
                 continue;
             }
             let (v, w) = (values(m), gw_values(e));
             for k in 0..3 {
-                let z = (v[k] - w[k]) / (m.standard_error[k] + e.error[k]);
+                let z = (v[k] - w[k]) / (m.totals.error(k).unwrap() + e.totals.error(k).unwrap());
                 assert!(
                     z.abs() < 5.0,
                     "seed {seed} d {} output {k}: z = {z}",
@@ -387,24 +395,26 @@ fn lognormal_hertz_matches_the_radius_averaged_integral() {
     let model = gw(n, &hertz());
     for h in [-2.0, 0.5] {
         let st = mc
-            .state(h * SIGMA, History::Approach, Outputs::ALL)
+            .state(h * SIGMA, History::Approach, &Observables::ALL)
             .unwrap();
         let g = model
-            .state(h * SIGMA, History::Approach, Outputs::ALL, &acc())
+            .clone()
+            .with_accuracy(acc())
+            .state(h * SIGMA, History::Approach, &Observables::ALL)
             .unwrap();
         let expect = [
-            g.load.unwrap() * (s * s / 8.0).exp(),
-            g.area.unwrap() * (s * s / 2.0).exp(),
-            g.count.unwrap(),
+            g.load().unwrap() * (s * s / 8.0).exp(),
+            g.area().unwrap() * (s * s / 2.0).exp(),
+            g.count().unwrap(),
         ];
         let v = values(&st);
         for k in 0..3 {
-            let bound = 5.0 * st.standard_error[k] + 1e-9 * expect[k];
+            let bound = 5.0 * st.totals.error(k).unwrap() + 1e-9 * expect[k];
             assert!((v[k] - expect[k]).abs() < bound, "h {h} output {k}");
         }
         // Ignoring the radius spread would be detected in deep contact.
         if h < 0.0 {
-            let z = (v[1] - g.area.unwrap()) / st.standard_error[1];
+            let z = (v[1] - g.area().unwrap()) / st.totals.error(1).unwrap();
             assert!(z.abs() > 5.0, "{z}");
         }
     }
@@ -421,11 +431,11 @@ fn standard_error_matches_the_spread_over_seeds() {
     let seeds = 40;
     for seed in 0..seeds {
         let mc = MonteCarlo::new(population(n, 1000 + seed), hertz()).unwrap();
-        let s = mc.state(d, History::Approach, Outputs::LOAD).unwrap();
-        let p = s.load.unwrap();
+        let s = mc.state(d, History::Approach, &Observables::LOAD).unwrap();
+        let p = s.load().unwrap();
         sum += p;
         sq += p * p;
-        se2 += s.standard_error[0].powi(2);
+        se2 += s.totals.error(0).unwrap().powi(2);
     }
     let k = seeds as f64;
     let var = (sq - sum * sum / k) / (k - 1.0);
@@ -436,13 +446,15 @@ fn standard_error_matches_the_spread_over_seeds() {
 #[test]
 fn unrequested_outputs_are_none_and_single_summit_has_no_error() {
     let mc = MonteCarlo::new(population(10, 1), hertz()).unwrap();
-    let s = mc.state(0.0, History::Approach, Outputs::LOAD).unwrap();
-    assert!(s.load.is_some() && s.area.is_none() && s.count.is_none());
+    let s = mc
+        .state(0.0, History::Approach, &Observables::LOAD)
+        .unwrap();
+    assert!(s.load().is_some() && s.area().is_none() && s.count().is_none());
     let one = Population::from_summits(vec![1e-9], Radii::Fixed(R)).unwrap();
     let mc = MonteCarlo::new(Arc::new(one), hertz()).unwrap();
-    let s = mc.state(0.0, History::Approach, Outputs::ALL).unwrap();
-    assert!(s.load.unwrap() > 0.0);
-    assert!(s.standard_error[0].is_nan());
+    let s = mc.state(0.0, History::Approach, &Observables::ALL).unwrap();
+    assert!(s.load().unwrap() > 0.0);
+    assert!(s.totals.error(0).unwrap().is_nan());
 }
 
 // ---------------------------------------------------------------- bad input
@@ -535,15 +547,21 @@ fn bad_summit_lists_name_the_field() {
 fn bad_evaluation_input_names_the_field() {
     let mc = MonteCarlo::new(population(100, 1), hertz()).unwrap();
     for d in [f64::NAN, f64::INFINITY] {
-        let e = mc.state(d, History::Approach, Outputs::ALL).unwrap_err();
+        let e = mc
+            .state(d, History::Approach, &Observables::ALL)
+            .unwrap_err();
         assert_eq!(e.field(), Some("separation"));
     }
     let e = mc
-        .state(0.0, History::Retract { closest: 1e-9 }, Outputs::ALL)
+        .state(0.0, History::Retract { closest: 1e-9 }, &Observables::ALL)
         .unwrap_err();
     assert_eq!(e.field(), Some("separation"));
     let e = mc
-        .state(0.0, History::Retract { closest: f64::NAN }, Outputs::ALL)
+        .state(
+            0.0,
+            History::Retract { closest: f64::NAN },
+            &Observables::ALL,
+        )
         .unwrap_err();
     assert_eq!(e.field(), Some("closest_separation"));
     // A law without radius scaling cannot serve other radii.
@@ -579,8 +597,10 @@ fn bad_evaluation_input_names_the_field() {
     )
     .unwrap();
     let mc = MonteCarlo::new(population(100, 1), b).unwrap();
-    assert!(mc.state(1e-6, History::Approach, Outputs::ALL).is_ok());
-    let e = mc.state(0.0, History::Approach, Outputs::ALL).unwrap_err();
+    assert!(mc.state(1e-6, History::Approach, &Observables::ALL).is_ok());
+    let e = mc
+        .state(0.0, History::Approach, &Observables::ALL)
+        .unwrap_err();
     assert_eq!(e.field(), Some("separation"));
 }
 
@@ -590,11 +610,11 @@ fn bad_evaluation_input_names_the_field() {
 fn sequence_reproduces_the_curve_bit_for_bit() {
     let mc = MonteCarlo::new(population(20_000, 6), jkr()).unwrap();
     let program = LoadingProgram::new(5.0 * SIGMA, -0.5 * SIGMA, 25).unwrap();
-    let curve = mc.curve(&program, Outputs::ALL).unwrap();
+    let curve = mc.curve(&program, &Observables::ALL).unwrap();
     let seps = program.separations();
     let path: Vec<f64> = seps.iter().rev().chain(seps.iter()).copied().collect();
-    let seq = mc.sequence(&path, Outputs::ALL).unwrap();
-    let expect: Vec<&McState> = curve.approach.iter().rev().chain(&curve.retract).collect();
+    let seq = mc.sequence(&path, &Observables::ALL).unwrap();
+    let expect: Vec<&State> = curve.approach.iter().rev().chain(&curve.retract).collect();
     for (a, b) in seq.iter().zip(expect) {
         assert_eq!(a, b);
     }
@@ -667,7 +687,7 @@ fn general_sequences_match_the_threshold_rule_for_every_radius() {
             SummitLaw::from_kind(LawKind::Jkr, &contact).unwrap(),
         )
         .unwrap();
-        let seq = mc.sequence(&path, Outputs::ALL).unwrap();
+        let seq = mc.sequence(&path, &Observables::ALL).unwrap();
         let brute = brute_sequence(&pop, LawKind::Jkr, &contact, &path);
         let mut differs_from_approach = 0;
         for (k, (s, e)) in seq.iter().zip(&brute).enumerate() {
@@ -678,8 +698,10 @@ fn general_sequences_match_the_threshold_rule_for_every_radius() {
             );
             assert!((v[1] - e[1]).abs() <= 1e-11 * e[1].max(1e-30));
             assert_eq!(v[2], e[2], "{radius:?} step {k}");
-            let fresh = mc.state(path[k], History::Approach, Outputs::LOAD).unwrap();
-            if fresh.load.unwrap() != v[0] {
+            let fresh = mc
+                .state(path[k], History::Approach, &Observables::LOAD)
+                .unwrap();
+            if fresh.load().unwrap() != v[0] {
                 differs_from_approach += 1;
             }
         }
@@ -692,7 +714,7 @@ fn general_sequences_match_the_threshold_rule_for_every_radius() {
     assert_eq!(
         MonteCarlo::new(population(10, 0), jkr())
             .unwrap()
-            .sequence(&[0.0, f64::NAN], Outputs::ALL)
+            .sequence(&[0.0, f64::NAN], &Observables::ALL)
             .unwrap_err()
             .field(),
         Some("separations[1]")
@@ -703,12 +725,15 @@ fn general_sequences_match_the_threshold_rule_for_every_radius() {
 fn scaled_states_multiply_totals_and_errors() {
     let mc = MonteCarlo::new(population(1000, 2), hertz()).unwrap();
     let s = mc
-        .state(0.2 * SIGMA, History::Approach, Outputs::ALL)
+        .state(0.2 * SIGMA, History::Approach, &Observables::ALL)
         .unwrap();
     let t = s.scaled(10.0);
-    assert_eq!(t.load.unwrap(), 10.0 * s.load.unwrap());
-    assert_eq!(t.count.unwrap(), 10.0 * s.count.unwrap());
-    assert_eq!(t.standard_error[1], 10.0 * s.standard_error[1]);
+    assert_eq!(t.load().unwrap(), 10.0 * s.load().unwrap());
+    assert_eq!(t.count().unwrap(), 10.0 * s.count().unwrap());
+    assert_eq!(
+        t.totals.error(1).unwrap(),
+        10.0 * s.totals.error(1).unwrap()
+    );
     assert_eq!(t.separation, s.separation);
     assert_eq!(t.evaluations, s.evaluations);
 }
@@ -783,14 +808,14 @@ mod properties {
         ) {
             let mc = MonteCarlo::new(population(2000, seed), hertz()).unwrap();
             let (d1, d2) = (h1 * SIGMA, (h1 + dh) * SIGMA);
-            let s1 = mc.state(d1, History::Approach, Outputs::ALL).unwrap();
-            let s2 = mc.state(d2, History::Approach, Outputs::ALL).unwrap();
+            let s1 = mc.state(d1, History::Approach, &Observables::ALL).unwrap();
+            let s2 = mc.state(d2, History::Approach, &Observables::ALL).unwrap();
             let (v1, v2) = (values(&s1), values(&s2));
             for k in 0..3 {
                 prop_assert!(v2[k] <= v1[k]);
             }
             prop_assert!(v1[2] <= 2000.0);
-            let back = mc.state(d2, History::Retract { closest: d1 }, Outputs::ALL).unwrap();
+            let back = mc.state(d2, History::Retract { closest: d1 }, &Observables::ALL).unwrap();
             prop_assert_eq!(values(&back), v2);
         }
 
@@ -804,8 +829,8 @@ mod properties {
         ) {
             let mc = MonteCarlo::new(population(2000, seed), jkr()).unwrap();
             let (closest, d) = (hc * SIGMA, (hc + dh) * SIGMA);
-            let a = mc.state(d, History::Approach, Outputs::LOAD).unwrap().load.unwrap();
-            let r = mc.state(d, History::Retract { closest }, Outputs::LOAD).unwrap().load.unwrap();
+            let a = mc.state(d, History::Approach, &Observables::LOAD).unwrap().load().unwrap();
+            let r = mc.state(d, History::Retract { closest }, &Observables::LOAD).unwrap().load().unwrap();
             prop_assert!(r <= a + 1e-12 * a.abs(), "{r} {a}");
         }
     }
@@ -841,16 +866,16 @@ fn heights_do_not_depend_on_the_radius_spec_or_sigma() {
 fn separation_for_load_reaches_the_target() {
     let mc = MonteCarlo::new(population(5000, 8), hertz()).unwrap();
     let full = mc
-        .state(-SIGMA, History::Approach, Outputs::LOAD)
+        .state(-SIGMA, History::Approach, &Observables::LOAD)
         .unwrap()
-        .load
+        .load()
         .unwrap();
     for target in [1e-3 * full, 0.5 * full, 3.0 * full] {
-        let d = mc.separation_for_load(target).unwrap();
+        let d = mc.separation_at_load(target, mc.top_height()).unwrap();
         let at = |d: f64| {
-            mc.state(d, History::Approach, Outputs::LOAD)
+            mc.state(d, History::Approach, &Observables::LOAD)
                 .unwrap()
-                .load
+                .load()
                 .unwrap()
         };
         assert!(at(d) >= target);
@@ -860,7 +885,9 @@ fn separation_for_load_reaches_the_target() {
     }
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert_eq!(
-            mc.separation_for_load(bad).unwrap_err().field(),
+            mc.separation_at_load(bad, mc.top_height())
+                .unwrap_err()
+                .field(),
             Some("max_load")
         );
     }
@@ -872,21 +899,28 @@ fn deviation_from_gw_is_the_z_score() {
     let mc = MonteCarlo::new(population(n, 31), hertz()).unwrap();
     let model = gw(n, &hertz());
     let s = mc
-        .state(0.4 * SIGMA, History::Approach, Outputs::LOAD)
+        .state(0.4 * SIGMA, History::Approach, &Observables::LOAD)
         .unwrap();
     let g = model
-        .state(0.4 * SIGMA, History::Approach, Outputs::ALL, &acc())
+        .clone()
+        .with_accuracy(acc())
+        .state(0.4 * SIGMA, History::Approach, &Observables::ALL)
         .unwrap();
     let z = s.deviation_from(&g);
-    let expect = (s.load.unwrap() - g.load.unwrap()) / s.standard_error[0].hypot(g.error[0]);
+    let expect = (s.load().unwrap() - g.load().unwrap())
+        / s.totals.error(0).unwrap().hypot(g.totals.error(0).unwrap());
     assert_eq!(z[0], Some(expect));
     assert!(expect.abs() < 5.0);
     assert_eq!(z[1], None);
     // Deep contact: every summit touches, the count has no error.
-    let s = mc.state(-SIGMA, History::Approach, Outputs::ALL).unwrap();
-    let g = model
-        .state(-SIGMA, History::Approach, Outputs::ALL, &acc())
+    let s = mc
+        .state(-SIGMA, History::Approach, &Observables::ALL)
         .unwrap();
-    assert_eq!(s.standard_error[2], 0.0);
+    let g = model
+        .clone()
+        .with_accuracy(acc())
+        .state(-SIGMA, History::Approach, &Observables::ALL)
+        .unwrap();
+    assert_eq!(s.totals.error(2).unwrap(), 0.0);
     assert!(s.deviation_from(&g)[0].is_some());
 }

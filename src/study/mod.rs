@@ -6,6 +6,14 @@
 //! Compiled with the default feature `study`; the physics core builds without
 //! it (`cargo build --lib --no-default-features`).
 
+pub mod output;
+pub mod plan;
 pub mod plot;
+pub mod run;
 pub mod scene;
 pub mod sweep;
+
+pub use output::{charts, curve_csv, montecarlo_csv, write_outputs, McSummary, Summary};
+pub use plan::{Plan, PlanMode};
+pub use run::{McResults, Results};
+pub use scene::{Scene, DEFAULT_SCENE};

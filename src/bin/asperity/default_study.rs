@@ -5,7 +5,7 @@
 
 use asperity::law::LawKind;
 use asperity::prelude::*;
-use asperity::study::scene::{si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_SCENE};
+use asperity::study::{output::si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_SCENE};
 use std::path::Path;
 
 /// Rows of the printed load–separation table.
@@ -60,7 +60,7 @@ fn laws_table() -> crate::CliResult {
 /// A compact load–separation table: every k-th point of both legs.
 fn separation_table(results: &Results) {
     let c = &results.curve;
-    let (ls, lp) = si_prefix(c.approach.iter().chain(&c.retract).filter_map(|s| s.load));
+    let (ls, lp) = si_prefix(c.approach.iter().chain(&c.retract).filter_map(|s| s.load()));
     println!("Rough surface (100 um x 100 um, eta = 1e12 m^-2, sigma = 5 nm):");
     println!(
         "  {:>16} {:>18} {:>18} {:>14} {:>14}",
@@ -78,10 +78,10 @@ fn separation_table(results: &Results) {
         println!(
             "  {:>16.3} {:>18} {:>18} {:>14} {:>14}",
             a.separation * 1e9,
-            show(a.load, ls),
-            show(r.load, ls),
-            show(a.area, 1e-12),
-            a.count.map_or("-".into(), |v| format!("{v:.2}"))
+            show(a.load(), ls),
+            show(r.load(), ls),
+            show(a.area(), 1e-12),
+            a.count().map_or("-".into(), |v| format!("{v:.2}"))
         );
     }
 }

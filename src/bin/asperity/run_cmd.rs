@@ -2,7 +2,7 @@
 //! run of the embedded gold-microswitch scene.
 
 use crate::CliError;
-use asperity::study::scene::{write_outputs, Plan, PlanMode, Results, Scene, Summary};
+use asperity::study::{write_outputs, Plan, PlanMode, Results, Scene, Summary};
 use clap::Args;
 use std::path::{Path, PathBuf};
 
@@ -46,11 +46,11 @@ pub fn execute(
     json: bool,
     plan_only: bool,
 ) -> crate::CliResult {
-    let plan = Plan::new(scene, mode)?;
     if plan_only {
-        print!("{plan}");
+        print!("{}", Plan::preview(scene, mode)?);
         return Ok(());
     }
+    let plan = Plan::new(scene, mode)?;
     let results = plan.run()?;
     report(&plan, &results, out, json)
 }

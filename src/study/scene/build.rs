@@ -52,7 +52,9 @@ pub fn build_distribution(spec: &SurfaceSpec) -> Result<Arc<dyn HeightDistributi
         truncation: spec.truncation,
         heights: spec.heights.clone(),
     };
-    crate::heights::by_name(&spec.distribution, &params).map_err(|e| e.in_table("surface"))
+    crate::heights::DistributionKind::parse(&spec.distribution)
+        .and_then(|k| k.build(&params))
+        .map_err(|e| e.in_table("surface"))
 }
 
 fn field(e: Error, modulus: &str, poisson: &str) -> Error {

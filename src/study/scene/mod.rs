@@ -2,24 +2,16 @@
 //! adhesion, law, loading program, outputs, accuracy).
 //!
 //! [`Scene::from_toml`] parses and validates; field errors name the dotted
-//! path (`surface.sigma`) and, for parse errors, the line. [`Plan::new`]
-//! decides what to compute and what to skip (printable: `asperity run
-//! SCENE --plan`); [`Plan::run`] computes; [`write_outputs`] writes tables
-//! and charts.
+//! path (`surface.sigma`) and, for parse errors, the line;
+//! [`build_contact`], [`build_surface`] and [`build_distribution`] turn
+//! its values into core objects, mapping the core's errors onto scene
+//! fields. The planner ([`crate::study::plan`]) decides what to compute.
 
 mod build;
-mod figures;
-mod output;
 mod parse;
-mod plan;
-mod run;
 mod schema;
 
 pub use build::{build_contact, build_distribution, build_surface};
-pub use figures::{charts, si_prefix, si_prefix_area, write_outputs};
-pub use output::{curve_csv, montecarlo_csv, McSummary, Summary};
-pub use plan::{start_separation, Decision, LawChoice, McPlan, Plan, PlanMode, Target};
-pub use run::{McResults, Results};
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, MonteCarloSpec, OutputsSpec, ProgramSpec,

@@ -5,7 +5,7 @@ use super::edit::set_field;
 use super::spec::{Shard, SweepPoint, SweepSpec};
 use super::store::{ResultsFile, SweepMeta};
 use crate::error::{Error, Result};
-use crate::study::scene::{Plan, PlanMode, Scene, Summary};
+use crate::study::{Plan, PlanMode, Scene, Summary};
 use rayon::prelude::*;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};

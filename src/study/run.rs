@@ -2,8 +2,8 @@
 
 use super::plan::{McPlan, Plan};
 use crate::error::Result;
-use crate::gw::{Curve, GwState, LoadingProgram, PullOff};
-use crate::montecarlo::{McCurve, McState, MonteCarlo, Population};
+use crate::loading::{Curve, History, LoadingModel, LoadingProgram, PullOff, State, SLOTS};
+use crate::montecarlo::{MonteCarlo, Population};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -39,12 +39,12 @@ pub struct Results {
 #[derive(Debug, Clone)]
 pub struct McResults {
     /// The population's curve (totals scaled to the whole surface).
-    pub curve: McCurve,
+    pub curve: Curve,
     /// Deviation from the integral in standard errors,
     /// `(x_MC - x_GW)/sqrt(SE^2 + err_GW^2)`, per state and output
     /// (approach states, then retraction states); `None` where fewer than
     /// [`MIN_SUMMITS_FOR_Z`] summits are in range.
-    pub z: Vec<[Option<f64>; 3]>,
+    pub z: Vec<[Option<f64>; SLOTS]>,
     /// Largest `|z|` over the curve and outputs (`|z| < 5` expected when
     /// the population follows the model).
     pub max_abs_z: Option<f64>,
@@ -60,14 +60,10 @@ fn run_montecarlo(plan: &Plan, mc: &McPlan, curve: &Curve) -> Result<McResults> 
     let spec = mc.population_spec(&plan.surface)?;
     let population = Arc::new(Population::sample(&spec, plan.distribution.as_ref())?);
     let summer = MonteCarlo::new(population, mc.law.clone())?;
-    let raw = summer.curve(&curve.program, plan.curve_outputs)?;
-    let scale = |v: Vec<McState>| v.iter().map(|s| s.scaled(mc.factor)).collect::<Vec<_>>();
-    let mc_curve = McCurve {
-        program: raw.program,
-        approach: scale(raw.approach),
-        retract: scale(raw.retract),
-    };
-    let z: Vec<[Option<f64>; 3]> = mc_curve
+    let mc_curve = summer
+        .curve(&curve.program, &plan.curve_outputs)?
+        .scaled(mc.factor);
+    let z: Vec<[Option<f64>; SLOTS]> = mc_curve
         .approach
         .iter()
         .zip(&curve.approach)
@@ -79,7 +75,7 @@ fn run_montecarlo(plan: &Plan, mc: &McPlan, curve: &Curve) -> Result<McResults> 
             if m.evaluations >= MIN_SUMMITS_FOR_Z {
                 m.deviation_from(g)
             } else {
-                [None; 3]
+                [None; SLOTS]
             }
         })
         .collect();
@@ -104,7 +100,7 @@ impl Results {
         self.curve
             .approach
             .iter()
-            .filter_map(|s| s.load)
+            .filter_map(|s| s.load())
             .reduce(f64::max)
     }
 }
@@ -118,24 +114,18 @@ impl Plan {
     /// reached.
     pub fn run(&self) -> Result<Results> {
         let t0 = Instant::now();
-        let model = self.model()?;
+        let model = self.model_with(self.run_law()?)?;
         let closest = self.closest_separation(&model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
         let curve = if self.compute_retraction {
-            model.curve(&program, self.curve_outputs, &self.accuracy)?
+            model.curve(&program, &self.curve_outputs)?
         } else {
-            let approach = program
+            let steps: Vec<_> = program
                 .separations()
-                .iter()
-                .map(|&d| {
-                    model.state(
-                        d,
-                        crate::gw::History::Approach,
-                        self.curve_outputs,
-                        &self.accuracy,
-                    )
-                })
-                .collect::<Result<Vec<GwState>>>()?;
+                .into_iter()
+                .map(|d| (d, History::Approach))
+                .collect();
+            let approach = model.states(&steps, &self.curve_outputs)?;
             Curve {
                 program,
                 retract: approach.clone(),
@@ -143,7 +133,7 @@ impl Plan {
             }
         };
         let pull_off = if self.pull_off {
-            model.pull_off(closest, PULL_OFF_SAMPLES, &self.accuracy)?
+            model.pull_off(closest, PULL_OFF_SAMPLES)?
         } else {
             None
         };
@@ -153,7 +143,7 @@ impl Plan {
             None
         };
         // A copied retraction leg cost nothing.
-        let legs: &[&[GwState]] = if self.compute_retraction {
+        let legs: &[&[State]] = if self.compute_retraction {
             &[&curve.approach, &curve.retract]
         } else {
             &[&curve.approach]

@@ -2,12 +2,12 @@
 //! SVG charts of load against separation, real area against load and
 //! contact count against load.
 
-use super::output::{curve_csv, Summary};
-use super::plan::Plan;
-use super::run::Results;
+use super::{curve_csv, Summary};
 use crate::error::{Error, Result};
-use crate::gw::GwState;
+use crate::loading::State;
+use crate::study::plan::Plan;
 use crate::study::plot::{Chart, Series};
+use crate::study::run::Results;
 use std::path::{Path, PathBuf};
 
 /// A display unit for a set of values: the SI prefix that puts the largest
@@ -58,7 +58,7 @@ pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<P
     let csv = dir.join("curve.csv");
     std::fs::write(&csv, curve_csv(results, plan)).map_err(io)?;
     written.push(csv);
-    if let Some(text) = super::output::montecarlo_csv(results) {
+    if let Some(text) = super::montecarlo_csv(results) {
         let path = dir.join("montecarlo.csv");
         std::fs::write(&path, text).map_err(io)?;
         written.push(path);
@@ -81,10 +81,10 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
     let legs = [("approach", &c.approach), ("retraction", &c.retract)];
     let title = plan.scene.title.clone().unwrap_or_default();
     let all = || c.approach.iter().chain(&c.retract);
-    let (ls, lp) = si_prefix(all().filter_map(|s| s.load));
+    let (ls, lp) = si_prefix(all().filter_map(|s| s.load()));
     let (ds, dp) = si_prefix(all().map(|s| s.separation));
     let mut out = Vec::new();
-    let pick = |f: &dyn Fn(&GwState) -> Option<(f64, f64)>, leg: &[GwState]| -> Vec<(f64, f64)> {
+    let pick = |f: &dyn Fn(&State) -> Option<(f64, f64)>, leg: &[State]| -> Vec<(f64, f64)> {
         leg.iter().filter_map(f).collect()
     };
     if o.load {
@@ -92,7 +92,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
             .iter()
             .map(|(name, leg)| Series {
                 label: (*name).into(),
-                points: pick(&|s| Some((s.separation / ds, s.load? / ls)), leg),
+                points: pick(&|s| Some((s.separation / ds, s.load()? / ls)), leg),
             })
             .collect();
         if let Some(m) = &results.montecarlo {
@@ -104,7 +104,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                     label: name.into(),
                     points: leg
                         .iter()
-                        .filter_map(|s| Some((s.separation / ds, s.load? / ls)))
+                        .filter_map(|s| Some((s.separation / ds, s.load()? / ls)))
                         .collect(),
                 });
             }
@@ -126,7 +126,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 .iter()
                 .map(|(name, leg)| Series {
                     label: (*name).into(),
-                    points: pick(&|s| Some((s.separation / ds, s.load? / ps)), leg),
+                    points: pick(&|s| Some((s.separation / ds, s.load()? / ps)), leg),
                 })
                 .collect();
             let m = p.load.abs() / ps;
@@ -143,12 +143,12 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
         }
     }
     if o.load && o.area {
-        let (s_a, p_a) = si_prefix_area(all().filter_map(|s| s.area));
+        let (s_a, p_a) = si_prefix_area(all().filter_map(|s| s.area()));
         let series = legs
             .iter()
             .map(|(name, leg)| Series {
                 label: (*name).into(),
-                points: pick(&|s| Some((s.load? / ls, s.area? / s_a)), leg),
+                points: pick(&|s| Some((s.load()? / ls, s.area()? / s_a)), leg),
             })
             .collect();
         out.push((
@@ -167,7 +167,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
             .iter()
             .map(|(name, leg)| Series {
                 label: (*name).into(),
-                points: pick(&|s| Some((s.load? / ls, s.count?)), leg),
+                points: pick(&|s| Some((s.load()? / ls, s.count()?)), leg),
             })
             .collect();
         out.push((

@@ -1,8 +1,12 @@
-//! Result tables: the curve as CSV and a JSON summary.
+//! Result tables (the curve as CSV, a JSON summary) and the figures.
 
-use super::plan::Plan;
-use super::run::Results;
-use crate::gw::GwState;
+mod figures;
+
+pub use figures::{charts, si_prefix, si_prefix_area, write_outputs};
+
+use crate::loading::State;
+use crate::study::plan::Plan;
+use crate::study::run::Results;
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -90,8 +94,8 @@ impl Summary {
             closest_separation: results.curve.program.closest,
             points: plan.points,
             max_load: results.max_load().filter(|_| plan.scene.outputs.load),
-            max_area: closest.and_then(|s| s.area),
-            max_count: closest.and_then(|s| s.count),
+            max_area: closest.and_then(|s| s.area()),
+            max_count: closest.and_then(|s| s.count()),
             pull_off_load: results.pull_off.map(|p| p.load),
             pull_off_separation: results.pull_off.map(|p| p.separation),
             hysteresis_energy: results.hysteresis_energy,
@@ -103,7 +107,7 @@ impl Summary {
                     .curve
                     .approach
                     .iter()
-                    .filter_map(|s| s.load.map(|p| (p, s.standard_error[0])))
+                    .filter_map(|s| s.load().map(|p| (p, s.totals.error(0).unwrap_or(f64::NAN))))
                     .max_by(|a, b| a.0.total_cmp(&b.0));
                 McSummary {
                     summits: plan.montecarlo.as_ref().map_or(0, |p| p.summits),
@@ -119,11 +123,7 @@ impl Summary {
                     seconds: m.seconds,
                 }
             }),
-            plan: plan
-                .decisions
-                .iter()
-                .map(|d| format!("{}: {} ({})", d.what, d.choice, d.why))
-                .collect(),
+            plan: plan.decisions.iter().map(|d| d.to_string()).collect(),
         }
     }
 
@@ -144,14 +144,14 @@ pub fn curve_csv(results: &Results, plan: &Plan) -> String {
         Some(v) if asked => format!("{v:e}"),
         _ => String::new(),
     };
-    let mut row = |leg: &str, s: &GwState| {
+    let mut row = |leg: &str, s: &State| {
         let _ = writeln!(
             out,
             "{leg},{:e},{},{},{}",
             s.separation,
-            cell(s.load, o.load),
-            cell(s.area, o.area),
-            cell(s.count, o.count)
+            cell(s.load(), o.load),
+            cell(s.area(), o.area),
+            cell(s.count(), o.count)
         );
     };
     for s in results.curve.approach.iter().rev() {
@@ -189,17 +189,17 @@ pub fn montecarlo_csv(results: &Results) -> Option<String> {
                 .map(|(i, s)| ("retract", s, m.z[n + i])),
         );
     for (leg, s, z) in rows {
-        let se = |i: usize, x: Option<f64>| cell(x.map(|_| s.standard_error[i]));
+        let se = |i: usize, x: Option<f64>| cell(x.map(|_| s.totals.error(i).unwrap_or(f64::NAN)));
         let _ = writeln!(
             out,
             "{leg},{:e},{},{},{},{},{},{},{},{},{}",
             s.separation,
-            cell(s.load),
-            se(0, s.load),
-            cell(s.area),
-            se(1, s.area),
-            cell(s.count),
-            se(2, s.count),
+            cell(s.load()),
+            se(0, s.load()),
+            cell(s.area()),
+            se(1, s.area()),
+            cell(s.count()),
+            se(2, s.count()),
             cell(z[0]),
             cell(z[1]),
             cell(z[2])

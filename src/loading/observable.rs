@@ -1,0 +1,283 @@
+//! Per-asperity observables and their totals.
+//!
+//! An observable is a quantity each asperity contributes to a total over the
+//! surface: its load `P_i` (N), its contact area `pi a_i^2` (m^2), whether
+//! it is in contact (`[a_i > 0]`), or anything else computable from its
+//! [`ContactState`] (a spot conductance, a perimeter, ...). The
+//! Greenwood–Williamson integral of an observable `g` over heights is
+//! `eta A_n int g(state(sigma s - d)) phi(s) ds`; its Monte Carlo sum over a
+//! population is `sum_i g(state_i)`. Both integrators evaluate the same
+//! [`Observables::evaluate`], so a new observable is one variant plus one
+//! per-asperity function (or, outside the crate, one [`PerAsperity`] type in
+//! [`Observable::Custom`]).
+//!
+//! Totals live in fixed slots (no allocation in hot loops): load, area and
+//! count in slots 0, 1, 2, further observables after them in the order they
+//! were added.
+
+use crate::error::{Error, Result};
+use crate::law::ContactState;
+use std::fmt;
+use std::sync::Arc;
+
+/// Slots per total: load, area, count and [`EXTRA_SLOTS`] further observables.
+pub const SLOTS: usize = 5;
+/// Observables beyond load, area and count that one computation can carry.
+pub const EXTRA_SLOTS: usize = SLOTS - 3;
+
+/// A per-asperity quantity defined outside the crate.
+pub trait PerAsperity: Send + Sync + fmt::Debug {
+    /// Short name (a CSV column stem, e.g. `"perimeter_m"`).
+    fn name(&self) -> &str;
+    /// The asperity's contribution, from its state (SI units of the total).
+    fn value(&self, state: &ContactState) -> f64;
+}
+
+/// One observable.
+#[derive(Clone, Debug)]
+pub enum Observable {
+    /// Load `P_i` (N), > 0 compressive.
+    Load,
+    /// Real contact area `pi a_i^2` (m^2).
+    Area,
+    /// Contact count: 1 when `a_i > 0`, else 0.
+    Count,
+    /// Any other per-asperity function.
+    Custom(Arc<dyn PerAsperity>),
+}
+
+impl PartialEq for Observable {
+    fn eq(&self, other: &Self) -> bool {
+        match (self, other) {
+            (Observable::Load, Observable::Load)
+            | (Observable::Area, Observable::Area)
+            | (Observable::Count, Observable::Count) => true,
+            (Observable::Custom(a), Observable::Custom(b)) => Arc::ptr_eq(a, b),
+            _ => false,
+        }
+    }
+}
+
+impl Observable {
+    /// Short name.
+    pub fn name(&self) -> &str {
+        match self {
+            Observable::Load => "load",
+            Observable::Area => "area",
+            Observable::Count => "count",
+            Observable::Custom(c) => c.name(),
+        }
+    }
+
+    /// The asperity's contribution from its state.
+    #[inline(always)]
+    pub fn value(&self, s: &ContactState) -> f64 {
+        match self {
+            Observable::Load => s.load,
+            Observable::Area => s.area(),
+            Observable::Count => f64::from(u8::from(s.radius > 0.0)),
+            Observable::Custom(c) => c.value(s),
+        }
+    }
+}
+
+/// The observables a computation totals: load, area, count (each on or off)
+/// and up to [`EXTRA_SLOTS`] more.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Observables {
+    /// Total load (N).
+    pub load: bool,
+    /// Real contact area (m^2).
+    pub area: bool,
+    /// Number of contacts.
+    pub count: bool,
+    extras: Vec<Observable>,
+}
+
+impl Observables {
+    /// Load, area and count.
+    pub const ALL: Observables = Observables::standard(true, true, true);
+    /// Load only.
+    pub const LOAD: Observables = Observables::standard(true, false, false);
+
+    /// Load, area and count, each on or off; nothing else.
+    pub const fn standard(load: bool, area: bool, count: bool) -> Self {
+        Observables {
+            load,
+            area,
+            count,
+            extras: Vec::new(),
+        }
+    }
+
+    /// These observables and `o` (no change if already present).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `observables` when all extra slots are taken.
+    pub fn with(mut self, o: Observable) -> Result<Self> {
+        match o {
+            Observable::Load => self.load = true,
+            Observable::Area => self.area = true,
+            Observable::Count => self.count = true,
+            extra => {
+                if !self.extras.contains(&extra) {
+                    if self.extras.len() == EXTRA_SLOTS {
+                        return Err(Error::invalid(
+                            "observables",
+                            format!(
+                                "at most {EXTRA_SLOTS} observables beyond load, area and count"
+                            ),
+                        ));
+                    }
+                    self.extras.push(extra);
+                }
+            }
+        }
+        Ok(self)
+    }
+
+    /// The slot of `o`, if it is one of these observables.
+    pub fn slot(&self, o: &Observable) -> Option<usize> {
+        match o {
+            Observable::Load => self.load.then_some(0),
+            Observable::Area => self.area.then_some(1),
+            Observable::Count => self.count.then_some(2),
+            extra => self.extras.iter().position(|e| e == extra).map(|i| 3 + i),
+        }
+    }
+
+    /// Which slots are in use.
+    pub fn mask(&self) -> [bool; SLOTS] {
+        std::array::from_fn(|i| match i {
+            0 => self.load,
+            1 => self.area,
+            2 => self.count,
+            k => k - 3 < self.extras.len(),
+        })
+    }
+
+    /// The observables beyond load, area and count, in slot order.
+    pub fn extras(&self) -> &[Observable] {
+        &self.extras
+    }
+
+    /// Whether only the load is asked for (laws can then skip the contact
+    /// radius: [`AsperityLaw::load_after`](crate::law::AsperityLaw::load_after)).
+    pub fn load_only(&self) -> bool {
+        self.load && !self.area && !self.count && self.extras.is_empty()
+    }
+
+    /// Every slot's value for one asperity; unused slots are 0.
+    #[inline(always)]
+    pub fn evaluate(&self, s: &ContactState) -> [f64; SLOTS] {
+        let mut v = [0.0; SLOTS];
+        if self.load {
+            v[0] = s.load;
+        }
+        if self.area {
+            v[1] = s.area();
+        }
+        if self.count {
+            v[2] = f64::from(u8::from(s.radius > 0.0));
+        }
+        for (k, e) in self.extras.iter().enumerate() {
+            v[3 + k] = e.value(s);
+        }
+        v
+    }
+}
+
+/// Totals of the requested observables with their uncertainties, by slot.
+///
+/// The uncertainty is the numerical error estimate for an integral and the
+/// standard error (as an estimate of the expectation) for a population sum.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Totals {
+    values: [f64; SLOTS],
+    errors: [f64; SLOTS],
+    present: [bool; SLOTS],
+}
+
+impl Totals {
+    /// Totals from slot values, errors and the slots in use (unused slots
+    /// read as `None`).
+    pub fn new(values: [f64; SLOTS], errors: [f64; SLOTS], present: [bool; SLOTS]) -> Self {
+        Totals {
+            values,
+            errors,
+            present,
+        }
+    }
+
+    /// The value in `slot`, if computed.
+    pub fn get(&self, slot: usize) -> Option<f64> {
+        (slot < SLOTS && self.present[slot]).then(|| self.values[slot])
+    }
+
+    /// The uncertainty of `slot`, if computed.
+    pub fn error(&self, slot: usize) -> Option<f64> {
+        (slot < SLOTS && self.present[slot]).then(|| self.errors[slot])
+    }
+
+    /// Total load (N).
+    pub fn load(&self) -> Option<f64> {
+        self.get(0)
+    }
+
+    /// Real contact area (m^2).
+    pub fn area(&self) -> Option<f64> {
+        self.get(1)
+    }
+
+    /// Number of contacts.
+    pub fn count(&self) -> Option<f64> {
+        self.get(2)
+    }
+
+    /// Every value and error multiplied by `factor`.
+    pub fn scaled(&self, factor: f64) -> Totals {
+        Totals {
+            values: self.values.map(|x| x * factor),
+            errors: self.errors.map(|x| x * factor),
+            present: self.present,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(Debug)]
+    struct Perimeter;
+    impl PerAsperity for Perimeter {
+        fn name(&self) -> &str {
+            "perimeter_m"
+        }
+        fn value(&self, s: &ContactState) -> f64 {
+            2.0 * std::f64::consts::PI * s.radius
+        }
+    }
+
+    #[test]
+    fn slots_follow_the_request() {
+        let p = Observable::Custom(Arc::new(Perimeter));
+        let o = Observables::standard(true, false, true)
+            .with(p.clone())
+            .unwrap();
+        assert_eq!(o.slot(&Observable::Load), Some(0));
+        assert_eq!(o.slot(&Observable::Area), None);
+        assert_eq!(o.slot(&p), Some(3));
+        let v = o.evaluate(&ContactState {
+            load: 2.0,
+            radius: 1.0,
+        });
+        assert_eq!(v, [2.0, 0.0, 1.0, 2.0 * std::f64::consts::PI, 0.0]);
+        assert_eq!(o.mask(), [true, false, true, true, false]);
+        let full = o
+            .with(Observable::Custom(Arc::new(Perimeter)))
+            .unwrap()
+            .with(Observable::Custom(Arc::new(Perimeter)));
+        assert_eq!(full.unwrap_err().field(), Some("observables"));
+    }
+}

@@ -1,0 +1,72 @@
+//! The totals at one separation, and how they were computed.
+
+use super::observable::{Totals, SLOTS};
+
+/// Which method produced a state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MethodUsed {
+    /// `F_n` closed forms.
+    ClosedForm,
+    /// Adaptive Gauss–Kronrod quadrature.
+    Quadrature,
+    /// A fixed composite Kronrod rule.
+    Fixed,
+    /// An exact average over a finite sample of heights (measured summits).
+    SampleSum,
+    /// An exact sum over a drawn population (Monte Carlo); the
+    /// uncertainties are standard errors of the expectation.
+    Population,
+}
+
+/// Totals of the requested observables at one separation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct State {
+    /// Separation `d` of the flat from the height origin (m).
+    pub separation: f64,
+    /// The totals and their uncertainties (numerical error estimates for
+    /// integrals, standard errors for populations).
+    pub totals: Totals,
+    /// Method that produced the numbers.
+    pub method: MethodUsed,
+    /// Law evaluations spent (0 for closed forms; summits in range for a
+    /// population).
+    pub evaluations: usize,
+}
+
+impl State {
+    /// Total load (N), > 0 compressive.
+    pub fn load(&self) -> Option<f64> {
+        self.totals.load()
+    }
+
+    /// Real contact area (m^2).
+    pub fn area(&self) -> Option<f64> {
+        self.totals.area()
+    }
+
+    /// Number of contacts.
+    pub fn count(&self) -> Option<f64> {
+        self.totals.count()
+    }
+
+    /// The state of a surface `factor` times larger (a population drawn for
+    /// a sub-area): totals and uncertainties multiplied by `factor`.
+    pub fn scaled(&self, factor: f64) -> State {
+        State {
+            totals: self.totals.scaled(factor),
+            ..*self
+        }
+    }
+
+    /// Deviation of this state from `expected` in combined uncertainties,
+    /// per slot: `(x - x_e) / sqrt(u^2 + u_e^2)`. For a population against
+    /// the integral it is about N(0, 1) (`|z| > 5` is significant). `None`
+    /// for slots missing on either side or with zero combined uncertainty.
+    pub fn deviation_from(&self, expected: &State) -> [Option<f64>; SLOTS] {
+        std::array::from_fn(|i| {
+            let (m, e) = (self.totals.get(i)?, expected.totals.get(i)?);
+            let u = self.totals.error(i)?.hypot(expected.totals.error(i)?);
+            (u > 0.0).then(|| (m - e) / u)
+        })
+    }
+}

@@ -1,0 +1,358 @@
+//! The planner's decisions as data; [`fmt::Display`] renders them at the edge
+//! (`asperity run --plan`, the summary's `plan` list).
+
+use std::fmt;
+
+/// How a total is obtained.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Evaluation {
+    /// `F_n` closed forms.
+    ClosedForm,
+    /// Exact sums over a finite sample of measured heights.
+    SampleSum,
+    /// Adaptive Gauss–Kronrod quadrature.
+    Quadrature,
+    /// Not computed.
+    Skipped,
+}
+
+/// Why a total is (not) computed the way it is.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OutputReason {
+    /// Asked for; the method's own justification follows from the law and
+    /// distribution names.
+    Asked {
+        /// The law's name.
+        law: String,
+        /// The distribution's name.
+        distribution: String,
+        /// The scene's tolerance.
+        rtol: f64,
+    },
+    /// Everything-on mode.
+    EverythingOn,
+    /// Not asked for, but the hysteresis energy needs the load.
+    NeededByHysteresis,
+    /// Not asked for.
+    NotAsked,
+}
+
+/// Why the law is the one chosen.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LawReason {
+    /// `w = 0`: Hertz.
+    NoAdhesion,
+    /// Everything-on mode: exact Maugis–Dugdale.
+    EverythingOn,
+    /// The cheapest law within `rtol` of the full solution (measured error).
+    CheapestWithin {
+        /// The scene's tolerance.
+        rtol: f64,
+        /// The law's measured error.
+        error: f64,
+        /// Where the measurement comes from.
+        provenance: String,
+    },
+    /// No analytic law within `rtol`; the closest one.
+    NoneWithin {
+        /// The scene's tolerance.
+        rtol: f64,
+        /// The closest law's measured error.
+        error: f64,
+    },
+    /// Named in the scene.
+    Given,
+    /// The full-solver law, from the on-disk cache or computed at run time.
+    Calibrated {
+        /// Whether the cache already holds it.
+        cached: bool,
+        /// The cache file.
+        path: String,
+    },
+}
+
+/// Why the program starts where it does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StartReason {
+    /// Given in the scene.
+    Given,
+    /// Summits beyond the flat's reach carry less than this fraction.
+    TailFraction(f64),
+    /// Everything-on mode: the last representable summit.
+    EverythingOn,
+}
+
+/// One decision of a plan.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Decision {
+    /// The law.
+    Law {
+        /// Its name.
+        name: String,
+        /// Why.
+        reason: LawReason,
+        /// Tabor parameter of one summit.
+        mu: f64,
+        /// Maugis parameter.
+        lambda: f64,
+    },
+    /// How one total is obtained.
+    Output {
+        /// `"load"`, `"area"` or `"count"`.
+        observable: &'static str,
+        /// The method.
+        evaluation: Evaluation,
+        /// Why.
+        reason: OutputReason,
+    },
+    /// Where the program starts (m).
+    Start {
+        /// The separation (m).
+        separation: f64,
+        /// Why.
+        reason: StartReason,
+    },
+    /// An expensive law replaced for the run by a Chebyshev table.
+    Tabulation {
+        /// The law's name.
+        law: String,
+        /// Relative tolerance of the table.
+        tolerance: f64,
+        /// Interference interval covered (m).
+        interval: (f64, f64),
+    },
+    /// Whether the retraction leg is computed.
+    Retraction {
+        /// Computed (else copied from the approach).
+        computed: bool,
+        /// Attach and detach interferences (m) when they differ.
+        hysteresis: Option<(f64, f64)>,
+        /// The law's name.
+        law: String,
+    },
+    /// Whether the pull-off is searched for.
+    PullOff {
+        /// Searched.
+        searched: bool,
+        /// Asked for in the scene.
+        asked: bool,
+        /// The contact is adhesive.
+        adhesive: bool,
+    },
+    /// Whether the hysteresis energy is integrated.
+    HysteresisEnergy {
+        /// Computed.
+        computed: bool,
+    },
+    /// An explicit population beside the integral.
+    MonteCarlo {
+        /// Summits drawn.
+        summits: usize,
+        /// Seed.
+        seed: u64,
+        /// The distribution's name.
+        distribution: String,
+        /// Log standard deviation of lognormal radii (0: fixed radius).
+        radius_log_std: f64,
+        /// `eta A_n / summits`.
+        factor: f64,
+    },
+}
+
+impl Decision {
+    /// What the decision is about.
+    pub fn topic(&self) -> &str {
+        match self {
+            Decision::Law { .. } => "law",
+            Decision::Output { observable, .. } => observable,
+            Decision::Start { .. } => "start separation",
+            Decision::Tabulation { .. } => "law evaluation",
+            Decision::Retraction { .. } => "retraction",
+            Decision::PullOff { .. } => "pull-off",
+            Decision::HysteresisEnergy { .. } => "hysteresis energy",
+            Decision::MonteCarlo { .. } => "montecarlo",
+        }
+    }
+
+    /// The choice, in a few words.
+    pub fn choice(&self) -> String {
+        match self {
+            Decision::Law { name, .. } => name.clone(),
+            Decision::Output { evaluation, .. } => match evaluation {
+                Evaluation::ClosedForm => "closed form F_n",
+                Evaluation::SampleSum => "exact sum over the sample",
+                Evaluation::Quadrature => "adaptive Gauss-Kronrod",
+                Evaluation::Skipped => "skipped",
+            }
+            .into(),
+            Decision::Start { separation, .. } => format!("{separation:e} m"),
+            Decision::Tabulation { .. } => "Chebyshev table".into(),
+            Decision::Retraction { computed, .. } => if *computed {
+                "computed"
+            } else {
+                "copied from approach"
+            }
+            .into(),
+            Decision::PullOff { searched, .. } => {
+                if *searched { "searched" } else { "skipped" }.into()
+            }
+            Decision::HysteresisEnergy { computed } => if *computed {
+                "trapezoid on the program"
+            } else {
+                "skipped"
+            }
+            .into(),
+            Decision::MonteCarlo { summits, seed, .. } => format!("{summits} summits, seed {seed}"),
+        }
+    }
+
+    /// Why, in a sentence.
+    pub fn why(&self) -> String {
+        match self {
+            Decision::Law {
+                reason, mu, lambda, ..
+            } => format!("{} [mu = {mu:.4}, lambda = {lambda:.4}]", law_why(reason, self)),
+            Decision::Output {
+                evaluation, reason, ..
+            } => output_why(*evaluation, reason),
+            Decision::Start { reason, .. } => match reason {
+                StartReason::Given => "given in the scene".into(),
+                StartReason::TailFraction(f) => format!(
+                    "summits beyond the flat's reach there carry < rtol/100 = {f:e} of the heights: \
+                     separations above it are skipped"
+                ),
+                StartReason::EverythingOn => {
+                    "everything-on mode: from the last representable summit height".into()
+                }
+            },
+            Decision::Tabulation {
+                law,
+                tolerance,
+                interval: (lo, hi),
+            } => format!(
+                "exact {law} replaced by degree-6 Chebyshev interpolants to rtol/10 = {tolerance:e} on \
+                 [{lo:.3e}, {hi:.3e}] m, built when the run starts (exact law outside)"
+            ),
+            Decision::Retraction {
+                computed,
+                hysteresis,
+                law,
+            } => match (computed, hysteresis) {
+                (true, Some((a, d))) => format!(
+                    "{law} asperities attach at {a:.3e} m and detach at {d:.3e} m: hysteresis"
+                ),
+                (true, None) => "everything-on mode".into(),
+                (false, _) => format!("{law} has no hysteresis (attach = detach interference)"),
+            },
+            Decision::PullOff {
+                searched,
+                asked,
+                adhesive,
+            } => {
+                if *searched {
+                    "sampled retraction curve, then golden-section refinement to rtol * sigma".into()
+                } else if !asked {
+                    "not asked for in [outputs]".into()
+                } else if !adhesive {
+                    "w = 0: no adhesion, no tensile load".into()
+                } else {
+                    "not searched".into()
+                }
+            }
+            Decision::HysteresisEnergy { computed } => if *computed {
+                "int (P_approach - P_retract) dd over the program's separations"
+            } else {
+                "not asked for in [outputs]"
+            }
+            .into(),
+            Decision::MonteCarlo {
+                distribution,
+                radius_log_std,
+                factor,
+                ..
+            } => format!(
+                "drawn from the {distribution} heights{}, summed exactly with each summit's attach/detach \
+                 state; compared point by point with the integral in standard errors{}",
+                if *radius_log_std > 0.0 {
+                    format!(", lognormal radii (log std {radius_log_std})")
+                } else {
+                    String::new()
+                },
+                if *factor != 1.0 {
+                    format!("; totals scaled by {factor:.4} to the whole surface")
+                } else {
+                    String::new()
+                }
+            ),
+        }
+    }
+}
+
+fn law_why(reason: &LawReason, d: &Decision) -> String {
+    let name = match d {
+        Decision::Law { name, .. } => name.as_str(),
+        _ => "",
+    };
+    match reason {
+        LawReason::NoAdhesion => "adhesion.w = 0: no adhesion machinery, Hertz asperities".into(),
+        LawReason::EverythingOn => "everything-on mode: the exact Maugis-Dugdale law".into(),
+        LawReason::CheapestWithin {
+            rtol,
+            error,
+            provenance,
+        } => format!(
+            "cheapest law within rtol = {rtol:e} of the full Lennard-Jones solution \
+             (measured error {error:.2e}; {provenance})"
+        ),
+        LawReason::NoneWithin { rtol, error } => format!(
+            "no analytic law is within rtol = {rtol:e} of the Lennard-Jones solution; {name} is the \
+             closest (measured error {error:.2e}); ask for law.kind = \"calibrated\" for the \
+             full-solver law"
+        ),
+        LawReason::Given => "given in the scene".into(),
+        LawReason::Calibrated { cached, path } => format!(
+            "full Lennard-Jones sphere solver (paraboloid), tabulated on both branches, with the \
+             Lennard-Jones attraction kept out to a rigid gap of 100 z0 (the Dugdale laws cut it at \
+             ~z0: on rough surfaces this tail can dominate the pull-off); {} {path}",
+            if *cached {
+                "read from the cache"
+            } else {
+                "computed and cached at"
+            }
+        ),
+    }
+}
+
+fn output_why(evaluation: Evaluation, reason: &OutputReason) -> String {
+    match reason {
+        OutputReason::Asked {
+            law,
+            distribution,
+            rtol,
+        } => match evaluation {
+            Evaluation::SampleSum => format!(
+                "{distribution} heights are a finite sample: the totals are exact averages over the \
+                 measured summits"
+            ),
+            Evaluation::ClosedForm => format!(
+                "{law} is a sum of powers and {distribution} heights have closed-form F_n: exact to \
+                 ~1e-13, no quadrature"
+            ),
+            _ => format!(
+                "no closed form for {law} on {distribution} heights; error controlled to rtol = \
+                 {rtol:e} of int |integrand|"
+            ),
+        },
+        OutputReason::EverythingOn => "everything-on mode".into(),
+        OutputReason::NeededByHysteresis => {
+            "not asked for, but the hysteresis energy needs it".into()
+        }
+        OutputReason::NotAsked => "not asked for in [outputs]".into(),
+    }
+}
+
+impl fmt::Display for Decision {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {} ({})", self.topic(), self.choice(), self.why())
+    }
+}

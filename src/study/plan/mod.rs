@@ -1,0 +1,381 @@
+//! The planner: turns a [`Scene`] into a [`Plan`] — which law, which method
+//! serves each output and why, and what is skipped. It only decides: the
+//! physics it needs (start separation, separation at a load, the
+//! interference range a program reaches, radius scaling) lives in the core,
+//! and nothing expensive runs here (Chebyshev tables are built and
+//! calibrations computed when the run starts; [`Plan::preview`] never runs
+//! the sphere solver).
+//!
+//! What a plan skips, and why each skip costs nothing:
+//! - outputs not asked for are not computed (the observable set);
+//! - adhesion machinery when `w = 0` (Hertz, no hysteresis);
+//! - the retraction leg when the law has no hysteresis
+//!   (attach = detach interference): it equals the approach leg, so it is
+//!   copied, not recomputed;
+//! - separations where no asperity is in range: the program starts where
+//!   the summits beyond the flat's reach carry less than
+//!   [`START_TAIL_FRACTION`] `x rtol` of the probability
+//!   ([`GwModel::start_separation`]);
+//! - quadrature where closed forms `F_n` exist (Hertz/DMT on Gaussian or
+//!   exponential heights);
+//! - the exact Maugis–Dugdale law when a cheaper law meets the tolerance at
+//!   this Tabor parameter ([`crate::law::errors`], measured against the full
+//!   Lennard-Jones solution).
+//!
+//! [`PlanMode::EverythingOn`] switches every skip off; the tests and the
+//! report compare the two to show that skipping pays and costs nothing.
+
+mod decision;
+mod law;
+mod montecarlo;
+
+pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
+pub use law::{LawChoice, LawSource};
+pub use montecarlo::McPlan;
+
+use crate::error::{Error, Result};
+use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
+use crate::heights::HeightDistribution;
+use crate::law::interpolated::InterpolatedLaw;
+use crate::law::AsperityLaw;
+use crate::loading::{LoadingModel, Observables};
+use crate::material::AsperityContact;
+use crate::study::scene::{build_contact, build_distribution, build_surface, Scene};
+use std::fmt;
+use std::sync::Arc;
+
+/// The program starts where summits beyond the flat's reach carry less than
+/// this fraction of `rtol` of the heights: their contribution is then two
+/// orders below the tolerance.
+pub const START_TAIL_FRACTION: f64 = 0.01;
+
+/// Tables of expensive laws are built to this fraction of `rtol`, so the
+/// table's error stays an order below the integration tolerance.
+pub const TABLE_TOLERANCE_FRACTION: f64 = 0.1;
+
+/// Deepest separation assumed for the table of a max-load program (in
+/// height scales below the start); interferences beyond it fall back to the
+/// exact law, so the guess costs speed, never accuracy.
+pub const MAX_LOAD_TABLE_DEPTH: f64 = 10.0;
+
+/// How much the planner may skip.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlanMode {
+    /// Skip everything the scene does not need (the default).
+    Planned,
+    /// Compute everything with the most exact methods: every output, the
+    /// exact law, quadrature everywhere, both legs, the full range.
+    EverythingOn,
+}
+
+/// Where the approach stops.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Target {
+    /// A closest separation (m).
+    Separation(f64),
+    /// A maximum compressive load (N); the separation is solved for.
+    Load(f64),
+}
+
+/// A planned study: everything needed to run it, and the reasons.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The scene planned.
+    pub scene: Scene,
+    /// The mode it was planned in.
+    pub mode: PlanMode,
+    /// The asperity contact (summit radius, E*, adhesion).
+    pub contact: AsperityContact,
+    /// The surface statistics.
+    pub surface: RoughSurface,
+    /// The height distribution.
+    pub distribution: Arc<dyn HeightDistribution>,
+    /// The law.
+    pub law: LawChoice,
+    /// Observables computed on the curve (load also when only the hysteresis
+    /// energy needs it).
+    pub curve_outputs: Observables,
+    /// Integration accuracy and method.
+    pub accuracy: Accuracy,
+    /// Separation where the program starts and ends (m).
+    pub start: f64,
+    /// Where the approach stops.
+    pub target: Target,
+    /// Points per leg.
+    pub points: usize,
+    /// The Chebyshev table to build for the run: interference interval (m)
+    /// and relative tolerance.
+    pub tabulation: Option<((f64, f64), f64)>,
+    /// Whether the retraction leg is computed (otherwise copied from the
+    /// approach: the law has no hysteresis).
+    pub compute_retraction: bool,
+    /// Whether the pull-off force is searched for.
+    pub pull_off: bool,
+    /// Whether the hysteresis energy is integrated.
+    pub hysteresis_energy: bool,
+    /// The explicit random population, when the scene asks for one.
+    pub montecarlo: Option<McPlan>,
+    /// The decisions, in order.
+    pub decisions: Vec<Decision>,
+}
+
+impl Plan {
+    /// Plans `scene` in `mode`; a `calibrated` law is read from the cache or
+    /// computed (the sphere solver: seconds).
+    ///
+    /// # Errors
+    /// Whatever the scene's values make impossible (validated again here),
+    /// naming the scene field.
+    pub fn new(scene: &Scene, mode: PlanMode) -> Result<Plan> {
+        Plan::build(scene, mode, false)
+    }
+
+    /// Plans `scene` without running anything expensive (`asperity run
+    /// --plan`): an uncached `calibrated` law is not computed; Maugis–Dugdale
+    /// at the same `lambda` stands in for its range decisions.
+    ///
+    /// # Errors
+    /// As [`Plan::new`].
+    pub fn preview(scene: &Scene, mode: PlanMode) -> Result<Plan> {
+        Plan::build(scene, mode, true)
+    }
+
+    fn build(scene: &Scene, mode: PlanMode, preview: bool) -> Result<Plan> {
+        scene.validate()?;
+        let contact = build_contact(scene)?;
+        let surface = build_surface(scene)?;
+        let distribution = build_distribution(&scene.surface)?;
+        let mut decisions = Vec::new();
+        let rtol = scene.accuracy.rtol;
+        let law = law::choose(scene, &contact, mode, preview, &mut decisions)?;
+        let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
+        let (curve_outputs, accuracy) = outputs(scene, mode, &model, &law, &mut decisions)?;
+        let model = model.with_accuracy(accuracy);
+        let target = match (scene.program.closest_separation, scene.program.max_load) {
+            (Some(d), _) => Target::Separation(d),
+            (None, Some(p)) => Target::Load(p),
+            (None, None) => return Err(Error::invalid("program", "no target")),
+        };
+        let (start, reason) = match (scene.program.start_separation, mode) {
+            (Some(s), _) => (s, StartReason::Given),
+            (None, PlanMode::Planned) => (
+                model.start_separation(START_TAIL_FRACTION * rtol),
+                StartReason::TailFraction(START_TAIL_FRACTION * rtol),
+            ),
+            (None, PlanMode::EverythingOn) => {
+                (model.interaction_onset(), StartReason::EverythingOn)
+            }
+        };
+        decisions.push(Decision::Start {
+            separation: start,
+            reason,
+        });
+        if let Target::Separation(d) = target {
+            if !(start > d) {
+                return Err(Error::OutOfRange {
+                    name: "program.closest_separation".into(),
+                    value: d,
+                    allowed: crate::error::Allowed::open(f64::NEG_INFINITY, start),
+                });
+            }
+        }
+        let tabulation = tabulation(&law, &model, start, target, rtol, mode);
+        if let Some((interval, tolerance)) = tabulation {
+            decisions.push(Decision::Tabulation {
+                law: law.name.clone(),
+                tolerance,
+                interval,
+            });
+        }
+        let hysteresis_free = law.law.attach_interference() == law.law.detach_interference();
+        let compute_retraction = mode == PlanMode::EverythingOn || !hysteresis_free;
+        decisions.push(Decision::Retraction {
+            computed: compute_retraction,
+            hysteresis: (!hysteresis_free)
+                .then(|| (law.law.attach_interference(), law.law.detach_interference())),
+            law: law.name.clone(),
+        });
+        let o = scene.outputs;
+        let adhesive = contact.adhesion.work() > 0.0;
+        let pull_off = o.pull_off && (adhesive || mode == PlanMode::EverythingOn);
+        decisions.push(Decision::PullOff {
+            searched: pull_off,
+            asked: o.pull_off || mode == PlanMode::EverythingOn,
+            adhesive,
+        });
+        let hysteresis_energy = o.hysteresis_energy || mode == PlanMode::EverythingOn;
+        decisions.push(Decision::HysteresisEnergy {
+            computed: hysteresis_energy,
+        });
+        let montecarlo = match &scene.montecarlo {
+            Some(spec) => {
+                let mc = McPlan::new(spec, &surface, &contact, &law)?;
+                decisions.push(Decision::MonteCarlo {
+                    summits: mc.summits,
+                    seed: spec.seed,
+                    distribution: distribution.name().into(),
+                    radius_log_std: spec.radius_log_std,
+                    factor: mc.factor,
+                });
+                Some(mc)
+            }
+            None => None,
+        };
+        Ok(Plan {
+            scene: scene.clone(),
+            mode,
+            montecarlo,
+            contact,
+            surface,
+            distribution,
+            law,
+            curve_outputs,
+            accuracy,
+            start,
+            target,
+            points: scene.program.points,
+            tabulation,
+            compute_retraction,
+            pull_off,
+            hysteresis_energy,
+            decisions,
+        })
+    }
+
+    /// The law the run evaluates: the plan's law, or its Chebyshev table
+    /// when the plan decided to tabulate it.
+    ///
+    /// # Errors
+    /// As [`InterpolatedLaw::new`].
+    pub fn run_law(&self) -> Result<Arc<dyn AsperityLaw>> {
+        Ok(match self.tabulation {
+            Some(((lo, hi), tol)) => {
+                Arc::new(InterpolatedLaw::new(self.law.law.clone(), lo, hi, tol)?)
+            }
+            None => self.law.law.clone(),
+        })
+    }
+
+    /// The rough-surface model of this plan with `law` (see [`Plan::run_law`]).
+    ///
+    /// # Errors
+    /// As [`GwModel::new`].
+    pub fn model_with(&self, law: Arc<dyn AsperityLaw>) -> Result<GwModel> {
+        Ok(
+            GwModel::new(self.surface, self.distribution.clone(), law)?
+                .with_accuracy(self.accuracy),
+        )
+    }
+
+    /// The closest separation (m): given, or solved from the maximum load on
+    /// approach ([`LoadingModel::separation_at_load`] to `rtol * sigma`).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `program.max_load` when the load is not
+    /// reached.
+    pub fn closest_separation(&self, model: &GwModel) -> Result<f64> {
+        match self.target {
+            Target::Separation(d) => Ok(d),
+            Target::Load(p) => model
+                .separation_at_load(p, self.start)
+                .map_err(|e| e.in_table("program")),
+        }
+    }
+}
+
+/// Which observables the curve computes, the integration method, and the
+/// decision for each output.
+fn outputs(
+    scene: &Scene,
+    mode: PlanMode,
+    model: &GwModel,
+    law: &LawChoice,
+    decisions: &mut Vec<Decision>,
+) -> Result<(Observables, Accuracy)> {
+    let o = scene.outputs;
+    let all = mode == PlanMode::EverythingOn;
+    let observables = Observables::standard(
+        o.load || o.hysteresis_energy || all,
+        o.area || all,
+        o.count || all,
+    );
+    let closed = model.has_closed_form(&Observables::ALL);
+    let method = if closed && !all {
+        Method::Auto
+    } else {
+        Method::Quadrature
+    };
+    let accuracy = Accuracy::new(scene.accuracy.rtol)
+        .map_err(|e| e.renamed("accuracy.rtol"))?
+        .with_method(method);
+    let distribution = model.distribution();
+    let evaluation = if distribution.sample_points().is_some() && !closed {
+        Evaluation::SampleSum
+    } else if method == Method::Auto {
+        Evaluation::ClosedForm
+    } else {
+        Evaluation::Quadrature
+    };
+    for (name, asked, needed) in [
+        ("load", o.load, observables.load),
+        ("area", o.area, observables.area),
+        ("count", o.count, observables.count),
+    ] {
+        let (evaluation, reason) = if !needed {
+            (Evaluation::Skipped, OutputReason::NotAsked)
+        } else if asked && !all {
+            (
+                evaluation,
+                OutputReason::Asked {
+                    law: law.name.clone(),
+                    distribution: distribution.name().into(),
+                    rtol: scene.accuracy.rtol,
+                },
+            )
+        } else if all {
+            (evaluation, OutputReason::EverythingOn)
+        } else {
+            (evaluation, OutputReason::NeededByHysteresis)
+        };
+        decisions.push(Decision::Output {
+            observable: name,
+            evaluation,
+            reason,
+        });
+    }
+    Ok((observables, accuracy))
+}
+
+/// The table of an expensive law ([`LawKind::worth_tabulating`](crate::law::LawKind::worth_tabulating)):
+/// the interference interval the program reaches ([`GwModel::reachable_interferences`])
+/// and the table's tolerance; `None` when not worth it.
+fn tabulation(
+    law: &LawChoice,
+    model: &GwModel,
+    start: f64,
+    target: Target,
+    rtol: f64,
+    mode: PlanMode,
+) -> Option<((f64, f64), f64)> {
+    let worth = matches!(law.source, LawSource::Kind(k) if k.worth_tabulating());
+    if mode == PlanMode::EverythingOn || !worth {
+        return None;
+    }
+    let closest = match target {
+        Target::Separation(d) => d,
+        Target::Load(_) => start - MAX_LOAD_TABLE_DEPTH * model.surface().sigma,
+    };
+    let (lo, hi) = model.reachable_interferences(closest);
+    (hi > lo).then_some(((lo, hi), TABLE_TOLERANCE_FRACTION * rtol))
+}
+
+impl fmt::Display for Plan {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let title = self.scene.title.as_deref().unwrap_or("untitled scene");
+        writeln!(f, "plan for {title} ({:?})", self.mode)?;
+        for d in &self.decisions {
+            writeln!(f, "  {:<18} {:<24} {}", d.topic(), d.choice(), d.why())?;
+        }
+        Ok(())
+    }
+}
