@@ -2,8 +2,9 @@
 
 use super::plan::{McPlan, Plan};
 use crate::error::Result;
+use crate::law::AsperityLaw;
 use crate::loading::{Curve, History, LoadingModel, LoadingProgram, PullOff, State, SLOTS};
-use crate::montecarlo::{MonteCarlo, Population};
+use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -55,11 +56,22 @@ pub struct McResults {
 }
 
 /// Draws the plan's population and sums it over `program`.
-fn run_montecarlo(plan: &Plan, mc: &McPlan, curve: &Curve) -> Result<McResults> {
+fn run_montecarlo(
+    plan: &Plan,
+    mc: &McPlan,
+    run_law: &Arc<dyn AsperityLaw>,
+    curve: &Curve,
+) -> Result<McResults> {
     let t0 = Instant::now();
     let spec = mc.population_spec(&plan.surface)?;
     let population = Arc::new(Population::sample(&spec, plan.distribution.as_ref())?);
-    let summer = MonteCarlo::new(population, mc.law.clone())?;
+    // One radius: the population sums the same (possibly tabulated) law as
+    // the integral; a radius spread rescales the plan's scalable law.
+    let law = match mc.law.scaling() {
+        None => SummitLaw::fixed(run_law.clone(), mc.law.reference_radius())?,
+        Some(_) => mc.law.clone(),
+    };
+    let summer = MonteCarlo::new(population, law)?;
     let mc_curve = summer
         .curve(&curve.program, &plan.curve_outputs)?
         .scaled(mc.factor);
@@ -114,7 +126,8 @@ impl Plan {
     /// reached.
     pub fn run(&self) -> Result<Results> {
         let t0 = Instant::now();
-        let model = self.model_with(self.run_law()?)?;
+        let run_law = self.run_law()?;
+        let model = self.model_with(run_law.clone())?;
         let closest = self.closest_separation(&model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
         let curve = if self.compute_retraction {
@@ -154,7 +167,7 @@ impl Plan {
             .map(|s| s.evaluations)
             .sum();
         let montecarlo = match &self.montecarlo {
-            Some(mc) => Some(run_montecarlo(self, mc, &curve)?),
+            Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
             None => None,
         };
         Ok(Results {

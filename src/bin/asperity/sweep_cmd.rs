@@ -47,6 +47,18 @@ pub struct MergeArgs {
     out: PathBuf,
 }
 
+/// The sweep layer names its own parameters (`vary`, `out`, ...); on the
+/// command line they are flags.
+fn as_flag(e: asperity::Error) -> asperity::Error {
+    match e.field() {
+        Some(f @ ("vary" | "log" | "samples" | "seed" | "shard" | "threads" | "out")) => {
+            let flag = format!("--{f}");
+            e.renamed(&flag)
+        }
+        _ => e,
+    }
+}
+
 pub fn run(args: &SweepArgs) -> crate::CliResult {
     let text = std::fs::read_to_string(&args.scene).map_err(|e| {
         CliError::Usage(format!("scene: cannot read {}: {e}", args.scene.display()))
@@ -55,7 +67,7 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     let vary = args
         .vary
         .iter()
-        .map(|v| Vary::parse(v))
+        .map(|v| Vary::parse(v).map_err(as_flag))
         .collect::<asperity::Result<Vec<_>>>()?;
     let spec = SweepSpec {
         vary,
@@ -66,7 +78,12 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
         log: args.log,
         seed: args.seed,
     };
-    let shard = args.shard.as_deref().map(Shard::parse).transpose()?;
+    let shard = args
+        .shard
+        .as_deref()
+        .map(Shard::parse)
+        .transpose()
+        .map_err(as_flag)?;
     if args.threads == Some(0) {
         return Err(CliError::Usage("--threads = 0: give at least 1".into()));
     }
@@ -85,7 +102,7 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
         shard,
         threads: args.threads,
     };
-    let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress)?;
+    let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress).map_err(as_flag)?;
     bar.finish_and_clear();
     eprintln!(
         "{} points: {} already done, {} computed now ({} failed){}; results in {}",
@@ -104,7 +121,7 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
 }
 
 pub fn run_merge(args: &MergeArgs) -> crate::CliResult {
-    let path = merge(&args.dirs, &args.out)?;
+    let path = merge(&args.dirs, &args.out).map_err(as_flag)?;
     eprintln!(
         "merged {} directories into {}",
         args.dirs.len(),

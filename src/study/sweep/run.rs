@@ -202,7 +202,7 @@ pub fn run_sweep(
                 failed.fetch_add(1, Ordering::Relaxed);
             }
             file.lock()
-                .map_err(|_| Error::invalid("--out", "results file lock poisoned"))?
+                .map_err(|_| Error::invalid("out", "results file lock poisoned"))?
                 .append(p.index, &row)?;
             progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
             Ok(())
@@ -212,13 +212,13 @@ pub fn run_sweep(
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
             .build()
-            .map_err(|e| Error::invalid("--threads", e.to_string()))?
+            .map_err(|e| Error::invalid("threads", e.to_string()))?
             .install(work)?,
         None => work()?,
     }
     let file = file
         .into_inner()
-        .map_err(|_| Error::invalid("--out", "results file lock poisoned"))?;
+        .map_err(|_| Error::invalid("out", "results file lock poisoned"))?;
     let path = file.finish(&header)?;
     Ok(PointOutcome {
         planned: total,

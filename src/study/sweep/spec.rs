@@ -27,10 +27,7 @@ impl Vary {
     /// [`Error::Invalid`] naming `--vary` with the text and what is wrong.
     pub fn parse(text: &str) -> Result<Vary> {
         let bad = |why: &str| {
-            Error::invalid(
-                "--vary",
-                format!("{text:?}: {why} (expected PATH=FROM:TO:N)"),
-            )
+            Error::invalid("vary", format!("{text:?}: {why} (expected PATH=FROM:TO:N)"))
         };
         let (path, range) = text.split_once('=').ok_or_else(|| bad("no '='"))?;
         let parts: Vec<&str> = range.split(':').collect();
@@ -42,7 +39,7 @@ impl Vary {
                 .trim()
                 .parse()
                 .map_err(|_| bad(&format!("{s:?} is not a number")))?;
-            Allowed::FINITE.check("--vary", x)
+            Allowed::FINITE.check("vary", x)
         };
         let n = match parts.get(2) {
             Some(s) => s
@@ -139,20 +136,20 @@ impl SweepSpec {
     pub fn validate(&self) -> Result<()> {
         if self.vary.is_empty() {
             return Err(Error::invalid(
-                "--vary",
+                "vary",
                 "give at least one --vary PATH=FROM:TO:N",
             ));
         }
         for (i, v) in self.vary.iter().enumerate() {
             if self.vary[..i].iter().any(|w| w.path == v.path) {
                 return Err(Error::invalid(
-                    "--vary",
+                    "vary",
                     format!("{} is varied twice", v.path),
                 ));
             }
             if self.log && !(v.from > 0.0 && v.to > 0.0) {
                 return Err(Error::invalid(
-                    "--log",
+                    "log",
                     format!(
                         "{}: a log range needs FROM and TO > 0, got {}:{}",
                         v.path, v.from, v.to
@@ -171,9 +168,9 @@ impl SweepSpec {
         if total == 0 || total > MAX_POINTS {
             return Err(Error::invalid(
                 if matches!(self.design, Design::Grid) {
-                    "--vary"
+                    "vary"
                 } else {
-                    "--samples"
+                    "samples"
                 },
                 format!("{total} points; allowed 1 ..= {MAX_POINTS}"),
             ));
@@ -251,12 +248,7 @@ impl Shard {
     /// # Errors
     /// [`Error::Invalid`] naming `--shard`.
     pub fn parse(text: &str) -> Result<Shard> {
-        let bad = || {
-            Error::invalid(
-                "--shard",
-                format!("{text:?}: expected K/N with 1 <= K <= N"),
-            )
-        };
+        let bad = || Error::invalid("shard", format!("{text:?}: expected K/N with 1 <= K <= N"));
         let (k, n) = text.split_once('/').ok_or_else(bad)?;
         let k: usize = k.trim().parse().map_err(|_| bad())?;
         let n: usize = n.trim().parse().map_err(|_| bad())?;
@@ -292,11 +284,7 @@ mod tests {
             "a=nan:1:2",
             "a=1:2:3:4",
         ] {
-            assert_eq!(
-                Vary::parse(bad).unwrap_err().field(),
-                Some("--vary"),
-                "{bad}"
-            );
+            assert_eq!(Vary::parse(bad).unwrap_err().field(), Some("vary"), "{bad}");
         }
     }
 
@@ -365,18 +353,18 @@ mod tests {
             log: false,
             seed: 0,
         };
-        assert_eq!(spec.validate().unwrap_err().field(), Some("--vary"));
+        assert_eq!(spec.validate().unwrap_err().field(), Some("vary"));
         spec.vary = vec![Vary::parse("a=-1:1:3").unwrap()];
         spec.log = true;
-        assert_eq!(spec.validate().unwrap_err().field(), Some("--log"));
+        assert_eq!(spec.validate().unwrap_err().field(), Some("log"));
         spec.log = false;
         spec.vary.push(Vary::parse("a=0:1:2").unwrap());
-        assert_eq!(spec.validate().unwrap_err().field(), Some("--vary"));
+        assert_eq!(spec.validate().unwrap_err().field(), Some("vary"));
         spec.vary.pop();
         spec.design = Design::Latin { samples: 0 };
-        assert_eq!(spec.validate().unwrap_err().field(), Some("--samples"));
+        assert_eq!(spec.validate().unwrap_err().field(), Some("samples"));
         for bad in ["0/3", "4/3", "x/2", "1"] {
-            assert_eq!(Shard::parse(bad).unwrap_err().field(), Some("--shard"));
+            assert_eq!(Shard::parse(bad).unwrap_err().field(), Some("shard"));
         }
         let s = Shard::parse("2/3").unwrap();
         assert!(s.contains(1) && s.contains(4) && !s.contains(0));

@@ -44,8 +44,14 @@ pub struct ResultsFile {
     pub repaired: bool,
 }
 
+/// A file-system failure: not the input's fault.
 fn io_err(path: &Path, e: impl std::fmt::Display) -> Error {
-    Error::invalid("--out", format!("{}: {e}", path.display()))
+    Error::io(path.display(), e)
+}
+
+/// A results directory whose content is not what a sweep writes.
+fn bad_dir(path: &Path, e: impl std::fmt::Display) -> Error {
+    Error::invalid("out", format!("{}: {e}", path.display()))
 }
 
 /// The point index at the start of a complete row, if it parses and the
@@ -71,7 +77,7 @@ fn read_rows(path: &Path, header: &str) -> Result<(BTreeMap<usize, String>, bool
         let line = chunk.trim_end_matches('\n');
         if i == 0 {
             if line != header {
-                return Err(io_err(
+                return Err(bad_dir(
                     path,
                     format!("header {line:?} differs from this sweep's {header:?}"),
                 ));
@@ -86,7 +92,7 @@ fn read_rows(path: &Path, header: &str) -> Result<(BTreeMap<usize, String>, bool
                     break;
                 }
                 (true, None) => {
-                    return Err(io_err(
+                    return Err(bad_dir(
                         path,
                         format!("line {} is not a result row: {line:?}", i + 1),
                     ))
@@ -111,9 +117,9 @@ impl ResultsFile {
             let old: SweepMeta = serde_json::from_str(
                 &std::fs::read_to_string(&meta_path).map_err(|e| io_err(&meta_path, e))?,
             )
-            .map_err(|e| io_err(&meta_path, e))?;
+            .map_err(|e| bad_dir(&meta_path, e))?;
             if !old.same_sweep(meta) || old.shard != meta.shard {
-                return Err(io_err(
+                return Err(bad_dir(
                     dir,
                     "holds a different sweep (scene, --vary, design or shard differ); use another --out",
                 ));
@@ -214,7 +220,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<PathBuf> {
         let meta: SweepMeta = serde_json::from_str(
             &std::fs::read_to_string(&meta_path).map_err(|e| io_err(&meta_path, e))?,
         )
-        .map_err(|e| io_err(&meta_path, e))?;
+        .map_err(|e| bad_dir(&meta_path, e))?;
         if let Some(f) = &first {
             if !f.same_sweep(&meta) {
                 return Err(Error::invalid(
@@ -336,7 +342,7 @@ mod tests {
         other.scene = "t".into();
         assert_eq!(
             ResultsFile::open(&dir, &other).unwrap_err().field(),
-            Some("--out")
+            Some("out")
         );
         std::fs::remove_dir_all(&dir).ok();
     }
