@@ -23,6 +23,7 @@
 
 use super::{AsperityLaw, Branch, ContactState, Control, Instability};
 use crate::error::{Allowed, Error, Result};
+use crate::numeric::chebyshev::clenshaw;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -76,19 +77,6 @@ fn chebyshev_coefficients(f: &[f64; DEG + 1]) -> [f64; DEG + 1] {
             c
         }
     })
-}
-
-/// Clenshaw's sum of `sum c_j T_j(t)`.
-#[inline]
-fn clenshaw(c: &[f64; DEG + 1], t: f64) -> f64 {
-    let (mut b1, mut b2) = (0.0, 0.0);
-    let t2 = 2.0 * t;
-    for &cj in c[1..].iter().rev() {
-        let b0 = cj + t2 * b1 - b2;
-        b2 = b1;
-        b1 = b0;
-    }
-    c[0] + t * b1 - b2
 }
 
 impl InterpolatedLaw {

@@ -27,6 +27,7 @@
 use crate::error::{non_negative, positive, Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
+use crate::numeric::mix::splitmix64;
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{Rng, SeedableRng};
 use rand_distr::{Distribution, StandardNormal};
@@ -344,18 +345,10 @@ fn sort_together(heights: &mut [f64], radii: Option<&mut Vec<f64>>) {
 /// Seed offset of the radius streams (distinct from every height stream).
 const RADIUS_STREAM: u64 = 0x5241_4449_5553_0001;
 
-/// SplitMix64 finaliser (Steele, Lea & Flood 2014): a bijective mixer.
-fn splitmix(mut z: u64) -> u64 {
-    z = z.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
-}
-
 /// The generator of block `b` for `seed`: xoshiro256++ seeded from a hash of
 /// both (distinct `(seed, b)` give unrelated streams).
 pub(crate) fn block_rng(seed: u64, b: u64) -> Xoshiro256PlusPlus {
-    Xoshiro256PlusPlus::seed_from_u64(splitmix(splitmix(seed) ^ b))
+    Xoshiro256PlusPlus::seed_from_u64(splitmix64(splitmix64(seed) ^ b))
 }
 
 /// Uniform on the open interval `(0, 1)`: `(k + 1/2) 2^-53` from the top 53

@@ -23,9 +23,9 @@
 //! - `phi(h)` with an exact exponent ([`normal::pdf`]); past its underflow
 //!   (`h ~ 38.6`) every `F_n` is 0. `h = -inf` gives `F_0 = 1`, others `inf`.
 
-use super::chebyshev::piecewise;
 use super::gaussian_tables::{NEG_F12, NEG_F32, POS_R1, POS_R2, POS_R32, POS_R52};
 use super::normal;
+use crate::numeric::chebyshev::piecewise;
 
 /// Upper end of the Chebyshev pieces for `h >= 0`.
 pub(crate) const TABLE_HI: f64 = 20.0;

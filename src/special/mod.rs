@@ -10,7 +10,6 @@
 //! - [`gamma`]: `Gamma(x)` and `ln Gamma(x)` for real `x`;
 //! - [`elliptic`]: complete elliptic integrals `K(m)`, `E(m)`.
 
-mod chebyshev;
 pub mod elliptic;
 pub mod gamma;
 pub mod gaussian_fn;

@@ -1,6 +1,7 @@
 //! What a sweep varies and which points it visits.
 
 use crate::error::{Allowed, Error, Result};
+use crate::numeric::mix::splitmix64;
 use rand::rngs::StdRng;
 use rand::seq::SliceRandom;
 use rand::{RngExt, SeedableRng};
@@ -114,14 +115,6 @@ pub struct SweepPoint {
 /// change is below 1e-15 relative.
 fn round15(x: f64) -> f64 {
     format!("{x:.14e}").parse().unwrap_or(x)
-}
-
-/// SplitMix64 finaliser: a well-mixed 64-bit hash.
-pub fn splitmix64(x: u64) -> u64 {
-    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
 }
 
 /// Most points a sweep may have.

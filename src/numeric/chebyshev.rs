@@ -3,7 +3,7 @@
 
 /// `sum_j c_j T_j(x)` for `x` in `[-1, 1]` by Clenshaw's recurrence.
 #[inline]
-pub(crate) fn clenshaw<const N: usize>(c: &[f64; N], x: f64) -> f64 {
+pub fn clenshaw<const N: usize>(c: &[f64; N], x: f64) -> f64 {
     let (mut b1, mut b2) = (0.0, 0.0);
     let x2 = 2.0 * x;
     for &cj in c[1..].iter().rev() {
@@ -17,7 +17,7 @@ pub(crate) fn clenshaw<const N: usize>(c: &[f64; N], x: f64) -> f64 {
 /// Evaluates a table of unit-width pieces starting at `lo` at `h`
 /// (`lo <= h < lo + pieces`).
 #[inline]
-pub(crate) fn piecewise<const N: usize, const P: usize>(t: &[[f64; N]; P], lo: f64, h: f64) -> f64 {
+pub fn piecewise<const N: usize, const P: usize>(t: &[[f64; N]; P], lo: f64, h: f64) -> f64 {
     let y = h - lo;
     // `y` is in [0, P); the min guards the last piece's right end.
     let i = (y as usize).min(P - 1);
