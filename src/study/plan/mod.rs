@@ -151,34 +151,7 @@ impl Plan {
         let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
         let (curve_outputs, accuracy) = outputs(scene, mode, &model, &law, &mut decisions)?;
         let model = model.with_accuracy(accuracy);
-        let target = match (scene.program.closest_separation, scene.program.max_load) {
-            (Some(d), _) => Target::Separation(d),
-            (None, Some(p)) => Target::Load(p),
-            (None, None) => return Err(Error::invalid("program", "no target")),
-        };
-        let (start, reason) = match (scene.program.start_separation, mode) {
-            (Some(s), _) => (s, StartReason::Given),
-            (None, PlanMode::Planned) => (
-                model.start_separation(START_TAIL_FRACTION * rtol),
-                StartReason::TailFraction(START_TAIL_FRACTION * rtol),
-            ),
-            (None, PlanMode::EverythingOn) => {
-                (model.interaction_onset(), StartReason::EverythingOn)
-            }
-        };
-        decisions.push(Decision::Start {
-            separation: start,
-            reason,
-        });
-        if let Target::Separation(d) = target {
-            if !(start > d) {
-                return Err(Error::OutOfRange {
-                    name: "program.closest_separation".into(),
-                    value: d,
-                    allowed: crate::error::Allowed::open(f64::NEG_INFINITY, start),
-                });
-            }
-        }
+        let (target, start) = program(scene, mode, &model, &mut decisions)?;
         let tabulation = tabulation(&law, &model, start, target, rtol, mode);
         if let Some((interval, tolerance)) = tabulation {
             decisions.push(Decision::Tabulation {
@@ -281,6 +254,42 @@ impl Plan {
                 .map_err(|e| e.in_table("program")),
         }
     }
+}
+
+/// Where the program starts and where its approach stops.
+fn program(
+    scene: &Scene,
+    mode: PlanMode,
+    model: &GwModel,
+    decisions: &mut Vec<Decision>,
+) -> Result<(Target, f64)> {
+    let target = match (scene.program.closest_separation, scene.program.max_load) {
+        (Some(d), _) => Target::Separation(d),
+        (None, Some(p)) => Target::Load(p),
+        (None, None) => return Err(Error::invalid("program", "no target")),
+    };
+    let (start, reason) = match (scene.program.start_separation, mode) {
+        (Some(s), _) => (s, StartReason::Given),
+        (None, PlanMode::Planned) => (
+            model.start_separation(START_TAIL_FRACTION * scene.accuracy.rtol),
+            StartReason::TailFraction(START_TAIL_FRACTION * scene.accuracy.rtol),
+        ),
+        (None, PlanMode::EverythingOn) => (model.interaction_onset(), StartReason::EverythingOn),
+    };
+    decisions.push(Decision::Start {
+        separation: start,
+        reason,
+    });
+    if let Target::Separation(d) = target {
+        if !(start > d) {
+            return Err(Error::OutOfRange {
+                name: "program.closest_separation".into(),
+                value: d,
+                allowed: crate::error::Allowed::open(f64::NEG_INFINITY, start),
+            });
+        }
+    }
+    Ok((target, start))
 }
 
 /// Which observables the curve computes, the integration method, and the
