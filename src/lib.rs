@@ -35,6 +35,7 @@ pub mod law;
 pub mod material;
 pub mod montecarlo;
 pub mod numeric;
+pub mod punch;
 pub mod special;
 pub mod sphere;
 #[cfg(feature = "study")]
