@@ -124,7 +124,9 @@ impl WavyPunch {
     /// Exact equilibrium depth `h(a)` (m) at contact radius `a >= 0` (eq. 4.3; `h(0) = 0`).
     pub fn depth(&self, a: f64) -> f64 {
         let (h0, _) = struve_h0_h1(self.k() * a);
-        self.smooth_depth(a) + PI * PI * self.amplitude * a * h0
+        // Same operations as `state`, so both give identical bits.
+        let pa = PI * self.amplitude * a;
+        self.smooth_depth(a) + PI * pa * h0
     }
 
     /// Exact equilibrium load `P(a)` (N) at contact radius `a >= 0` (eq. 4.4; `P(0) = 0`).
