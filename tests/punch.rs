@@ -9,7 +9,7 @@ use serde_json::Value;
 use std::f64::consts::PI;
 
 mod common;
-use common::{local, num, shared};
+use common::{local, num, rel, shared};
 
 fn punch_of(c: &Value) -> WavyPunch {
     let f = |k: &str| num(&c[k]);
@@ -103,7 +103,7 @@ fn evolution_and_energy_loss_match_mpmath() {
         }
         let loss = ev.energy_loss(h_min);
         let want = num(&c["loss"]);
-        let rel = (loss - want).abs() / want;
+        let rel = rel(loss, want);
         println!("{name}: loss {loss:.15e} vs mpmath {want:.15e}: rel {rel:.1e}");
         assert!(rel < 1e-6, "{name}: {loss} vs {want}");
     }
