@@ -132,7 +132,7 @@ fn parse_cycle(text: &str) -> Result<(f64, f64), CliError> {
     );
     asperity::error::finite("--cycle", lo)?;
     asperity::error::finite("--cycle", hi)?;
-    if !(lo < hi) {
+    if lo >= hi {
         return Err(CliError::Usage(format!(
             "--cycle: HMIN {lo} must be below HMAX {hi}"
         )));
