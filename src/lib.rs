@@ -36,6 +36,7 @@ pub mod loading;
 pub mod material;
 pub mod montecarlo;
 pub mod numeric;
+pub mod punch;
 pub mod special;
 pub mod sphere;
 #[cfg(feature = "study")]

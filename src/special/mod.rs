@@ -8,7 +8,8 @@
 //!   `F_n(h) = int_h^inf (s-h)^n phi(s) ds` of the standard normal for
 //!   `n = 0, 1/2, 1, 3/2, 2, 5/2`;
 //! - [`gamma`]: `Gamma(x)` and `ln Gamma(x)` for real `x`;
-//! - [`elliptic`]: complete elliptic integrals `K(m)`, `E(m)`.
+//! - [`elliptic`]: complete elliptic integrals `K(m)`, `E(m)`;
+//! - [`struve`]: Struve functions `H0`, `H1` of real argument.
 
 pub mod elliptic;
 pub mod gamma;
@@ -16,3 +17,6 @@ pub mod gaussian_fn;
 #[allow(missing_docs)]
 mod gaussian_tables;
 pub mod normal;
+pub mod struve;
+#[allow(missing_docs)]
+mod struve_tables;

@@ -8,6 +8,7 @@ mod default_study;
 mod fn_cmd;
 mod law_cmd;
 mod map_cmd;
+mod punch_cmd;
 mod run_cmd;
 mod sphere_cmd;
 mod sweep_cmd;
@@ -39,6 +40,10 @@ enum Command {
     Fn(fn_cmd::FnArgs),
     /// Full Lennard-Jones sphere solver: pull-off facts and the S-curve.
     Sphere(sphere_cmd::SphereArgs),
+    /// Wavy punch (Kesari & Lew): exact curve, envelopes, evolution, energy loss per cycle.
+    Punch(punch_cmd::PunchArgs),
+    /// Fit E*, w and A sqrt(l) to measured (radius, load) on loading and unloading.
+    PunchFit(punch_cmd::PunchFitArgs),
 }
 
 /// Result of a subcommand.
@@ -93,6 +98,8 @@ fn main() -> ExitCode {
         Some(Command::Map(args)) => map_cmd::run(&args),
         Some(Command::Fn(args)) => fn_cmd::run(&args),
         Some(Command::Sphere(args)) => sphere_cmd::run(&args),
+        Some(Command::Punch(args)) => punch_cmd::run(&args),
+        Some(Command::PunchFit(args)) => punch_cmd::run_fit(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
