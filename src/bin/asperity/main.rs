@@ -10,6 +10,7 @@ mod law_cmd;
 mod map_cmd;
 mod run_cmd;
 mod sphere_cmd;
+mod surface_cmd;
 mod sweep_cmd;
 
 use clap::{Parser, Subcommand};
@@ -39,6 +40,8 @@ enum Command {
     Fn(fn_cmd::FnArgs),
     /// Full Lennard-Jones sphere solver: pull-off facts and the S-curve.
     Sphere(sphere_cmd::SphereArgs),
+    /// Characterise a measured height map: moments, summits, GW parameters.
+    Surface(surface_cmd::SurfaceArgs),
 }
 
 /// Result of a subcommand.
@@ -93,6 +96,7 @@ fn main() -> ExitCode {
         Some(Command::Map(args)) => map_cmd::run(&args),
         Some(Command::Fn(args)) => fn_cmd::run(&args),
         Some(Command::Sphere(args)) => sphere_cmd::run(&args),
+        Some(Command::Surface(args)) => surface_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
