@@ -41,6 +41,7 @@ pub mod special;
 pub mod sphere;
 #[cfg(feature = "study")]
 pub mod study;
+pub mod surface;
 
 pub use error::{Error, Result};
 

@@ -11,6 +11,7 @@ mod map_cmd;
 mod punch_cmd;
 mod run_cmd;
 mod sphere_cmd;
+mod surface_cmd;
 mod sweep_cmd;
 
 use clap::{Parser, Subcommand};
@@ -44,6 +45,8 @@ enum Command {
     Punch(punch_cmd::PunchArgs),
     /// Fit E*, w and A sqrt(l) to measured (radius, load) on loading and unloading.
     PunchFit(punch_cmd::PunchFitArgs),
+    /// Characterise a measured height map: moments, summits, GW parameters.
+    Surface(surface_cmd::SurfaceArgs),
 }
 
 /// Result of a subcommand.
@@ -100,6 +103,7 @@ fn main() -> ExitCode {
         Some(Command::Sphere(args)) => sphere_cmd::run(&args),
         Some(Command::Punch(args)) => punch_cmd::run(&args),
         Some(Command::PunchFit(args)) => punch_cmd::run_fit(&args),
+        Some(Command::Surface(args)) => surface_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -3,6 +3,7 @@
 
 mod map;
 pub mod punch;
+pub mod surface;
 
 pub use map::{adhesion_map_csv, write_adhesion_map};
 

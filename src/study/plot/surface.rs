@@ -1,0 +1,216 @@
+//! Charts of a measured topography: the summit-height histogram against the
+//! Gaussian model predicted from the moments, and the summit map.
+
+use super::{tick, COLOURS};
+use crate::error::{Error, Result};
+use crate::surface::Characterisation;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// A length unit for axes: nm below 1 um, um below 1 mm, else mm.
+fn unit(scale_m: f64) -> (f64, &'static str) {
+    if scale_m < 1e-6 {
+        (1e-9, "nm")
+    } else if scale_m < 1e-3 {
+        (1e-6, "um")
+    } else {
+        (1e-3, "mm")
+    }
+}
+
+fn fail(path: &Path, e: impl std::fmt::Display) -> Error {
+    Error::invalid("chart", format!("{}: {e}", path.display()))
+}
+
+/// The histogram of summit heights (probability density, `sqrt(N)` bins
+/// between 8 and 60) against the Gaussian model of the GW parameters
+/// predicted from the moments: mean `4 sqrt(m0/(pi alpha))`, standard
+/// deviation `sqrt(m0 (1 - 0.8968/alpha))` (McCool). SVG, 800 x 500.
+///
+/// # Errors
+/// [`Error::Invalid`] named `chart` when the map has fewer than 2 summits
+/// or the file cannot be written.
+pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
+    let n = c.summits.len();
+    if n < 2 {
+        return Err(fail(path, format!("{n} summits: no histogram")));
+    }
+    let (u, name) = unit(c.moments.rms_height());
+    let h: Vec<f64> = c.summits.iter().map(|s| s.height_m / u).collect();
+    let lo = h.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = h.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let bins = ((n as f64).sqrt() as usize).clamp(8, 60);
+    let width = ((hi - lo) / bins as f64).max(f64::MIN_POSITIVE);
+    let mut counts = vec![0usize; bins];
+    for v in &h {
+        counts[(((v - lo) / width) as usize).min(bins - 1)] += 1;
+    }
+    let dens: Vec<f64> = counts
+        .iter()
+        .map(|&k| k as f64 / (n as f64 * width))
+        .collect();
+    let mean = c.nayak().mean_height_m / u;
+    let sd = c
+        .gw_from_moments()
+        .sigma_m
+        .unwrap_or(c.moments.rms_height())
+        / u;
+    let (x0, x1) = (lo.min(mean - 4.0 * sd), hi.max(mean + 4.0 * sd));
+    let model: Vec<(f64, f64)> = (0..=200)
+        .map(|k| {
+            let x = x0 + (x1 - x0) * k as f64 / 200.0;
+            let t = (x - mean) / sd;
+            (
+                x,
+                (-0.5 * t * t).exp() / (sd * (2.0 * std::f64::consts::PI).sqrt()),
+            )
+        })
+        .collect();
+    let ymax = dens
+        .iter()
+        .chain(model.iter().map(|p| &p.1))
+        .copied()
+        .fold(0.0, f64::max)
+        * 1.08;
+    let root = SVGBackend::new(path, (800, 500)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| fail(path, e))?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(format!("Summit heights ({n} summits)"), ("sans-serif", 22))
+        .margin(12)
+        .x_label_area_size(48)
+        .y_label_area_size(78)
+        .build_cartesian_2d(x0..x1, 0.0..ymax)
+        .map_err(|e| fail(path, e))?;
+    chart
+        .configure_mesh()
+        .x_desc(format!("summit height above the mean plane ({name})"))
+        .y_desc(format!("probability density (1/{name})"))
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 16))
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
+        .draw()
+        .map_err(|e| fail(path, e))?;
+    let bar = COLOURS[0];
+    chart
+        .draw_series(dens.iter().enumerate().map(|(k, d)| {
+            let a = lo + k as f64 * width;
+            Rectangle::new([(a, 0.0), (a + width, *d)], bar.mix(0.5).filled())
+        }))
+        .map_err(|e| fail(path, e))?
+        .label("measured summits")
+        .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], bar.mix(0.5).filled()));
+    let line = COLOURS[1];
+    chart
+        .draw_series(LineSeries::new(model, line.stroke_width(2)))
+        .map_err(|e| fail(path, e))?
+        .label("Gaussian, GW parameters from moments")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], line.stroke_width(2)));
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .draw()
+        .map_err(|e| fail(path, e))?;
+    root.present().map_err(|e| fail(path, e))
+}
+
+/// The summit map: every summit at its position (x along a row, y down the
+/// columns, origin at pixel (0, 0)), coloured from blue (lowest) to red
+/// (highest). SVG, about 700 pixels on the long side.
+///
+/// # Errors
+/// [`Error::Invalid`] named `chart` when there is no summit or the file
+/// cannot be written.
+pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
+    if c.summits.is_empty() {
+        return Err(fail(path, "no summits: no map"));
+    }
+    let dx = c.pixel_size_m;
+    let (w, h) = (c.cols as f64 * dx, c.rows as f64 * dx);
+    let (u, name) = unit(w.max(h));
+    let (lo, hi) = c
+        .summits
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), s| {
+            (a.min(s.height_m), b.max(s.height_m))
+        });
+    let span = (hi - lo).max(f64::MIN_POSITIVE);
+    let side = 700.0 / w.max(h);
+    let size = (
+        ((w * side) as u32).max(200) + 90,
+        ((h * side) as u32).max(200) + 70,
+    );
+    let root = SVGBackend::new(path, size).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| fail(path, e))?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!("Summits ({}), blue low to red high", c.summits.len()),
+            ("sans-serif", 18),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..w / u, h / u..0.0)
+        .map_err(|e| fail(path, e))?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc(format!("x ({name})"))
+        .y_desc(format!("y ({name})"))
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
+        .draw()
+        .map_err(|e| fail(path, e))?;
+    let radius = if c.summits.len() > 5000 { 1 } else { 2 };
+    chart
+        .draw_series(c.summits.iter().map(|s| {
+            let t = (s.height_m - lo) / span;
+            let colour = RGBColor((255.0 * t) as u8, 40, (255.0 * (1.0 - t)) as u8);
+            Circle::new(
+                (s.col as f64 * dx / u, s.row as f64 * dx / u),
+                radius,
+                colour.filled(),
+            )
+        }))
+        .map_err(|e| fail(path, e))?;
+    root.present().map_err(|e| fail(path, e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surface::{synthetic::GaussianSurface, Topography};
+
+    #[test]
+    fn writes_both_charts_and_refuses_a_map_without_summits() {
+        let dir = std::env::temp_dir().join(format!("asperity-surface-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let map = GaussianSurface::new(64, 64, 3.0, 1e-9, 1e-7, 3)
+            .unwrap()
+            .generate();
+        let c = Topography::new(map, 1e-7)
+            .unwrap()
+            .characterise(true)
+            .unwrap();
+        write_summit_heights(&dir.join("h.svg"), &c).unwrap();
+        write_summit_map(&dir.join("m.svg"), &c).unwrap();
+        let svg = std::fs::read_to_string(dir.join("h.svg")).unwrap();
+        assert!(
+            svg.contains("summit height above the mean plane (nm)"),
+            "{svg}"
+        );
+        let none = Characterisation {
+            summits: vec![],
+            ..c
+        };
+        assert_eq!(
+            write_summit_map(&dir.join("x.svg"), &none)
+                .unwrap_err()
+                .field(),
+            Some("chart")
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}

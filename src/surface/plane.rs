@@ -1,0 +1,110 @@
+//! The mean plane: the least-squares plane `z = c0 + c1 x + c2 y` over all
+//! pixels (x = j dx along a row, y = i dx down the columns).
+//!
+//! On a complete regular grid the normal equations decouple about the
+//! centre `(x_c, y_c) = ((cols-1)/2, (rows-1)/2) dx`:
+//! `c1 = sum (x - x_c) z / sum (x - x_c)^2` with
+//! `sum_j (j - j_c)^2 = cols (cols^2 - 1)/12` (and likewise `c2`), and the
+//! plane passes through the mean height at the centre. A periodic map has
+//! no tilt: only the mean is removed.
+
+use rayon::prelude::*;
+
+/// A fitted plane, SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Plane {
+    /// Height of the plane at pixel (0, 0) (m).
+    pub c0: f64,
+    /// Slope along x, i.e. along a row (m/m).
+    pub slope_x: f64,
+    /// Slope along y, i.e. down a column (m/m).
+    pub slope_y: f64,
+    /// Mean height of the map (m): the plane's height at the centre.
+    mean: f64,
+    /// Slopes per pixel (m/pixel), used to evaluate the plane.
+    per_px: (f64, f64),
+    centre: (f64, f64),
+}
+
+impl Plane {
+    /// Fits the plane to a row-major map (`periodic`: the mean only).
+    pub(crate) fn fit(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Plane {
+        let jc = (cols as f64 - 1.0) / 2.0;
+        let ic = (rows as f64 - 1.0) / 2.0;
+        // Per row: sum z and sum (j - jc) z, in row order (deterministic).
+        let sums: Vec<(f64, f64)> = z
+            .par_chunks(cols)
+            .map(|row| {
+                row.iter().enumerate().fold((0.0, 0.0), |(s, sx), (j, &v)| {
+                    (s + v, sx + (j as f64 - jc) * v)
+                })
+            })
+            .collect();
+        let n = (rows * cols) as f64;
+        let (mut s, mut sx, mut sy) = (0.0, 0.0, 0.0);
+        for (i, (rs, rsx)) in sums.iter().enumerate() {
+            s += rs;
+            sx += rsx;
+            sy += (i as f64 - ic) * rs;
+        }
+        let mean = s / n;
+        let (cx, cy) = if periodic {
+            (0.0, 0.0)
+        } else {
+            let sxx = rows as f64 * cols as f64 * ((cols * cols) as f64 - 1.0) / 12.0;
+            let syy = cols as f64 * rows as f64 * ((rows * rows) as f64 - 1.0) / 12.0;
+            (sx / sxx, sy / syy)
+        };
+        Plane {
+            c0: mean - cx * jc - cy * ic,
+            slope_x: cx / dx,
+            slope_y: cy / dx,
+            mean,
+            per_px: (cx, cy),
+            centre: (jc, ic),
+        }
+    }
+
+    /// Height of the plane at pixel `(i, j)` (m).
+    pub fn at(&self, i: usize, j: usize) -> f64 {
+        self.mean
+            + self.per_px.0 * (j as f64 - self.centre.0)
+            + self.per_px.1 * (i as f64 - self.centre.1)
+    }
+
+    /// The residual heights `z - plane`, row-major.
+    pub(crate) fn residual(&self, z: &[f64], cols: usize) -> Vec<f64> {
+        let mut r = vec![0.0; z.len()];
+        r.par_chunks_mut(cols)
+            .zip(z.par_chunks(cols))
+            .enumerate()
+            .for_each(|(i, (out, row))| {
+                for (j, (o, &v)) in out.iter_mut().zip(row).enumerate() {
+                    *o = v - self.at(i, j);
+                }
+            });
+        r
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn removes_an_exact_plane_and_only_the_mean_when_periodic() {
+        let (rows, cols, dx) = (5, 7, 2e-6);
+        let z: Vec<f64> = (0..rows * cols)
+            .map(|k| 3e-6 + 1e-3 * (k % cols) as f64 * dx - 2e-3 * (k / cols) as f64 * dx)
+            .collect();
+        let p = Plane::fit(&z, rows, cols, dx, false);
+        assert!((p.slope_x - 1e-3).abs() < 1e-15 && (p.slope_y + 2e-3).abs() < 1e-15);
+        assert!((p.c0 - 3e-6).abs() < 1e-18);
+        assert!(p.residual(&z, cols).iter().all(|r| r.abs() < 1e-18));
+        let q = Plane::fit(&z, rows, cols, dx, true);
+        assert_eq!((q.slope_x, q.slope_y), (0.0, 0.0));
+        let r = q.residual(&z, cols);
+        assert!(r.iter().sum::<f64>().abs() < 1e-18);
+        assert!(r[cols - 1] > 0.0);
+    }
+}
