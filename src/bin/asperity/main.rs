@@ -6,10 +6,12 @@
 
 mod default_study;
 mod fn_cmd;
+mod heating_cmd;
 mod law_cmd;
 mod map_cmd;
 mod run_cmd;
 mod sphere_cmd;
+mod spots_cmd;
 mod sweep_cmd;
 
 use clap::{Parser, Subcommand};
@@ -39,6 +41,10 @@ enum Command {
     Fn(fn_cmd::FnArgs),
     /// Full Lennard-Jones sphere solver: pull-off facts and the S-curve.
     Sphere(sphere_cmd::SphereArgs),
+    /// Resistance of explicit contact spots (CSV x_m,y_m,radius_m).
+    Spots(spots_cmd::SpotsArgs),
+    /// Peak contact temperature from the contact voltage, or the reverse.
+    Heating(heating_cmd::HeatingArgs),
 }
 
 /// Result of a subcommand.
@@ -93,6 +99,8 @@ fn main() -> ExitCode {
         Some(Command::Map(args)) => map_cmd::run(&args),
         Some(Command::Fn(args)) => fn_cmd::run(&args),
         Some(Command::Sphere(args)) => sphere_cmd::run(&args),
+        Some(Command::Spots(args)) => spots_cmd::run(&args),
+        Some(Command::Heating(args)) => heating_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
