@@ -6,12 +6,14 @@
 
 mod default_study;
 mod fn_cmd;
+mod heating_cmd;
 mod law_cmd;
 mod map_cmd;
 mod punch_cmd;
 mod run_cmd;
 mod sphere_cmd;
 mod surface_cmd;
+mod spots_cmd;
 mod sweep_cmd;
 
 use clap::{Parser, Subcommand};
@@ -47,6 +49,10 @@ enum Command {
     PunchFit(punch_cmd::PunchFitArgs),
     /// Characterise a measured height map: moments, summits, GW parameters.
     Surface(surface_cmd::SurfaceArgs),
+    /// Resistance of explicit contact spots (CSV x_m,y_m,radius_m).
+    Spots(spots_cmd::SpotsArgs),
+    /// Peak contact temperature from the contact voltage, or the reverse.
+    Heating(heating_cmd::HeatingArgs),
 }
 
 /// Result of a subcommand.
@@ -104,6 +110,8 @@ fn main() -> ExitCode {
         Some(Command::Punch(args)) => punch_cmd::run(&args),
         Some(Command::PunchFit(args)) => punch_cmd::run_fit(&args),
         Some(Command::Surface(args)) => surface_cmd::run(&args),
+        Some(Command::Spots(args)) => spots_cmd::run(&args),
+        Some(Command::Heating(args)) => heating_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,62 @@
+//! Speed targets of issue 15 (criterion):
+//! `cargo bench --bench electrical -- --warm-up-time 1 --measurement-time 3`.
+//! - a 1000-point resistance-force curve of Hertz summits over Gaussian
+//!   heights with Wexler spots and Greenwood's mean-field term (<= 50 ms);
+//! - the exact equal-potential solution for 2000 explicit spots (<= 2 s).
+use asperity::electrical::{GwSpots, Interaction, SpotResistance, Spots, Spreading};
+use asperity::heights::Gaussian;
+use criterion::{criterion_group, criterion_main, Criterion};
+use std::hint::black_box;
+use std::sync::Arc;
+
+/// Gold microswitch: 10^4 summits of radius 1 um, sigma 5 nm, in
+/// (100 um)^2; E* = 48 GPa; gold rho and l.
+fn curve(c: &mut Criterion) {
+    let gw = GwSpots::new(1e4, 1e-6, 5e-9, 1e-8, Arc::new(Gaussian::new())).unwrap();
+    let spot = SpotResistance::same_metal(Spreading::Wexler, 2.44e-8, Some(3.46e-8)).unwrap();
+    let seps: Vec<f64> = (0..1000)
+        .map(|i| (-1.0 + 5.0 * i as f64 / 999.0) * 5e-9)
+        .collect();
+    let mut group = c.benchmark_group("electrical");
+    group.bench_function("curve 1000 points wexler+greenwood", |b| {
+        b.iter(|| {
+            seps.iter()
+                .map(|&d| {
+                    let s = gw.hertz_state(48e9, &spot, Interaction::Greenwood, black_box(d));
+                    s.load + s.resistance.resistance
+                })
+                .sum::<f64>()
+        })
+    });
+    group.finish();
+}
+
+/// 2000 spots of radius 0.1-1 um, uniform in a (1 mm)^2 square
+/// (deterministic LCG positions), Maxwell self terms.
+fn exact(c: &mut Criterion) {
+    let mut state: u64 = 15;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let n = 2000;
+    let (mut x, mut y, mut a) = (vec![], vec![], vec![]);
+    for _ in 0..n {
+        x.push(1e-3 * next());
+        y.push(1e-3 * next());
+        a.push(1e-7 + 9e-7 * next());
+    }
+    let spots = Spots::new(x, y, a).unwrap();
+    let spot = SpotResistance::same_metal(Spreading::Maxwell, 2.44e-8, None).unwrap();
+    let mut group = c.benchmark_group("electrical");
+    group.sample_size(10);
+    group.bench_function("exact 2000 spots", |b| {
+        b.iter(|| black_box(spots.exact(&spot).unwrap()))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, curve, exact);
+criterion_main!(benches);

@@ -1,0 +1,32 @@
+//! Electrical contact of rough surfaces: constriction resistance of the
+//! contact spots, their interaction, contact heating and the stiction
+//! margin of an ohmic MEMS switch (physics.md, "Contact resistance").
+//!
+//! - [`spot`]: one spot (Maxwell/Holm, Sharvin, Wexler; two metals; film).
+//! - [`gw`]: spots over a Greenwood–Williamson surface (parallel sums in
+//!   closed form or by quadrature; Greenwood's mean-field interaction).
+//! - [`spots`]: explicit spots (parallel, Greenwood 1966, exact
+//!   equal-potential solve).
+//! - [`heating`]: Holm's phi-theta relation with Wiedemann–Franz.
+//! - [`switch`]: restoring force against pull-off.
+//!
+//! ```
+//! use asperity::electrical::{SpotResistance, Spreading};
+//! // One gold spot of radius 100 nm: Wexler between Maxwell and Maxwell + Sharvin.
+//! let w = SpotResistance::same_metal(Spreading::Wexler, 2.44e-8, Some(3.46e-8))?;
+//! let r = w.resistance(1e-7);
+//! assert!(r > 2.44e-8 / 2e-7);
+//! # Ok::<(), asperity::Error>(())
+//! ```
+
+pub mod gw;
+pub mod heating;
+pub mod spot;
+pub mod spots;
+pub mod switch;
+
+pub use gw::{ContactResistance, ElectricalState, GwSpots, Interaction, SpotSums, C_SQ};
+pub use heating::Heating;
+pub use spot::{Conductor, SpotResistance, Spreading};
+pub use spots::Spots;
+pub use switch::{Stiction, Switch};
