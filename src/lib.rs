@@ -28,6 +28,7 @@
 // Constants keep the digits of their published or mpmath source.
 #![allow(clippy::excessive_precision)]
 
+pub mod axisym;
 pub mod error;
 pub mod gw;
 pub mod heights;

@@ -22,6 +22,7 @@
 //! | JKR | [`jkr`] | 0 | `-(3/4)(pi^2 w^2 R/E*^2)^(1/3)` | `-1.5 pi w R` |
 //! | Maugis–Dugdale (exact, with the non-contact branch) | [`maugis`] | `-w/sigma0` | end of the stable branch (non-contact for `lambda < 0.938`) | `-2 .. -1.5 pi w R` |
 //! | COS (fit to MD, paired with an interference relation) | [`cos`] | 0 | JKR-like fold (0 at `alpha = 0`) | exact MD value |
+//! | shaped (JKR, any axisymmetric summit) | [`shaped`] | 0 | `min delta(a)` of the profile | `min F(a)` of the profile |
 //! | tabulated (e.g. LJ sphere solver) | [`tabulated`] | jump-in | jump-out | table's minimum |
 
 pub mod bradley;
@@ -32,6 +33,7 @@ pub mod hertz;
 pub mod interpolated;
 pub mod jkr;
 pub mod maugis;
+pub mod shaped;
 pub mod tabulated;
 
 pub use bradley::Bradley;
@@ -40,6 +42,7 @@ pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
 pub use maugis::{Maugis, MaugisCurve};
+pub use shaped::Shaped;
 pub use tabulated::Tabulated;
 
 use crate::error::{Error, Result};
