@@ -57,12 +57,14 @@ impl AxisymJkr {
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `contact_modulus` (finite, > 0),
-    /// `work_of_adhesion` (finite, > 0) or `exponent` (power law: > 1/2);
+    /// `work_of_adhesion` (finite, >= 0; at `w = 0` both instabilities sit
+    /// at `a = 0` with zero load: Sneddon's contact) or `exponent` (power
+    /// law: > 1/2);
     /// [`Error::Invalid`] naming `profile` when a table ends before its
     /// pull-off.
     pub fn new(profile: Profile, contact_modulus: f64, work: f64) -> Result<Self> {
         let estar = positive("contact_modulus", contact_modulus)?;
-        let work = positive("work_of_adhesion", work)?;
+        let work = crate::error::non_negative("work_of_adhesion", work)?;
         if let Profile::Power { exponent, .. } = profile {
             Allowed::open(0.5, f64::INFINITY).check("exponent", exponent)?;
         }
@@ -166,7 +168,11 @@ impl AxisymJkr {
             }
             top
         } else {
-            let mut hi = 2.0 * j.radius;
+            let mut hi = if j.radius > 0.0 {
+                2.0 * j.radius
+            } else {
+                1e-12
+            };
             while self.interference(hi) < delta {
                 hi *= 2.0;
             }
@@ -229,6 +235,7 @@ impl AxisymJkr {
         let power = |k_a: f64, n: f64| (c * g / (2.0 * n * k_a)).powf(1.0 / (n - 0.5));
         match &self.profile {
             Profile::Flat { radius } => return Ok(*radius),
+            _ if self.work == 0.0 => return Ok(0.0),
             Profile::Paraboloid { radius } => return Ok(power(1.0 / radius, 2.0)),
             Profile::Cone { tan_angle } => return Ok(power(0.5 * PI * tan_angle, 1.0)),
             Profile::Power {

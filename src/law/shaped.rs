@@ -37,8 +37,11 @@ impl ShapedExact {
     /// of adhesion `w` (J/m^2).
     ///
     /// # Errors
-    /// As [`AxisymJkr::new`].
+    /// As [`AxisymJkr::new`], and [`crate::Error::OutOfRange`] naming
+    /// `work_of_adhesion` unless `w > 0` (use [`super::Hertz`]-like Sneddon
+    /// contact otherwise).
     pub fn new(profile: Profile, contact_modulus: f64, work: f64) -> Result<Self> {
+        crate::error::positive("work_of_adhesion", work)?;
         let jkr = AxisymJkr::new(profile, contact_modulus, work)?;
         let zero_load_radius = jkr.zero_load_radius();
         Ok(ShapedExact {

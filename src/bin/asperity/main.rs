@@ -9,6 +9,7 @@ mod fn_cmd;
 mod law_cmd;
 mod map_cmd;
 mod run_cmd;
+mod shape_cmd;
 mod sphere_cmd;
 mod sweep_cmd;
 
@@ -39,6 +40,8 @@ enum Command {
     Fn(fn_cmd::FnArgs),
     /// Full Lennard-Jones sphere solver: pull-off facts and the S-curve.
     Sphere(sphere_cmd::SphereArgs),
+    /// JKR adhesion of an axisymmetric profile (paraboloid, sphere, cone, flat, power).
+    Shape(shape_cmd::ShapeArgs),
 }
 
 /// Result of a subcommand.
@@ -93,6 +96,7 @@ fn main() -> ExitCode {
         Some(Command::Map(args)) => map_cmd::run(&args),
         Some(Command::Fn(args)) => fn_cmd::run(&args),
         Some(Command::Sphere(args)) => sphere_cmd::run(&args),
+        Some(Command::Shape(args)) => shape_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
