@@ -27,7 +27,7 @@ DELTA_C = -W / (E * T)
 
 
 def radius(delta):
-    u = (C + sqrt(C * C + 2 * pi * T * delta)) / (pi * T)
+    u = (C + sqrt(max(C * C + 2 * pi * T * delta, 0))) / (pi * T)
     return u * u
 
 
@@ -60,7 +60,6 @@ def main():
         # Retraction after closest separation -2 sigma: every summit with
         # z >= closest touched; attached down to delta_c.
         closest = -2 * SIGMA
-        lowest = max(DELTA_C, closest - d) if closest - d > DELTA_C else DELTA_C
         # Summits with z - closest < 0 never touched: lowest attached height
         # is max(d + delta_c, closest).
         lo = max(d + DELTA_C, closest)
