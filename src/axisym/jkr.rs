@@ -1,5 +1,5 @@
 //! JKR (short-range) adhesion for any axisymmetric profile (Barthel, paper
-//! 001 of the seeds, eqs 13-14, with `calK = E*/2`):
+//! 001 of the seeds, eqs 5.6-5.7, with `calK = E*/2`):
 //!
 //! ```text
 //! delta(a) = delta_0(a) - sqrt(2 pi w a / E*)
@@ -119,7 +119,7 @@ impl AxisymJkr {
     }
 
     /// Energy release rate `G = (F_0(a) - F)^2 / (8 pi E* a^3)` at radius `a`
-    /// under load `F` (J/m^2); equilibrium is `G = w` (Barthel eq 12).
+    /// under load `F` (J/m^2); equilibrium is `G = w` (Barthel section 5.1.3; Maugis & Barquins).
     pub fn release_rate(&self, a: f64, load: f64) -> f64 {
         let df = self.profile.load0(a, self.estar) - load;
         df * df / (8.0 * PI * self.estar * a * a * a)

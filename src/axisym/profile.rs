@@ -3,7 +3,7 @@
 //! non-adhesive (Sneddon) contact: the interference `delta_0(a)` and load
 //! `F_0(a)` at contact radius `a`.
 //!
-//! Sneddon (1965), in Barthel's form (paper 001 of the seeds, eqs 8-9) with
+//! Sneddon (1965), in Barthel's form (paper 001 of the seeds, eqs 4.8, 4.14) with
 //! `calK = E*/2`:
 //!
 //! ```text
