@@ -85,6 +85,24 @@ impl AxisymJkr {
         };
         s.pull_off = s.instability_at(s.critical_radius(Kind::Load)?);
         s.jump_out = s.instability_at(s.critical_radius(Kind::Displacement)?);
+        let finite = |i: &Instability| {
+            i.radius.is_finite() && i.load.is_finite() && i.interference.is_finite()
+        };
+        if !(finite(&s.pull_off) && finite(&s.jump_out))
+            || (s.work > 0.0 && !(s.pull_off.radius > 0.0))
+        {
+            // A power law with n just above 1/2 puts its instabilities
+            // beyond the floating-point range.
+            return Err(Error::invalid(
+                "exponent",
+                format!(
+                    "the JKR instabilities of this {} profile fall outside the floating-point \
+                     range (pull-off radius {} m)",
+                    s.profile.name(),
+                    s.pull_off.radius
+                ),
+            ));
+        }
         Ok(s)
     }
 
