@@ -1,19 +1,22 @@
 //! DMT for an axisymmetric profile: the Sneddon (non-adhesive) contact plus
-//! the adhesive force of the rigid profile outside it, in the zero-range
-//! (Derjaguin) limit:
+//! the adhesive force of the long-range interaction outside it, which in the
+//! DMT (long-range) limit acts on the undeformed profile:
 //!
 //! ```text
 //! delta = delta_0(a),   F = F_0(a) - 2 pi w R_apex
 //! ```
 //!
-//! Valid only where that limit exists and is independent of the contact:
-//! profiles with a finite apex curvature `1/R_apex` (paraboloid, true sphere
-//! for `a << R`, power law `n = 2`) and `lambda << 1`. It is **not** valid
-//! for the cone or power laws with `n < 2` (the zero-range force outside
-//! the contact vanishes, so DMT gives no adhesion, while JKR does), nor for
-//! `n > 2` or the flat punch (the force depends on the range and diverges
-//! as the range shrinks: these are JKR-like at any range), nor for a table
-//! (no apex curvature is promised). Pull-off `-2 pi w R_apex` at `a = 0`.
+//! Valid only for the paraboloid (and what is locally one: the true sphere
+//! for `a << R`, the power law `n = 2`); Barthel (paper 001, section 5.3):
+//! with a Dugdale stress `sigma0` of range `h0 = w/sigma0`, the force outside
+//! the contact is `pi sigma0 r_h^2` with `f(r_h) = h0`, which is
+//! `2 pi w R` for the paraboloid whatever the range, but grows without bound
+//! as the range grows for the cone (`pi w h0 / tan^2 beta`) and falls to zero
+//! for `n > 2` (`pi w h0^(2/n - 1) / A^(2/n)`). "Except in the case of the
+//! paraboloid, it is physically impossible to assume that the interaction
+//! zone spreads out far away from the contact zone": other shapes need the
+//! intermediate-range (Maugis–Dugdale) description or JKR. Pull-off
+//! `-2 pi w R_apex` at `a = 0`.
 
 use super::profile::Profile;
 use crate::error::{positive, Error, Result};
@@ -41,9 +44,9 @@ impl AxisymDmt {
             Error::invalid(
                 "profile",
                 format!(
-                    "DMT needs a finite apex curvature (paraboloid, sphere, power n = 2); the \
-                     zero-range adhesive force of a {} profile is 0 (cone, n < 2) or diverges \
-                     (n > 2, flat punch): use JKR",
+                    "DMT holds only for a paraboloid apex (paraboloid, sphere, power n = 2); \
+                     the long-range force outside a {} profile's contact depends on the range \
+                     (it diverges for the cone, vanishes for n > 2; Barthel 5.3): use JKR",
                     profile.name()
                 ),
             )
