@@ -196,8 +196,40 @@ impl AxisymJkr {
             }
             hi
         };
-        let tol = 4.0 * f64::EPSILON * hi;
-        brent(|a| self.interference(a) - delta, j.radius, hi, tol).or(Some(j.radius))
+        Some(self.solve_branch(delta, j.radius, hi))
+    }
+
+    /// Root of `delta(a) = target` in `[lo, hi]` (`delta(lo) <= target <=
+    /// delta(hi)`): Newton with the analytic slope, kept inside a shrinking
+    /// bracket by bisection (few evaluations, which matters for tables).
+    fn solve_branch(&self, target: f64, lo: f64, hi: f64) -> f64 {
+        if self.interference(lo) >= target {
+            // At the fold itself (delta(a) - delta_c ~ (a - a_c)^2 there).
+            return lo;
+        }
+        let (mut lo, mut hi) = (lo, hi);
+        let mut x = 0.5 * (lo + hi);
+        for _ in 0..200 {
+            let r = self.interference(x) - target;
+            if r == 0.0 {
+                return x;
+            }
+            if r < 0.0 {
+                lo = x;
+            } else {
+                hi = x;
+            }
+            let slope = self.interference_slope(x);
+            let mut next = x - r / slope;
+            if !(slope > 0.0) || !(next > lo && next < hi) {
+                next = 0.5 * (lo + hi);
+            }
+            if (next - x).abs() <= 2.0 * f64::EPSILON * x || hi - lo <= 2.0 * f64::EPSILON * hi {
+                return next;
+            }
+            x = next;
+        }
+        x
     }
 
     /// Contact radius (m) and load (N) on the attached branch at

@@ -22,8 +22,13 @@ use crate::error::Result;
 use std::sync::Arc;
 
 /// Default table tolerance of [`Shaped::new`] (relative to the load plus
-/// the pull-off scale).
+/// the pull-off scale) for closed-form profiles.
 pub const DEFAULT_TOLERANCE: f64 = 1e-11;
+/// Default table tolerance of [`Shaped::new`] for a tabulated profile: its
+/// PCHIP interpolant is itself only `O(h^3)` accurate, and every exact
+/// evaluation costs a quadrature per Newton step (the build takes about
+/// 2 s of CPU for a 41-node table at this tolerance).
+pub const TABLE_TOLERANCE: f64 = 1e-9;
 
 /// JKR for an axisymmetric profile, solved exactly at every call.
 #[derive(Debug, Clone, PartialEq)]
@@ -110,12 +115,17 @@ pub struct Shaped {
 }
 
 impl Shaped {
-    /// [`ShapedExact`] tabulated to [`DEFAULT_TOLERANCE`].
+    /// [`ShapedExact`] tabulated to [`DEFAULT_TOLERANCE`] ([`TABLE_TOLERANCE`]
+    /// for a tabulated profile).
     ///
     /// # Errors
     /// As [`AxisymJkr::new`].
     pub fn new(profile: Profile, contact_modulus: f64, work: f64) -> Result<Self> {
-        Shaped::with_tolerance(profile, contact_modulus, work, DEFAULT_TOLERANCE)
+        let tol = match profile {
+            Profile::Tabulated(_) => TABLE_TOLERANCE,
+            _ => DEFAULT_TOLERANCE,
+        };
+        Shaped::with_tolerance(profile, contact_modulus, work, tol)
     }
 
     /// [`ShapedExact`] tabulated to relative tolerance `tol` (`[1e-13, 1e-2]`).
