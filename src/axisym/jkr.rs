@@ -221,7 +221,7 @@ impl AxisymJkr {
             }
             let slope = self.interference_slope(x);
             let mut next = x - r / slope;
-            if !(slope > 0.0) || !(next > lo && next < hi) {
+            if !(slope > 0.0 && next > lo && next < hi) {
                 next = 0.5 * (lo + hi);
             }
             if (next - x).abs() <= 2.0 * f64::EPSILON * x || hi - lo <= 2.0 * f64::EPSILON * hi {
