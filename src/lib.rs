@@ -29,6 +29,7 @@
 #![allow(clippy::excessive_precision)]
 
 pub mod electrical;
+pub mod axisym;
 pub mod error;
 pub mod gw;
 pub mod heights;

@@ -22,6 +22,7 @@
 //! | JKR | [`jkr`] | 0 | `-(3/4)(pi^2 w^2 R/E*^2)^(1/3)` | `-1.5 pi w R` |
 //! | Maugis–Dugdale (exact, with the non-contact branch) | [`maugis`] | `-w/sigma0` | end of the stable branch (non-contact for `lambda < 0.938`) | `-2 .. -1.5 pi w R` |
 //! | COS (fit to MD, paired with an interference relation) | [`cos`] | 0 | JKR-like fold (0 at `alpha = 0`) | exact MD value |
+//! | shaped (JKR, any axisymmetric summit) | [`shaped`] | 0 | `min delta(a)` of the profile | `min F(a)` of the profile |
 //! | tabulated (e.g. LJ sphere solver) | [`tabulated`] | jump-in | jump-out | table's minimum |
 
 pub mod bradley;
@@ -34,6 +35,7 @@ pub mod jkr;
 mod kind;
 pub mod maugis;
 mod scaling;
+pub mod shaped;
 pub mod tabulated;
 
 pub use bradley::Bradley;
@@ -44,6 +46,7 @@ pub use jkr::Jkr;
 pub use kind::{LawInputs, LawKind};
 pub use maugis::{Maugis, MaugisCurve};
 pub use scaling::RadiusScaling;
+pub use shaped::Shaped;
 pub use tabulated::Tabulated;
 
 use std::f64::consts::PI;

@@ -11,6 +11,7 @@ mod law_cmd;
 mod map_cmd;
 mod punch_cmd;
 mod run_cmd;
+mod shape_cmd;
 mod sphere_cmd;
 mod surface_cmd;
 mod spots_cmd;
@@ -53,6 +54,8 @@ enum Command {
     Spots(spots_cmd::SpotsArgs),
     /// Peak contact temperature from the contact voltage, or the reverse.
     Heating(heating_cmd::HeatingArgs),
+    /// JKR adhesion of an axisymmetric profile (paraboloid, sphere, cone, flat, power).
+    Shape(shape_cmd::ShapeArgs),
 }
 
 /// Result of a subcommand.
@@ -112,6 +115,7 @@ fn main() -> ExitCode {
         Some(Command::Surface(args)) => surface_cmd::run(&args),
         Some(Command::Spots(args)) => spots_cmd::run(&args),
         Some(Command::Heating(args)) => heating_cmd::run(&args),
+        Some(Command::Shape(args)) => shape_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

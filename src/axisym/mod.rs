@@ -1,0 +1,26 @@
+//! Adhesive contact of any axisymmetric profile against a flat (Barthel,
+//! paper 001 of the seeds): Sneddon's non-adhesive solution for the
+//! profile, then JKR (short-range) adhesion as a crack at the contact edge.
+//!
+//! - [`profile`]: the profiles (paraboloid, true sphere, cone, flat punch,
+//!   power law, table) with `delta_0(a)` and `F_0(a)`.
+//! - [`tabulated`]: a measured profile, validated and PCHIP-interpolated.
+//! - [`jkr`]: JKR for any profile in load and displacement control.
+//! - [`sphere_exact`]: Maugis' exact-sphere closed forms and the `a/R > 0.3`
+//!   warning.
+//! - [`dmt`]: DMT where it is valid (finite apex curvature).
+//!
+//! Conventions as the rest of the crate: SI units, `delta > 0` overlap,
+//! load `< 0` tensile; Barthel's `calK = E*/2`. The rough-surface law built
+//! on these is [`crate::law::shaped`].
+
+pub mod dmt;
+pub mod jkr;
+pub mod profile;
+pub mod sphere_exact;
+pub mod tabulated;
+
+pub use dmt::AxisymDmt;
+pub use jkr::AxisymJkr;
+pub use profile::Profile;
+pub use tabulated::TabulatedProfile;

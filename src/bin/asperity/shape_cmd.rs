@@ -1,0 +1,206 @@
+//! `asperity shape`: JKR adhesion of an axisymmetric profile (paraboloid,
+//! true sphere, cone, flat punch, power law): pull-off under load and
+//! displacement control and, with `--radii`, the curve. SI units.
+
+use crate::CliError;
+use asperity::axisym::{sphere_exact, AxisymJkr, Profile};
+use asperity::law::Instability;
+use clap::Args;
+use serde::Serialize;
+
+/// Arguments of `asperity shape`.
+#[derive(Args, Debug)]
+pub struct ShapeArgs {
+    /// Profile: paraboloid, sphere, cone, flat or power.
+    #[arg(long)]
+    profile: String,
+    /// Sphere radius (paraboloid, sphere) or punch radius (flat), m.
+    #[arg(long, allow_negative_numbers = true)]
+    radius: Option<f64>,
+    /// tan(beta) of the cone f(r) = r tan(beta).
+    #[arg(long = "tan-angle", allow_negative_numbers = true)]
+    tan_angle: Option<f64>,
+    /// Exponent n of the power law f(r) = A r^n (JKR needs n > 1/2).
+    #[arg(long, allow_negative_numbers = true)]
+    exponent: Option<f64>,
+    /// Coefficient A of the power law f(r) = A r^n, m^(1-n).
+    #[arg(long, allow_negative_numbers = true)]
+    coefficient: Option<f64>,
+    /// Contact modulus E*, Pa.
+    #[arg(long, allow_negative_numbers = true)]
+    estar: f64,
+    /// Work of adhesion w, J/m^2.
+    #[arg(long, allow_negative_numbers = true)]
+    w: f64,
+    /// Contact radii (m, comma-separated) at which to print the curve. For
+    /// the flat punch, radii below the punch radius are the receding-crack
+    /// equilibria.
+    #[arg(long, allow_hyphen_values = true)]
+    radii: Option<String>,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    json: bool,
+}
+
+#[allow(non_snake_case)]
+#[derive(Serialize, Debug)]
+struct Point {
+    load_N: f64,
+    radius_m: f64,
+    interference_m: f64,
+}
+
+#[allow(non_snake_case)]
+#[derive(Serialize, Debug)]
+struct CurvePoint {
+    radius_m: f64,
+    load_N: f64,
+    interference_m: f64,
+}
+
+#[derive(Serialize, Debug)]
+struct Output {
+    pull_off_load_control: Point,
+    jump_out_displacement_control: Point,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    curve: Option<Vec<CurvePoint>>,
+    warnings: Vec<String>,
+}
+
+fn point(i: Instability) -> Point {
+    Point {
+        load_N: i.load,
+        radius_m: i.radius,
+        interference_m: i.interference,
+    }
+}
+
+fn need(v: Option<f64>, flag: &str, profile: &str) -> Result<f64, CliError> {
+    v.ok_or_else(|| CliError::Usage(format!("{flag} is required for --profile {profile}")))
+}
+
+/// Core parameter names to the flags as the command line spells them.
+fn flag(e: asperity::Error) -> CliError {
+    let name = match e.field() {
+        Some("radius") => Some("--radius"),
+        Some("tan_angle") => Some("--tan-angle"),
+        Some("exponent") => Some("--exponent"),
+        Some("coefficient") => Some("--coefficient"),
+        Some("contact_modulus") => Some("--estar"),
+        Some("work_of_adhesion") => Some("--w"),
+        _ => None,
+    };
+    match name {
+        Some(n) => e.renamed(n).into(),
+        None => e.into(),
+    }
+}
+
+fn profile(args: &ShapeArgs) -> Result<Profile, CliError> {
+    let p = args.profile.as_str();
+    match p {
+        "paraboloid" => Profile::paraboloid(need(args.radius, "--radius", p)?),
+        "sphere" => Profile::sphere(need(args.radius, "--radius", p)?),
+        "flat" => Profile::flat(need(args.radius, "--radius", p)?),
+        "cone" => Profile::cone(need(args.tan_angle, "--tan-angle", p)?),
+        "power" => Profile::power(
+            need(args.coefficient, "--coefficient", p)?,
+            need(args.exponent, "--exponent", p)?,
+        ),
+        other => {
+            return Err(CliError::Usage(format!(
+                "--profile: unknown profile {other:?}; known: paraboloid, sphere, cone, flat, power"
+            )))
+        }
+    }
+    .map_err(flag)
+}
+
+fn parse_radii(text: &str, profile: &Profile) -> Result<Vec<f64>, CliError> {
+    text.split(',')
+        .map(|s| {
+            let a: f64 = s
+                .trim()
+                .parse()
+                .map_err(|_| CliError::Usage(format!("--radii: {s:?} is not a number")))?;
+            asperity::error::positive("--radii", a)?;
+            profile.check_radius("--radii", a).map_err(CliError::from)
+        })
+        .collect()
+}
+
+pub fn run(args: &ShapeArgs) -> crate::CliResult {
+    let profile = profile(args)?;
+    let radii = match &args.radii {
+        Some(t) => Some(parse_radii(t, &profile)?),
+        None => None,
+    };
+    let jkr = AxisymJkr::new(profile, args.estar, args.w).map_err(flag)?;
+    let (po, jo) = (
+        jkr.pull_off_load_control(),
+        jkr.jump_out_displacement_control(),
+    );
+    let mut checked = vec![
+        ("pull-off (load control)".to_string(), po.radius),
+        ("jump-out (displacement control)".to_string(), jo.radius),
+    ];
+    let curve = radii.map(|rs| {
+        rs.iter()
+            .map(|&a| {
+                checked.push((format!("curve point a = {a} m"), a));
+                CurvePoint {
+                    radius_m: a,
+                    load_N: jkr.load(a),
+                    interference_m: jkr.interference(a),
+                }
+            })
+            .collect::<Vec<_>>()
+    });
+    let named: Vec<(&str, f64)> = checked.iter().map(|(s, a)| (s.as_str(), *a)).collect();
+    let warnings = sphere_exact::warnings(jkr.profile(), &named);
+    for w in &warnings {
+        eprintln!("warning: {w}");
+    }
+    let out = Output {
+        pull_off_load_control: point(po),
+        jump_out_displacement_control: point(jo),
+        curve,
+        warnings,
+    };
+    if args.json {
+        let s = serde_json::to_string(&out).map_err(|e| CliError::Failed(e.to_string()))?;
+        println!("{s}");
+    } else {
+        print_table(&args.profile, &out);
+    }
+    Ok(())
+}
+
+fn print_table(profile: &str, out: &Output) {
+    println!("profile {profile} (JKR)");
+    println!(
+        "{:<34} {:>14} {:>14} {:>14}",
+        "", "load (N)", "radius (m)", "interference (m)"
+    );
+    for (name, p) in [
+        ("pull-off, load control", &out.pull_off_load_control),
+        (
+            "jump-out, displacement control",
+            &out.jump_out_displacement_control,
+        ),
+    ] {
+        println!(
+            "{name:<34} {:>14.6e} {:>14.6e} {:>14.6e}",
+            p.load_N, p.radius_m, p.interference_m
+        );
+    }
+    if let Some(c) = &out.curve {
+        println!("curve: radius (m), load (N), interference (m)");
+        for p in c {
+            println!(
+                "{:>14.6e} {:>14.6e} {:>14.6e}",
+                p.radius_m, p.load_N, p.interference_m
+            );
+        }
+    }
+}
