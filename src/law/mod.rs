@@ -32,6 +32,7 @@ pub mod hertz;
 pub mod interpolated;
 pub mod jkr;
 pub mod maugis;
+pub mod plastic;
 pub mod tabulated;
 
 pub use bradley::Bradley;
