@@ -54,6 +54,35 @@ impl Plasticity {
         })
     }
 
+    /// Plastic data from optional scene values: `law` (its name, for the
+    /// message) needs a yield strength; `hardness` alone is checked against
+    /// it. Returns `None` when neither is given (an elastic law may omit
+    /// both; they then feed no diagnostics).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `yield_strength` when a plastic law has none
+    /// or a hardness is given without one; otherwise as [`Plasticity::new`].
+    pub fn from_optional(
+        law: &str,
+        plastic_law: bool,
+        yield_strength: Option<f64>,
+        hardness: Option<f64>,
+        poisson_ratio: f64,
+    ) -> Result<Option<Self>> {
+        match (yield_strength, hardness) {
+            (Some(y), h) => Plasticity::new(y, h, poisson_ratio).map(Some),
+            (None, _) if plastic_law => Err(Error::invalid(
+                "yield_strength",
+                format!("the {law} law needs the yield strength of the softer body (Pa)"),
+            )),
+            (None, Some(_)) => Err(Error::invalid(
+                "yield_strength",
+                "a hardness is given without a yield strength",
+            )),
+            (None, None) => Ok(None),
+        }
+    }
+
     /// Sputtered RF-MEMS gold: `Y = 0.4 GPa`, `H = 2.8 Y = 1.12 GPa`,
     /// `nu = 0.42`. With the default gold surface (`E* = 47.96 GPa`,
     /// `sigma = 5 nm`, `R = 1 um`) this gives `psi = 3.03`.
@@ -284,6 +313,26 @@ mod tests {
         assert_eq!(
             Plasticity::new(1e9, Some(1e9), 0.3).unwrap().hardness(),
             1e9
+        );
+    }
+
+    #[test]
+    fn optional_scene_values() {
+        let e = Plasticity::from_optional("kogut-etsion", true, None, None, 0.3).unwrap_err();
+        assert_eq!(e.field(), Some("yield_strength"));
+        assert!(e.to_string().contains("kogut-etsion"), "{e}");
+        let e = Plasticity::from_optional("hertz", false, None, Some(1e9), 0.3).unwrap_err();
+        assert_eq!(e.field(), Some("yield_strength"));
+        assert_eq!(
+            Plasticity::from_optional("hertz", false, None, None, 0.3).unwrap(),
+            None
+        );
+        let e = Plasticity::from_optional("hertz", false, Some(1e9), Some(0.9e9), 0.3).unwrap_err();
+        assert_eq!(e.field(), Some("hardness"));
+        assert!(
+            Plasticity::from_optional("jkr", false, Some(1e9), None, 0.3)
+                .unwrap()
+                .is_some()
         );
     }
 

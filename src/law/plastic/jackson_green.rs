@@ -24,6 +24,8 @@ use std::f64::consts::PI;
 
 /// Transition `w_t = 1.9` from Hertz to the fit.
 pub const TRANSITION: f64 = 1.9;
+/// `ln 1.9`.
+const LN_TRANSITION: f64 = 0.641_853_886_172_394_7;
 /// Breakpoints: `w = 1.9`.
 pub const BREAKPOINTS: [f64; 1] = [TRANSITION];
 
@@ -37,6 +39,8 @@ pub struct JacksonGreen {
     b: f64,
     /// `4 x 2.84 / C`: the hardness term is `(4 H_G/(C S_y))`, `H_G/S_y = 2.84 (..)`.
     hg_coef: f64,
+    /// `ln(omega_c / R)`.
+    ln_wc_over_r: f64,
 }
 
 impl JacksonGreen {
@@ -58,8 +62,10 @@ impl JacksonGreen {
         let sy = asperity.plasticity.yield_strength();
         let (r, e) = (asperity.radius, asperity.contact_modulus);
         let q = c * PI * sy / 2.0;
+        let omega_c = asperity.critical_interference(Variant::JacksonGreen);
         JacksonGreen {
-            omega_c: asperity.critical_interference(Variant::JacksonGreen),
+            omega_c,
+            ln_wc_over_r: (omega_c / r).ln(),
             p_c: 4.0 / 3.0 * (r / e) * (r / e) * q * q * q,
             b: 0.14 * (23.0 * sy / e).exp(),
             hg_coef: 4.0 * 2.84 / c,
@@ -99,13 +105,16 @@ impl PlasticLoading for JacksonGreen {
                 radius: self.asperity.hertz.radius_at(delta),
             };
         }
+        // Every power through one logarithm: ln w, and
+        // ln(a/R) = (ln(delta/R) + B ln(w/1.9))/2 with ln(delta/R) = ln w + ln(omega_c/R).
         let r = self.asperity.radius;
-        let g = (w / TRANSITION).powf(self.b);
-        let a2 = r * delta * g;
-        let a_over_r = (delta / r * g).sqrt();
-        let hg = 1.0 - (-0.82 * a_over_r.powf(-0.7)).exp();
-        let p = (-0.25 * w.powf(5.0 / 12.0)).exp() * w * w.sqrt()
-            + self.hg_coef * hg * (1.0 - (-0.04 * w.powf(5.0 / 9.0)).exp()) * w;
+        let lw = w.ln();
+        let lg = self.b * (lw - LN_TRANSITION);
+        let a2 = r * delta * lg.exp();
+        let ln_a_over_r = 0.5 * (lw + self.ln_wc_over_r + lg);
+        let hg = 1.0 - (-0.82 * (-0.7 * ln_a_over_r).exp()).exp();
+        let p = (-0.25 * (5.0 / 12.0 * lw).exp()).exp() * w * w.sqrt()
+            + self.hg_coef * hg * (1.0 - (-0.04 * (5.0 / 9.0 * lw).exp()).exp()) * w;
         ContactState {
             load: p * self.p_c,
             radius: a2.sqrt(),
@@ -122,3 +131,11 @@ impl PlasticLoading for JacksonGreen {
 }
 
 plastic_asperity_law!(JacksonGreen);
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn ln_transition_constant() {
+        assert!((super::LN_TRANSITION - 1.9f64.ln()).abs() < 2e-16);
+    }
+}

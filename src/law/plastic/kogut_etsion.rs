@@ -13,7 +13,7 @@
 //! The fit jumps at `w = 1, 6, 110` (load +3 %, +1.7 %, +8 %); the jumps are
 //! kept, and the law reports the three points as breakpoints.
 
-use super::{plastic_asperity_law, pow, PlasticAsperity, PlasticLoading};
+use super::{plastic_asperity_law, PlasticAsperity, PlasticLoading};
 use crate::error::Result;
 use crate::law::ContactState;
 use crate::material::plastic::{Plasticity, Variant};
@@ -71,12 +71,15 @@ impl KogutEtsion {
     /// Dimensionless `(P/P_c, A/A_c)` at `w = delta/omega_c > 0`.
     #[inline]
     pub fn bar(&self, w: f64) -> (f64, f64) {
+        // c w^n as c exp(n ln w): one logarithm shared by load and area.
         if w <= 1.0 {
             (w * w.sqrt(), w)
         } else if w <= 6.0 {
-            (pow(1.03, w, 1.425), pow(0.93, w, 1.136))
+            let l = w.ln();
+            (1.03 * (1.425 * l).exp(), 0.93 * (1.136 * l).exp())
         } else if w <= 110.0 {
-            (pow(1.40, w, 1.263), pow(0.94, w, 1.146))
+            let l = w.ln();
+            (1.40 * (1.263 * l).exp(), 0.94 * (1.146 * l).exp())
         } else {
             (self.plastic_slope * w, 2.0 * w)
         }

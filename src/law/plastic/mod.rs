@@ -164,12 +164,6 @@ pub trait PlasticLaw: AsperityLaw + PlasticLoading {
     fn as_loading(self: Arc<Self>) -> Arc<dyn PlasticLoading>;
 }
 
-/// Ratio `P/P_c`, `A/A_c` pieces evaluate as `c w^n`.
-#[inline]
-pub(crate) fn pow(c: f64, w: f64, n: f64) -> f64 {
-    c * w.powf(n)
-}
-
 /// Implements [`AsperityLaw`] (and [`PlasticLaw`]) for a [`PlasticLoading`]:
 /// loading on both branches, elastic unloading from the flattened shape via
 /// `state_after`, no adhesion.

@@ -2,6 +2,7 @@
 //! system libraries needed).
 
 mod map;
+pub mod plastic;
 
 pub use map::{adhesion_map_csv, write_adhesion_map};
 
