@@ -36,6 +36,7 @@ mod kind;
 pub mod maugis;
 mod scaling;
 pub mod shaped;
+pub mod plastic;
 pub mod tabulated;
 
 pub use bradley::Bradley;

@@ -4,6 +4,7 @@
 mod map;
 pub mod punch;
 pub mod surface;
+pub mod plastic;
 
 pub use map::{adhesion_map_csv, write_adhesion_map};
 

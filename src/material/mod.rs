@@ -8,6 +8,8 @@
 //! - Tabor parameter `mu = (R w^2 / (E*^2 z0^3))^(1/3)`,
 //! - Maugis parameter `lambda = 2 sigma0 (R / (pi w K^2))^(1/3)`.
 
+pub mod plastic;
+
 use crate::error::{non_negative, positive, Allowed, Result};
 use std::f64::consts::PI;
 

@@ -1,0 +1,198 @@
+//! Adhesion after plastic loading: JKR on the flattened shape.
+//!
+//! After loading to `delta_max` the asperity unloads elastically as a sphere
+//! of radius `R_u >= R` seated at the residual interference `delta_res`
+//! ([`Unloading`]). With short-range adhesion (work `w`), the unloading is
+//! the JKR solution for that sphere, shifted by `delta_res`:
+//!
+//! ```text
+//! P = K a^3/R_u - sqrt(6 pi w K a^3),   delta - delta_res = a^2/R_u - sqrt(8 pi w a/(3K)),   K = 4E*/3
+//! ```
+//!
+//! so the load-controlled pull-off `-(3/2) pi w R_u` and the jump-out grow
+//! with the flattening, i.e. with the maximum load reached: the stiction of
+//! gold switches closed hard (Mesarovic & Johnson 2000 find this growth
+//! for adhesive elastic-plastic spheres; Kogut & Etsion 2003 add adhesion
+//! to the KE loading the same way, as a force on the non-adhesive deformed
+//! shape). On approach, the asperity jumps in at `delta = 0` and sits on the
+//! JKR branch of its current shape (`delta_max = delta`); with no plastic
+//! deformation (`delta_max` below the elastic limit) this is exactly
+//! [`crate::law::Jkr`]. This model is derived here (documented in
+//! docs/physics.md), not a published fit: the residual profile is taken as
+//! a sphere, where the true one is flattened; the general-axisymmetric JKR
+//! solution can replace it.
+
+use super::{PlasticLoading, Unloading};
+use crate::error::{positive, Result};
+use crate::law::jkr::{
+    interference_bar, load_bar, stable_radius_bar, JUMP_OUT_INTERFERENCE, JUMP_OUT_LOAD,
+    JUMP_OUT_RADIUS, PULL_OFF_LOAD, PULL_OFF_RADIUS, ZERO_LOAD_RADIUS,
+};
+use crate::law::{AsperityLaw, Branch, ContactState, Control, Instability};
+use crate::material::MaugisScales;
+use std::sync::Arc;
+
+/// An elastic-plastic law with JKR adhesion on the unloading shape.
+#[derive(Debug, Clone)]
+pub struct AdhesivePlastic {
+    loading: Arc<dyn PlasticLoading>,
+    work: f64,
+    elastic: MaugisScales,
+    cutoff: f64,
+}
+
+impl AdhesivePlastic {
+    /// Wraps a non-adhesive elastic-plastic loading law with work of
+    /// adhesion `w` (J/m^2, > 0).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfRange`] naming `work_of_adhesion`.
+    pub fn new(loading: Arc<dyn PlasticLoading>, work: f64) -> Result<Self> {
+        positive("work_of_adhesion", work)?;
+        let a = *loading.asperity();
+        let elastic = MaugisScales::new(a.radius, a.contact_modulus, work)?;
+        let mut law = AdhesivePlastic {
+            loading,
+            work,
+            elastic,
+            cutoff: 0.0,
+        };
+        law.cutoff = law.lowest_detach();
+        Ok(law)
+    }
+
+    /// The loading law.
+    pub fn loading(&self) -> &dyn PlasticLoading {
+        self.loading.as_ref()
+    }
+
+    /// Work of adhesion `w` (J/m^2).
+    pub fn work(&self) -> f64 {
+        self.work
+    }
+
+    /// Unloading shape and its JKR scales after `delta_max` (m).
+    #[inline]
+    pub fn shape_after(&self, delta_max: f64) -> (Unloading, MaugisScales) {
+        let u = self.loading.unloading(delta_max);
+        if u.elastic {
+            return (u, self.elastic);
+        }
+        let a = self.loading.asperity();
+        // R_u > 0 and finite, E* and w validated: cannot fail.
+        let s = MaugisScales::new(u.radius, a.contact_modulus, self.work).unwrap_or(self.elastic);
+        (u, s)
+    }
+
+    /// Pull-off after loading to `delta_max` (m): under load control
+    /// `-(3/2) pi w R_u`, under displacement control the JKR jump-out
+    /// (`-(5/6) pi w R_u`) at `delta_res + Dbar_c (pi^2 w^2 R_u/K^2)^(1/3)`.
+    pub fn pull_off_after(&self, delta_max: f64, control: Control) -> Instability {
+        let (u, s) = self.shape_after(delta_max);
+        let (a, p) = match control {
+            Control::Load => (PULL_OFF_RADIUS, PULL_OFF_LOAD),
+            Control::Displacement => (JUMP_OUT_RADIUS, JUMP_OUT_LOAD),
+        };
+        Instability {
+            load: p * s.load,
+            interference: u.residual + interference_bar(a) * s.interference,
+            radius: a * s.radius,
+        }
+    }
+
+    /// Jump-out interference (m) after loading to `delta_max`.
+    pub fn detach_after(&self, delta_max: f64) -> f64 {
+        let (u, s) = self.shape_after(delta_max);
+        u.residual + JUMP_OUT_INTERFERENCE * s.interference
+    }
+
+    /// A lower bound of [`detach_after`](Self::detach_after) over every
+    /// `delta_max`: the minimum over a log grid of `1e-3 .. 1e6` critical
+    /// interferences, with a factor 2 of margin.
+    fn lowest_detach(&self) -> f64 {
+        let wc = self.loading.critical_interference();
+        let mut lo = JUMP_OUT_INTERFERENCE * self.elastic.interference;
+        for i in 0..=900 {
+            let dm = wc * 10f64.powf(-3.0 + 9.0 * i as f64 / 900.0);
+            lo = lo.min(self.detach_after(dm));
+        }
+        2.0 * lo.min(0.0)
+    }
+
+    #[inline]
+    fn attached(&self, delta: f64, delta_max: f64) -> ContactState {
+        let (u, s) = self.shape_after(delta_max);
+        match stable_radius_bar((delta - u.residual) / s.interference) {
+            Some(a) => ContactState {
+                load: load_bar(a) * s.load,
+                radius: a * s.radius,
+            },
+            None => ContactState::FREE,
+        }
+    }
+}
+
+impl AsperityLaw for AdhesivePlastic {
+    fn name(&self) -> &'static str {
+        match self.loading.variant() {
+            crate::material::plastic::Variant::KogutEtsion => "kogut-etsion+jkr",
+            crate::material::plastic::Variant::JacksonGreen => "jackson-green+jkr",
+            crate::material::plastic::Variant::ChangEtsionBogy => "chang-etsion-bogy+jkr",
+            crate::material::plastic::Variant::ZhaoMaiettaChang => "zhao-maietta-chang+jkr",
+        }
+    }
+
+    /// Approach: free below 0, then the JKR branch of the current shape.
+    /// Retract without history: the same (the asperity at its maximum).
+    #[inline]
+    fn state(&self, delta: f64, branch: Branch) -> ContactState {
+        match branch {
+            Branch::Approach if delta < 0.0 => ContactState::FREE,
+            _ => self.attached(delta, delta.max(0.0)),
+        }
+    }
+
+    #[inline]
+    fn state_after(&self, delta: f64, delta_max: f64) -> ContactState {
+        if delta_max < 0.0 {
+            return ContactState::FREE;
+        }
+        self.attached(delta, delta.max(delta_max))
+    }
+
+    fn history_breakpoints(&self) -> Vec<f64> {
+        self.loading.breakpoint_interferences()
+    }
+
+    fn attach_interference(&self) -> f64 {
+        0.0
+    }
+
+    /// Jump-out of the elastic (never yielded) asperity; after plastic
+    /// loading see [`AdhesivePlastic::detach_after`].
+    fn detach_interference(&self) -> f64 {
+        JUMP_OUT_INTERFERENCE * self.elastic.interference
+    }
+
+    fn cutoff_interference(&self) -> f64 {
+        self.cutoff
+    }
+
+    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+        let mut b = self.loading.breakpoint_interferences();
+        if branch == Branch::Retract {
+            b.insert(0, self.detach_interference());
+        }
+        b
+    }
+
+    /// Pull-off of the elastic (never yielded) asperity, JKR; after plastic
+    /// loading see [`AdhesivePlastic::pull_off_after`].
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        Some(self.pull_off_after(0.0, control))
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        Some(ZERO_LOAD_RADIUS * self.elastic.radius)
+    }
+}
