@@ -75,6 +75,7 @@ fn as_point(c: &super::Critical) -> SpherePoint {
         radius_bar: c.radius_bar,
         d_approach: 0.0,
         d_load: 0.0,
+        arc: c.arc,
     }
 }
 

@@ -29,6 +29,7 @@
 
 pub mod calibrate;
 pub mod compliance;
+mod disc;
 pub mod force_law;
 pub mod mesh;
 mod newton;
@@ -44,7 +45,7 @@ use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
 
 /// Bump when a change alters solver results: calibrations cached on disk are
 /// keyed by it.
-pub const SOLVER_VERSION: u32 = 1;
+pub const SOLVER_VERSION: u32 = 2;
 
 /// Smallest Tabor parameter accepted (the rigid Bradley limit is within
 /// 0.01% there).
@@ -160,6 +161,10 @@ pub struct SpherePoint {
     pub d_approach: f64,
     /// `d(P/(pi w R))/dH(0)`.
     pub d_load: f64,
+    /// Arc length from the start of the trace, `int hypot(dPbar, c dalpha)`
+    /// (`c` converts `alpha/z0` to Maugis units when mu is large), trapezoidal
+    /// between traced points.
+    pub arc: f64,
 }
 
 /// A critical point in Maugis units.
@@ -173,6 +178,8 @@ pub struct Critical {
     pub radius_bar: f64,
     /// Central gap `H(0)/z0`.
     pub central_gap: f64,
+    /// Arc length from the start of the trace (orders points along the curve).
+    pub arc: f64,
 }
 
 /// The derived facts of one solver curve.
@@ -246,7 +253,7 @@ impl SphereProblem {
     /// Width of the cohesive zone at the edge in solver radius units:
     /// the Dugdale estimate `(pi/4) E* w/sigma0^2 = 0.75 mu^-2`, capped by the
     /// rigid (Bradley) scale `sqrt(2/mu)` at small mu.
-    fn zone(&self) -> f64 {
+    pub(crate) fn zone(&self) -> f64 {
         (0.75 / (self.mu * self.mu)).min((2.0 / self.mu).sqrt())
     }
 
@@ -256,7 +263,7 @@ impl SphereProblem {
         let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
         let r_max = r_far
             .max(1.5 * edge + 4.0 * zone)
-            .min(newton::sphere_edge(self.shape, self.mu));
+            .min(disc::sphere_edge(self.shape, self.mu));
         MeshSpec {
             edge,
             h0: zone / (8.0 * res),
@@ -267,19 +274,28 @@ impl SphereProblem {
         }
     }
 
-    fn states(&self, arc_step: f64, stop: impl Fn(&[State]) -> bool) -> Result<Vec<State>> {
-        Tracer::new(self).run(arc_step, stop)
-    }
-
     /// The whole load–approach curve from far apart (`start_gap`) until the
-    /// load exceeds `max_load_bar`, unstable parts included, ordered by
-    /// decreasing central gap.
+    /// load exceeds `max_load_bar`, unstable parts included, in the order
+    /// traced (increasing `arc`; `H(0)` decreases except where it folds,
+    /// mu > ~15).
     ///
     /// # Errors
     /// [`Error::NoConvergence`] when Newton fails even with tiny steps.
     pub fn trace(&self) -> Result<Vec<SpherePoint>> {
+        self.trace_with_progress(None)
+    }
+
+    /// [`trace`](Self::trace), calling `progress` with every new point.
+    ///
+    /// # Errors
+    /// As [`trace`](Self::trace).
+    pub fn trace_with_progress(
+        &self,
+        progress: Option<&mut dyn FnMut(&SpherePoint)>,
+    ) -> Result<Vec<SpherePoint>> {
         let max = self.options.max_load_bar;
-        let st = self.states(self.options.arc_step, |s| s.last().unwrap().sol.load >= max)?;
+        let mut tr = Tracer::new(self).with_progress(progress);
+        let st = tr.run(self.options.arc_step, |s| s.last().unwrap().sol.load >= max)?;
         Ok(st.iter().map(|s| point(self.mu, s)).collect())
     }
 
@@ -290,7 +306,18 @@ impl SphereProblem {
     /// # Errors
     /// [`Error::NoConvergence`] when Newton fails.
     pub fn facts(&self) -> Result<SphereFacts> {
-        let mut tr = Tracer::new(self);
+        self.facts_with_progress(None)
+    }
+
+    /// [`facts`](Self::facts), calling `progress` with every traced point.
+    ///
+    /// # Errors
+    /// As [`facts`](Self::facts).
+    pub fn facts_with_progress(
+        &self,
+        progress: Option<&mut dyn FnMut(&SpherePoint)>,
+    ) -> Result<SphereFacts> {
+        let mut tr = Tracer::new(self).with_progress(progress);
         let step = (4.0 * self.options.arc_step).max(0.05);
         let st = tr.run(step, |s| {
             let last = &s.last().unwrap().sol;
@@ -303,6 +330,7 @@ impl SphereProblem {
                 interference_bar: p.interference_bar,
                 radius_bar: p.radius_bar,
                 central_gap: p.central_gap,
+                arc: p.arc,
             }
         };
         // Pull-off: dP/dH0 from > 0 to <= 0 (H0 decreasing); keep the lowest.

@@ -1,11 +1,28 @@
 //! Continuation in the central gap `H_0` (Greenwood 2009: "taking the minimum
 //! film thickness as the independent variable"), with a mesh that follows
 //! the contact edge, adaptive steps and refinement of the critical points.
+//!
+//! Mesh following: near the axis the mesh is rebuilt around the edge as it
+//! moves (`O(n^2)` elliptic integrals). Once the edge is beyond
+//! [`SCALABLE_EDGE`] cohesive zones, the mesh is a base mesh assembled with
+//! spacings `1/SCALE_BAND` finer than asked, viewed at the scale
+//! `lambda = a/a_base` that puts its plateau on the edge (`C -> lambda C`, exact,
+//! `O(n)`: the compliance entries are updated, not recomputed); it is
+//! reassembled only when `lambda` leaves `[1/SCALE_BAND, SCALE_BAND]`, so
+//! spacings stay between `1/SCALE_BAND^2` and 1 times the nominal ones. States
+//! on one base mesh share its matrix.
 
-use super::newton::{Discretisation, Solution};
-use super::{SpherePoint, SphereProblem};
+use super::disc::{BaseMesh, Discretisation};
+use super::newton::{Constraint, Lu, Metric, Solution};
+use super::{Shape, SpherePoint, SphereProblem};
 use crate::error::{Error, Result};
 use std::sync::Arc;
+
+/// Edge radius, in cohesive-zone widths, above which meshes are rescaled
+/// rather than rebuilt.
+pub(crate) const SCALABLE_EDGE: f64 = 6.0;
+/// Largest scale change of a base mesh (and its spacing refinement).
+pub(crate) const SCALE_BAND: f64 = 1.2;
 
 /// `(9 pi^2/16)^(1/3)`: `alpha/z0 = Dbar * mu * MAUGIS_INTERFERENCE`.
 pub(crate) const MAUGIS_INTERFERENCE: f64 = 1.770_682_754_000_227_1;
@@ -17,6 +34,8 @@ pub(crate) const MAUGIS_RADIUS: f64 = 1.330_670_039_491_468_8;
 pub(crate) struct State {
     pub disc: Arc<Discretisation>,
     pub sol: Solution,
+    /// Arc length from the start in the step metric `hypot(dP, c dalpha)`.
+    pub arc: f64,
 }
 
 impl State {
@@ -30,53 +49,111 @@ impl State {
 /// land on a spurious solution of a neighbouring branch.
 const STEP_ITERATIONS: usize = 12;
 
-pub(crate) struct Tracer<'a> {
+pub(crate) struct Tracer<'a, 'b> {
     p: &'a SphereProblem,
+    metric: Metric,
+    progress: Option<&'b mut dyn FnMut(&SpherePoint)>,
     pub meshes_built: usize,
     pub newton_iterations: usize,
 }
 
-impl<'a> Tracer<'a> {
+impl<'a, 'b> Tracer<'a, 'b> {
     pub fn new(p: &'a SphereProblem) -> Self {
+        let pa = 1.0 / (p.mu * MAUGIS_INTERFERENCE).max(1.0);
         Tracer {
             p,
+            metric: Metric {
+                gap: 0.0,
+                approach: pa,
+            },
+            progress: None,
             meshes_built: 0,
             newton_iterations: 0,
         }
     }
 
-    fn mesh(&mut self, edge: f64) -> Arc<Discretisation> {
+    pub fn with_progress(mut self, f: Option<&'b mut dyn FnMut(&SpherePoint)>) -> Self {
+        self.progress = f;
+        self
+    }
+
+    fn build(&mut self, edge: f64, refined: bool) -> Arc<Discretisation> {
         self.meshes_built += 1;
-        Arc::new(Discretisation::new(
-            self.p.mesh_spec(edge),
+        let mut spec = self.p.mesh_spec(edge);
+        if refined {
+            spec.h0 /= SCALE_BAND;
+            spec.growth /= SCALE_BAND;
+            spec.r_max *= SCALE_BAND;
+        }
+        Arc::new(Discretisation::view(
+            Arc::new(BaseMesh::new(spec)),
+            1.0,
             self.p.mu,
             self.p.shape,
         ))
     }
 
-    fn newton(&mut self, disc: &Discretisation, h0: f64, guess: &[f64]) -> Result<Solution> {
+    /// The mesh for a contact edge at `edge`: `cur` rescaled when the edge is
+    /// far enough from the axis and within the scale band, else a new mesh
+    /// (with room to move on in the same direction).
+    fn mesh_for(&mut self, cur: &Arc<Discretisation>, edge: f64) -> Arc<Discretisation> {
+        let big = SCALABLE_EDGE * self.p.zone();
+        let scalable = matches!(self.p.shape, Shape::Paraboloid) && edge >= big;
+        if !scalable {
+            return self.build(edge, false);
+        }
+        let base_edge = cur.base.spec.edge;
+        let lam = edge / base_edge;
+        let (mu, shape) = (self.p.mu, self.p.shape);
+        if base_edge >= big && (1.0 / SCALE_BAND..=SCALE_BAND).contains(&lam) {
+            return Arc::new(Discretisation::view(cur.base.clone(), lam, mu, shape));
+        }
+        let target = if edge > cur.spec.edge {
+            edge * SCALE_BAND
+        } else {
+            edge / SCALE_BAND
+        };
+        let base = self.build(target, true).base.clone();
+        let lam = edge / base.spec.edge;
+        Arc::new(Discretisation::view(base, lam, mu, shape))
+    }
+
+    fn solve(
+        &mut self,
+        disc: &Discretisation,
+        h0: f64,
+        guess: &[f64],
+        limit: usize,
+    ) -> Result<Solution> {
         let o = &self.p.options;
-        let s = disc.solve(h0, guess, o.tolerance, o.max_newton_iterations)?;
+        let limit = o.max_newton_iterations.min(limit);
+        let con = Constraint::Gap(h0);
+        let (s, _lu): (Solution, Lu) =
+            disc.solve(guess, &con, self.metric, None, o.tolerance, limit)?;
         self.newton_iterations += s.iterations;
         Ok(s)
     }
 
+    fn newton(&mut self, disc: &Discretisation, h0: f64, guess: &[f64]) -> Result<Solution> {
+        self.solve(disc, h0, guess, usize::MAX)
+    }
+
     /// Newton from a predictor: more than [`STEP_ITERATIONS`] is a failure.
     fn newton_step(&mut self, disc: &Discretisation, h0: f64, guess: &[f64]) -> Result<Solution> {
-        let o = &self.p.options;
-        let limit = o.max_newton_iterations.min(STEP_ITERATIONS);
-        let s = disc.solve(h0, guess, o.tolerance, limit)?;
-        self.newton_iterations += s.iterations;
-        Ok(s)
+        self.solve(disc, h0, guess, STEP_ITERATIONS)
     }
 
     /// The rigid start at the largest central gap.
     pub fn start(&mut self) -> Result<State> {
         let h0 = self.p.options.start_gap;
-        let disc = self.mesh(0.0);
+        let disc = self.build(0.0, false);
         let guess: Vec<f64> = disc.f.iter().map(|f| h0 + f).collect();
         let sol = self.newton(&disc, h0, &guess)?;
-        self.follow_edge(State { disc, sol })
+        self.follow_edge(State {
+            disc,
+            sol,
+            arc: 0.0,
+        })
     }
 
     /// Remesh around the current contact edge when it has left the plateau's
@@ -88,10 +165,16 @@ impl<'a> Tracer<'a> {
             if (a - spec.edge).abs() <= 0.5 * spec.inner.min(spec.outer) {
                 break;
             }
-            let disc = self.mesh(a);
+            let disc = self.mesh_for(&st.disc, a);
             let guess = disc.interpolate(&st.disc.r, &st.sol.h);
             match self.newton_step(&disc, st.central_gap(), &guess) {
-                Ok(sol) => st = State { disc, sol },
+                Ok(sol) => {
+                    st = State {
+                        disc,
+                        sol,
+                        arc: st.arc,
+                    }
+                }
                 // Keep the old mesh: the next step's remesh tries again.
                 Err(_) => break,
             }
@@ -128,9 +211,13 @@ impl<'a> Tracer<'a> {
             .map(|(h, t)| (h + t * dh).max(0.5 * h))
             .collect();
         let sol = self.newton_step(&from.disc, h0, &guess)?;
+        // arc length by the trapezoid on the speed |d(P, c alpha)/dH_0|
+        let speed = |s: &Solution| s.d_load.hypot(s.d_approach * self.metric.approach);
+        let arc = from.arc + 0.5 * (speed(&from.sol) + speed(&sol)) * dh.abs();
         self.follow_edge(State {
             disc: from.disc.clone(),
             sol,
+            arc,
         })
     }
 
@@ -179,6 +266,9 @@ impl<'a> Tracer<'a> {
                 }));
             };
             prev_dh = dh;
+            if let Some(f) = self.progress.as_mut() {
+                f(&point(mu, &next));
+            }
             states.push(next);
         }
         Ok(states)
@@ -243,5 +333,6 @@ pub(crate) fn point(mu: f64, st: &State) -> SpherePoint {
         radius_bar: s.radius / MAUGIS_RADIUS,
         d_approach: s.d_approach,
         d_load: s.d_load,
+        arc: st.arc,
     }
 }
