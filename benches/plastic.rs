@@ -11,10 +11,11 @@
 //!   0.1 .. 300 critical interferences; Hertz for comparison.
 //! - `plastic_mc/*`: one Monte Carlo state over 1e5 summits with lognormal
 //!   radii, Hertz against each plastic law (radius scaling `(1, 2, 1)`).
-use asperity::gw::{Accuracy, GwModel, History, LoadingProgram, Method, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::{Exponential, Gaussian};
 use asperity::law::plastic::{build, PlasticLaw};
-use asperity::law::{AsperityLaw, Branch, Hertz};
+use asperity::law::{AsperityLaw, Branch, Hertz, RadiusScaling};
+use asperity::loading::{History, LoadingModel, LoadingProgram, Observables};
 use asperity::material::plastic::{Plasticity, Variant};
 use asperity::montecarlo::*;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
@@ -38,7 +39,15 @@ fn gw_curve(c: &mut Criterion) {
     for v in Variant::ALL {
         let model = GwModel::new(surface, Arc::new(Gaussian::new()), law(v).as_law()).unwrap();
         group.bench_function(BenchmarkId::new(v.name(), "1000_points"), |b| {
-            b.iter(|| black_box(model.curve(&program, Outputs::ALL, &acc).unwrap()))
+            b.iter(|| {
+                black_box(
+                    model
+                        .clone()
+                        .with_accuracy(acc)
+                        .curve(&program, &Observables::ALL)
+                        .unwrap(),
+                )
+            })
         });
         let seps = program.separations();
         group.bench_function(BenchmarkId::new(v.name(), "1000_points_approach"), |b| {
@@ -46,7 +55,9 @@ fn gw_curve(c: &mut Criterion) {
                 for &d in &seps {
                     black_box(
                         model
-                            .state(d, History::Approach, Outputs::ALL, &acc)
+                            .clone()
+                            .with_accuracy(acc)
+                            .state(d, History::Approach, &Observables::ALL)
                             .unwrap(),
                     );
                 }
@@ -138,11 +149,11 @@ fn monte_carlo(c: &mut Criterion) {
     for (name, sl) in laws {
         let mc = MonteCarlo::new(pop.clone(), sl).unwrap();
         group.bench_function(BenchmarkId::new("approach", name), |b| {
-            b.iter(|| black_box(mc.state(d, History::Approach, Outputs::ALL).unwrap()))
+            b.iter(|| black_box(mc.state(d, History::Approach, &Observables::ALL).unwrap()))
         });
         group.bench_function(BenchmarkId::new("retract", name), |b| {
             let back = History::Retract { closest: d - SIGMA };
-            b.iter(|| black_box(mc.state(d, back, Outputs::ALL).unwrap()))
+            b.iter(|| black_box(mc.state(d, back, &Observables::ALL).unwrap()))
         });
     }
     group.finish();

@@ -3,10 +3,11 @@
 //! closest approach, and the chart `plastic_load_area.svg`.
 //!
 //! Run: `cargo run --release --example plastic_gold [OUT_DIR]`.
-use asperity::gw::{Accuracy, GwModel, LoadingProgram, Method, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::plastic::{build, contact_fractions, elastic_law_warning};
 use asperity::law::{AsperityLaw, Hertz};
+use asperity::loading::{LoadingModel, LoadingProgram, Observables};
 use asperity::material::plastic::{plasticity_index, Plasticity, Variant};
 use asperity::material::{contact_modulus, Material};
 use asperity::study::plot::plastic::load_area_chart;
@@ -49,13 +50,16 @@ fn main() -> asperity::Result<()> {
     let mut curves = Vec::new();
     for (name, law) in laws {
         let m = GwModel::new(surface, Arc::new(Gaussian::new()), law)?;
-        let c = m.curve(&program, Outputs::ALL, &acc)?;
+        let c = m
+            .clone()
+            .with_accuracy(acc)
+            .curve(&program, &Observables::ALL)?;
         let last = c.approach[0];
         println!(
             "{name:<20} closest: load {:.4e} N, area {:.4e} m^2, P/A {:.3} GPa",
-            last.load.unwrap(),
-            last.area.unwrap(),
-            last.load.unwrap() / last.area.unwrap() * 1e-9
+            last.load().unwrap(),
+            last.area().unwrap(),
+            last.load().unwrap() / last.area().unwrap() * 1e-9
         );
         curves.push((name, c));
     }

@@ -28,8 +28,8 @@
 // Constants keep the digits of their published or mpmath source.
 #![allow(clippy::excessive_precision)]
 
-pub mod electrical;
 pub mod axisym;
+pub mod electrical;
 pub mod error;
 pub mod gw;
 pub mod heights;

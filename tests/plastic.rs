@@ -8,10 +8,11 @@
 //!   at rtol 1e-10) against mpmath quadrature at 1e-8 relative, on approach
 //!   and on retraction, across the breakpoints;
 //! - limits: psi -> 0 is elastic GW exactly; fully plastic contact P = H A.
-use asperity::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::plastic::{build, AdhesivePlastic, PlasticLaw};
 use asperity::law::{AsperityLaw, Branch, Control, Hertz};
+use asperity::loading::{History, LoadingModel, Observables};
 use asperity::material::plastic::{Plasticity, Variant};
 use serde_json::Value;
 use std::sync::Arc;
@@ -107,8 +108,16 @@ fn gw_sums_match_mpmath_quadrature_at_1e8() {
             Some(c) => History::Retract { closest: c },
             None => History::Approach,
         };
-        let st = model.state(d, history, Outputs::ALL, &acc).unwrap();
-        for (got, key) in [(st.load, "load"), (st.area, "area"), (st.count, "count")] {
+        let st = model
+            .clone()
+            .with_accuracy(acc)
+            .state(d, history, &Observables::ALL)
+            .unwrap();
+        for (got, key) in [
+            (st.load(), "load"),
+            (st.area(), "area"),
+            (st.count(), "count"),
+        ] {
             let e = rel(got.unwrap(), v[key].as_f64().unwrap());
             assert!(e < 1e-8, "{v} {key}: {got:?} ({e:e})");
             worst = worst.max(e);
@@ -134,11 +143,19 @@ fn vanishing_plasticity_index_recovers_elastic_gw_exactly() {
                     closest: -3.0 * 5e-9,
                 },
             ] {
-                let a = model.state(h * 5e-9, history, Outputs::ALL, &acc).unwrap();
-                let b = hertz.state(h * 5e-9, history, Outputs::ALL, &acc).unwrap();
+                let a = model
+                    .clone()
+                    .with_accuracy(acc)
+                    .state(h * 5e-9, history, &Observables::ALL)
+                    .unwrap();
+                let b = hertz
+                    .clone()
+                    .with_accuracy(acc)
+                    .state(h * 5e-9, history, &Observables::ALL)
+                    .unwrap();
                 assert_eq!(
-                    (a.load, a.area, a.count),
-                    (b.load, b.area, b.count),
+                    (a.load(), a.area(), a.count()),
+                    (b.load(), b.area(), b.count()),
                     "{v:?}"
                 );
             }
@@ -160,9 +177,11 @@ fn fully_plastic_surface_carries_hardness_times_real_area() {
         assert!(110.0 * wc < 1e-3 * 5e-9, "{wc}");
         let model = gold_model(law.as_law());
         let st = model
-            .state(0.0, History::Approach, Outputs::ALL, &acc)
+            .clone()
+            .with_accuracy(acc)
+            .state(0.0, History::Approach, &Observables::ALL)
             .unwrap();
-        let ratio = st.load.unwrap() / (p.hardness() * st.area.unwrap());
+        let ratio = st.load().unwrap() / (p.hardness() * st.area().unwrap());
         // The elastic and elastic-plastic sliver (delta < 110 omega_c) holds a
         // fraction ~(110 omega_c/sigma)^2 of the area.
         assert!((ratio - 1.0).abs() < 1e-6, "{v:?}: {ratio}");

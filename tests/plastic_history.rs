@@ -3,14 +3,15 @@
 //! the closest approach (maximum load), Monte Carlo populations with varying
 //! radii use the `(1, 2, 1)` radius scaling exactly, and the regime
 //! diagnostics.
-use asperity::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::{Gaussian, HeightDistribution};
 use asperity::law::plastic::{
     build, contact_fractions, elastic_law_warning, AdhesivePlastic, MaxInterference, PlasticLaw,
 };
-use asperity::law::{AsperityLaw, Jkr};
+use asperity::law::{AsperityLaw, Jkr, RadiusScaling};
+use asperity::loading::{History, LoadingModel, Observables};
 use asperity::material::plastic::{plasticity_index, Plasticity, Variant};
-use asperity::montecarlo::{MonteCarlo, Population, Radii, RadiusScaling, SummitLaw};
+use asperity::montecarlo::{MonteCarlo, Population, Radii, SummitLaw};
 use std::sync::Arc;
 
 const R: f64 = 1e-6;
@@ -32,13 +33,19 @@ fn second_loading_cycle_differs_from_the_first() {
     for v in Variant::ALL {
         let m = model(build(v, R, E, Plasticity::gold()).unwrap().as_law());
         let closest = -1.5 * SIGMA;
-        let first = m.state(0.0, History::Approach, Outputs::ALL, &acc).unwrap();
+        let first = m
+            .clone()
+            .with_accuracy(acc)
+            .state(0.0, History::Approach, &Observables::ALL)
+            .unwrap();
         // Reloading below the closest approach retraces the unloading curve.
         let second = m
-            .state(0.0, History::Retract { closest }, Outputs::ALL, &acc)
+            .clone()
+            .with_accuracy(acc)
+            .state(0.0, History::Retract { closest }, &Observables::ALL)
             .unwrap();
-        let (l1, l2) = (first.load.unwrap(), second.load.unwrap());
-        let (a1, a2) = (first.area.unwrap(), second.area.unwrap());
+        let (l1, l2) = (first.load().unwrap(), second.load().unwrap());
+        let (a1, a2) = (first.area().unwrap(), second.area().unwrap());
         eprintln!(
             "{v:?}: second/first load {:.4}, area {:.4}",
             l2 / l1,
@@ -47,12 +54,16 @@ fn second_loading_cycle_differs_from_the_first() {
         assert!(l2 < 0.9 * l1, "{v:?}: {l2} vs {l1}");
         // At the closest approach the two meet.
         let at = m
-            .state(closest, History::Approach, Outputs::LOAD, &acc)
+            .clone()
+            .with_accuracy(acc)
+            .state(closest, History::Approach, &Observables::LOAD)
             .unwrap();
         let back = m
-            .state(closest, History::Retract { closest }, Outputs::LOAD, &acc)
+            .clone()
+            .with_accuracy(acc)
+            .state(closest, History::Retract { closest }, &Observables::LOAD)
             .unwrap();
-        assert!((at.load.unwrap() / back.load.unwrap() - 1.0).abs() < 1e-8);
+        assert!((at.load().unwrap() / back.load().unwrap() - 1.0).abs() < 1e-8);
     }
 }
 
@@ -63,7 +74,13 @@ fn rough_surface_pull_off_grows_with_the_closest_approach() {
     let m = model(law);
     let mut last = 0.0;
     for hc in [1.0, 0.0, -1.0, -2.0] {
-        let p = m.pull_off(hc * SIGMA, 120, &acc).unwrap().unwrap().load;
+        let p = m
+            .clone()
+            .with_accuracy(acc)
+            .pull_off(hc * SIGMA, 120)
+            .unwrap()
+            .unwrap()
+            .load;
         eprintln!("closest {hc} sigma: pull-off {p:e} N");
         assert!(p < last, "closest {hc}: {p} vs {last}");
         last = p;
@@ -78,10 +95,18 @@ fn rough_surface_pull_off_grows_with_the_closest_approach() {
     let acc = acc.with_method(Method::Quadrature);
     for h in [-1.0, 0.5] {
         let back = History::Retract { closest: -SIGMA };
-        let x = a.state(h * SIGMA, back, Outputs::ALL, &acc).unwrap();
-        let y = b.state(h * SIGMA, back, Outputs::ALL, &acc).unwrap();
+        let x = a
+            .clone()
+            .with_accuracy(acc)
+            .state(h * SIGMA, back, &Observables::ALL)
+            .unwrap();
+        let y = b
+            .clone()
+            .with_accuracy(acc)
+            .state(h * SIGMA, back, &Observables::ALL)
+            .unwrap();
         assert!(
-            (x.load.unwrap() / y.load.unwrap() - 1.0).abs() < 1e-9,
+            (x.load().unwrap() / y.load().unwrap() - 1.0).abs() < 1e-9,
             "{x:?} {y:?}"
         );
     }
@@ -114,7 +139,7 @@ fn monte_carlo_radius_scaling_is_exact_for_plastic_laws() {
         .unwrap();
         let (d, closest) = (0.5 * SIGMA, -SIGMA);
         for history in [History::Approach, History::Retract { closest }] {
-            let st = mc.state(d, history, Outputs::ALL).unwrap();
+            let st = mc.state(d, history, &Observables::ALL).unwrap();
             let (mut load, mut area) = (0.0, 0.0);
             for i in 0..pop.len() {
                 let l = build(v, pop.radius(i), E, Plasticity::gold()).unwrap();
@@ -126,7 +151,10 @@ fn monte_carlo_radius_scaling_is_exact_for_plastic_laws() {
                 load += s.load;
                 area += s.area();
             }
-            let (el, ea) = (st.load.unwrap() / load - 1.0, st.area.unwrap() / area - 1.0);
+            let (el, ea) = (
+                st.load().unwrap() / load - 1.0,
+                st.area().unwrap() / area - 1.0,
+            );
             assert!(
                 el.abs() < 1e-12 && ea.abs() < 1e-12,
                 "{v:?} {history:?}: {el:e} {ea:e}"

@@ -6,9 +6,10 @@
 mod common;
 
 use asperity::axisym::Profile;
-use asperity::gw::{Accuracy, GwModel, History, Method, Outputs, RoughSurface};
+use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::Shaped;
+use asperity::loading::{History, LoadingModel, Observables};
 use common::{local, num};
 use std::sync::Arc;
 
@@ -34,9 +35,13 @@ fn conical_summits_match_independent_quadrature_at_1e_8() {
                 closest: num(&case["closest_h"]) * sigma,
             },
         };
-        let s = model.state(d, history, Outputs::ALL, &acc).unwrap();
+        let s = model
+            .clone()
+            .with_accuracy(acc)
+            .state(d, history, &Observables::ALL)
+            .unwrap();
         let want: Vec<f64> = case["totals"].as_array().unwrap().iter().map(num).collect();
-        for (got, want) in [s.load, s.area, s.count].into_iter().zip(want) {
+        for (got, want) in [s.load(), s.area(), s.count()].into_iter().zip(want) {
             let e = (got.unwrap() / want - 1.0).abs();
             worst = worst.max(e);
             assert!(e < 1e-8, "{case}: got {got:?}, want {want}");

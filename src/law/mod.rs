@@ -34,9 +34,9 @@ pub mod interpolated;
 pub mod jkr;
 mod kind;
 pub mod maugis;
+pub mod plastic;
 mod scaling;
 pub mod shaped;
-pub mod plastic;
 pub mod tabulated;
 
 pub use bradley::Bradley;

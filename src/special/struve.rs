@@ -14,8 +14,8 @@
 //! Measured against mpmath (`tests/struve.rs`, 0 <= x <= 1e6): absolute error below
 //! 1e-15 everywhere, relative below 1e-14 wherever `|H| > 1e-3`.
 
-use super::chebyshev::piecewise;
 use super::struve_tables::{H0_TABLE, H1_TABLE};
+use crate::numeric::chebyshev::piecewise;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 /// Below this `|x|` the power series is used.

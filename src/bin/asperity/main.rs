@@ -13,8 +13,8 @@ mod punch_cmd;
 mod run_cmd;
 mod shape_cmd;
 mod sphere_cmd;
-mod surface_cmd;
 mod spots_cmd;
+mod surface_cmd;
 mod sweep_cmd;
 
 use clap::{Parser, Subcommand};

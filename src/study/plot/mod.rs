@@ -2,9 +2,9 @@
 //! system libraries needed).
 
 mod map;
+pub mod plastic;
 pub mod punch;
 pub mod surface;
-pub mod plastic;
 
 pub use map::{adhesion_map_csv, write_adhesion_map};
 

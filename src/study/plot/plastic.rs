@@ -3,7 +3,7 @@
 //! the load at a given area when summits yield.
 
 use super::{Chart, Series};
-use crate::gw::Curve;
+use crate::loading::Curve;
 
 /// A chart of load (mN) against real contact area (um^2) on approach, one
 /// line per labelled curve (e.g. `hertz`, `kogut-etsion`, ...). Points
@@ -16,7 +16,7 @@ pub fn load_area_chart(title: &str, curves: &[(String, Curve)]) -> Chart {
             points: c
                 .approach
                 .iter()
-                .filter_map(|s| Some((s.area? * 1e12, s.load? * 1e3)))
+                .filter_map(|s| Some((s.area()? * 1e12, s.load()? * 1e3)))
                 .collect(),
         })
         .collect();
