@@ -1,6 +1,6 @@
 //! Gaussian F_n closed forms, Q, erfc, Gamma and the normal quantile against
 //! mpmath (tests/data/gaussian_fn.json, 50 digits, two independent mpmath
-//! evaluations) and the shared reference /work/shared/reference/gw_gaussian_Fn.json
+//! evaluations) and the shared reference tests/data/reference/gw_gaussian_Fn.json
 //! (a second independent script; copied numbers are not needed, it is read if present).
 
 use asperity::heights::{Gaussian, HeightDistribution};

@@ -1,7 +1,7 @@
 //! The wavy punch's exact curve, evolution and energy loss against the independent mpmath
 //! computation tests/data/punch.json (tests/data/punch.py: P by Sneddon's integral with
 //! mp.quad, folds and roots by mpmath's solver, loss by tanh-sinh quadrature; 30 digits) and
-//! the shared reference /work/shared/reference/kesari_lew.json (read if present).
+//! the shared reference tests/data/reference/kesari_lew.json.
 
 use asperity::punch::{Evolution, WavyPunch};
 use proptest::prelude::*;

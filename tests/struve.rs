@@ -1,6 +1,6 @@
 //! Struve H0, H1 against mpmath (tests/data/struve.json, struveh at 50 digits,
 //! made by tests/data/struve.py) and the shared reference
-//! /work/shared/reference/kesari_lew.json (a second script; read if present).
+//! tests/data/reference/kesari_lew.json (a second script; read if present).
 
 use asperity::special::struve::{struve_h0, struve_h0_h1, struve_h1};
 

@@ -5,7 +5,7 @@ t = 2(x - k) - 1 (first-kind nodes, discrete orthogonality). Below x = 2 the Rus
 above x = 50 it uses H_nu - Y_nu's asymptotic series with Hankel's expansion of Y_nu (see struve.rs).
 Each fit is checked against struveh at 7 off-node points per piece; the worst absolute error is printed in the
 table's doc comment.
-Usage: /work/venv-punch/bin/python tools/gen_struve_tables.py 15 > src/special/struve_tables.rs
+Usage: python3 tools/gen_struve_tables.py 15 > src/special/struve_tables.rs
 """
 import mpmath as mp, sys
 mp.mp.dps = 40

@@ -17,13 +17,13 @@ How (independent of the Rust code path):
   8 int_0^1 (1/2 - t/6)/sqrt(1 + t^2) dt (polar-like substitution v = u t of
   4 int int (1-u)(1-v)/sqrt(u^2+v^2)), checked against the closed form.
 - Exact spots: mpmath.lu_solve of the full matrix at 40 digits.
-- Formulas as in shared/docs/physics.md ("Contact resistance"); two metals as
+- Formulas as in docs/physics.md ("Contact resistance"); two metals as
   in src/electrical/spot.rs's documented form.
 
 Digits: every value is printed with 17 significant digits (repr of the
 rounded double); the quadratures are converged far beyond 1e-15.
 
-Run: /work/venv-electrical/bin/python tests/data/electrical.py > tests/data/electrical.json
+Run: python3 tests/data/electrical.py > tests/data/electrical.json
 """
 import json
 import random

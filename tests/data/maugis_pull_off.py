@@ -89,7 +89,7 @@ def main():
     import mpmath
     data = {
         "provenance": "tests/data/maugis_pull_off.py, mpmath " + mpmath.__version__
-                      + ", mp.dps = 40: the MD equations of shared/docs/physics.md solved "
+                      + ", mp.dps = 40: the MD equations of docs/physics.md solved "
                       "for m at given A (illinois bracketing root), extrema by findroot on "
                       "mp.diff; the non-contact fold by findroot on mp.diff of Dbar(C). "
                       "Units: Pbar = P/(pi w R), Dbar = delta (K^2/(pi^2 w^2 R))^(1/3), "

@@ -19,7 +19,7 @@ mpmath.findroot), and the clamp point of the unloading span.
 Digits: single-asperity values about 30 significant (mpmath, dps 40); GW
 totals: mpmath's own error estimate is stored with each (quad_rel_error). The Rust tests compare at 1e-12 (laws) and 1e-8 (GW).
 
-Run: /work/venv-plastic/bin/python tests/data/plastic.py > tests/data/plastic.json
+Run: python3 tests/data/plastic.py > tests/data/plastic.json
 """
 import json
 import mpmath as mp
@@ -190,7 +190,7 @@ def main():
     out = {
         "source": "tests/data/plastic.py: mpmath (dps 40) evaluation of the elastic-plastic laws "
         "from docs/physics.md; GW totals by mpmath.quad split at every jump and kink",
-        "command": "/work/venv-plastic/bin/python tests/data/plastic.py > tests/data/plastic.json",
+        "command": "python3 tests/data/plastic.py > tests/data/plastic.json",
         "digits": "laws ~30 significant; GW totals ~15 significant",
         "sets": SETS,
         "laws": [],

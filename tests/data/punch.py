@@ -19,7 +19,7 @@ c0 = F(a4) - F(a2), F = (8/15)a^5 - (4/3)sqrt(2 pi) a^(7/2) + pi a^2;
 c1 = (4 pi^2/3) sqrt(a2) + G(a4) - G(a2), G = -(4 pi/3) a^(7/2) + pi sqrt(2 pi) a^2;
 and, independently, c1 by a central difference of the loss of the envelope path 2-2'-4 (mp.quad).
 
-Run: /work/venv-punch/bin/python tests/data/punch.py > tests/data/punch.json   (about a minute)
+Run: python3 tests/data/punch.py > tests/data/punch.json   (about a minute)
 Numbers are strings with 20 significant digits.
 """
 import json

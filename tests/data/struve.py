@@ -1,7 +1,7 @@
 """Reference values of the Struve functions H0(x), H1(x) from mpmath struveh at 50 digits,
 for src/special/struve.rs (tests/struve.rs).
 
-Run: /work/venv-punch/bin/python tests/data/struve.py > tests/data/struve.json
+Run: python3 tests/data/struve.py > tests/data/struve.json
 
 x: 400 log-spaced points on [1e-6, 1e6], a dense uniform grid on [0, 60] (step 0.0625 plus an
 irrational offset, so it never hits a table node), points just below and above the regime edges
