@@ -4,7 +4,8 @@ use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Exponential;
 use asperity::law::{AsperityLaw, Jkr};
 use asperity::loading::{LoadingModel, LoadingProgram, Observables};
-use asperity::sphere::{CalibrationCache, Shape, SolverOptions, SphereProblem};
+use asperity::sphere::{Shape, SolverOptions, SphereProblem};
+use asperity::study::cache::CalibrationCache;
 use std::sync::Arc;
 
 #[test]

@@ -7,16 +7,16 @@
 //! [`Tabulated`] law usable by [`crate::gw::GwModel`]. The Maugis–Dugdale
 //! equivalent is `lambda = 1.1570 mu` ([`crate::material::LAMBDA_PER_TABOR`]).
 //!
-//! [`CalibrationCache`] stores calibrations as JSON files keyed by
-//! [`SOLVER_VERSION`], mu, the shape and the solver
-//! options, so sweeps never recompute them.
+//! Calibrations are serialisable and name themselves ([`Calibration::key`],
+//! [`Calibration::matches`]); the study layer's cache
+//! (`crate::study::cache`) stores them as files so sweeps never recompute
+//! them. The core opens no files.
 
-use super::{Shape, SolverOptions, SphereFacts, SpherePoint, SphereProblem, SOLVER_VERSION};
+use super::{Shape, SphereFacts, SpherePoint, SphereProblem, SOLVER_VERSION};
 use crate::error::{Error, Result};
 use crate::law::tabulated::{BranchTable, CurveTable, TablePoint, Tabulated};
 use crate::material::LAMBDA_PER_TABOR;
 use serde::{Deserialize, Serialize};
-use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// A calibrated law table with its provenance.
@@ -205,48 +205,19 @@ impl Calibration {
     }
 }
 
-/// Calibrations stored as JSON files in one directory.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct CalibrationCache {
-    dir: PathBuf,
-}
-
-/// FNV-1a, 64 bit: a stable hash for cache keys.
-fn fnv1a(text: &str) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for b in text.bytes() {
-        h ^= b as u64;
-        h = h.wrapping_mul(0x0000_0100_0000_01b3);
-    }
-    h
-}
-
-impl CalibrationCache {
-    /// A cache in `dir` (created on first store).
-    pub fn new(dir: impl Into<PathBuf>) -> Self {
-        CalibrationCache { dir: dir.into() }
+impl Calibration {
+    /// Whether this calibration was made by this solver version for
+    /// `problem` (mu, shape and options).
+    pub fn matches(&self, problem: &SphereProblem) -> bool {
+        self.solver_version == SOLVER_VERSION
+            && self.mu == problem.mu()
+            && self.shape == problem.shape()
+            && self.options == format!("{:?}", problem.options())
     }
 
-    /// `$ASPERITY_CACHE`, else `$HOME/.cache/asperity`, else a directory
-    /// under the system temporary directory.
-    pub fn default_location() -> Self {
-        if let Some(d) = std::env::var_os("ASPERITY_CACHE").filter(|d| !d.is_empty()) {
-            return Self::new(d);
-        }
-        if let Some(h) = std::env::var_os("HOME").filter(|d| !d.is_empty()) {
-            return Self::new(Path::new(&h).join(".cache").join("asperity"));
-        }
-        Self::new(std::env::temp_dir().join("asperity-cache"))
-    }
-
-    /// The directory.
-    pub fn dir(&self) -> &Path {
-        &self.dir
-    }
-
-    /// File of a problem: solver version, mu, shape and a hash of all three
-    /// plus the options.
-    pub fn path_for(&self, problem: &SphereProblem) -> PathBuf {
+    /// A stable name for `problem`'s calibration (solver version, mu, shape
+    /// and an FNV-1a hash of all three plus the options), for caches.
+    pub fn key(problem: &SphereProblem) -> String {
         let shape = match problem.shape() {
             Shape::Paraboloid => "paraboloid".to_string(),
             Shape::Sphere { rho } => format!("rho{rho:e}"),
@@ -257,66 +228,22 @@ impl CalibrationCache {
             problem.shape(),
             problem.options()
         );
-        self.dir.join(format!(
-            "sphere-v{SOLVER_VERSION}-mu{:e}-{shape}-{:016x}.json",
+        format!(
+            "sphere-v{SOLVER_VERSION}-mu{:e}-{shape}-{:016x}",
             problem.mu(),
             fnv1a(&key)
-        ))
-    }
-
-    /// The stored calibration of `problem`, if present, readable and made by
-    /// this solver version for these parameters.
-    pub fn load(&self, problem: &SphereProblem) -> Option<Calibration> {
-        let text = std::fs::read_to_string(self.path_for(problem)).ok()?;
-        let c: Calibration = serde_json::from_str(&text).ok()?;
-        let same = c.solver_version == SOLVER_VERSION
-            && c.mu == problem.mu()
-            && c.shape == problem.shape()
-            && c.options == format!("{:?}", problem.options());
-        same.then_some(c)
-    }
-
-    /// Stores a calibration (atomically: temp file then rename).
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `cache` when the directory or file cannot be
-    /// written.
-    pub fn store(&self, problem: &SphereProblem, c: &Calibration) -> Result<PathBuf> {
-        let io =
-            |e: std::io::Error| Error::invalid("cache", format!("{}: {e}", self.dir.display()));
-        std::fs::create_dir_all(&self.dir).map_err(io)?;
-        let path = self.path_for(problem);
-        let tmp = path.with_extension(format!("tmp{}", std::process::id()));
-        let text = serde_json::to_string(c)
-            .map_err(|e| Error::invalid("cache", format!("serialise: {e}")))?;
-        std::fs::write(&tmp, text).map_err(io)?;
-        std::fs::rename(&tmp, &path).map_err(io)?;
-        Ok(path)
-    }
-
-    /// The cached calibration, or computes and stores it. A cache that
-    /// cannot be written does not fail the computation.
-    ///
-    /// # Errors
-    /// As [`Calibration::compute`].
-    pub fn get_or_compute(&self, problem: &SphereProblem) -> Result<Calibration> {
-        if let Some(c) = self.load(problem) {
-            return Ok(c);
-        }
-        let c = Calibration::compute(problem)?;
-        let _ = self.store(problem, &c);
-        Ok(c)
+        )
     }
 }
 
-/// Convenience: the calibration of `mu` (paraboloid, default options) from
-/// the default cache.
-///
-/// # Errors
-/// As [`SphereProblem::new`] and [`Calibration::compute`].
-pub fn calibrate(mu: f64) -> Result<Calibration> {
-    let p = SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default())?;
-    CalibrationCache::default_location().get_or_compute(&p)
+/// FNV-1a, 64 bit: a stable hash for cache keys.
+fn fnv1a(text: &str) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in text.bytes() {
+        h ^= b as u64;
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
 }
 
 #[cfg(test)]

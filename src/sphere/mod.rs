@@ -36,7 +36,7 @@ mod newton;
 mod quadrature;
 mod trace;
 
-pub use calibrate::{calibrate, Calibration, CalibrationCache};
+pub use calibrate::Calibration;
 
 use crate::error::{positive, Allowed, Error, Result};
 use mesh::MeshSpec;

@@ -6,6 +6,7 @@
 //! Compiled with the default feature `study`; the physics core builds without
 //! it (`cargo build --lib --no-default-features`).
 
+pub mod cache;
 pub mod output;
 pub mod plan;
 pub mod plot;

@@ -1,51 +1,9 @@
 use super::*;
 use crate::law::{AsperityLaw, Branch, Control};
+use crate::sphere::SolverOptions;
 
 fn problem() -> SphereProblem {
     SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::coarse()).unwrap()
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("asperity-cal-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    d
-}
-
-#[test]
-fn cache_round_trip_and_no_recompute() {
-    let dir = temp_dir("rt");
-    let cache = CalibrationCache::new(&dir);
-    let p = problem();
-    assert!(cache.load(&p).is_none());
-    let c = cache.get_or_compute(&p).unwrap();
-    let path = cache.path_for(&p);
-    assert!(path.exists());
-    assert_eq!(cache.load(&p).unwrap(), c);
-    // A tampered file is returned as is: proof that nothing is recomputed.
-    let mut t = c.clone();
-    t.lambda_equivalent = 42.0;
-    cache.store(&p, &t).unwrap();
-    assert_eq!(cache.get_or_compute(&p).unwrap().lambda_equivalent, 42.0);
-    // Other parameters, other files.
-    let q = SphereProblem::new(1.0, Shape::Sphere { rho: 100.0 }, SolverOptions::coarse()).unwrap();
-    assert_ne!(cache.path_for(&q), path);
-    let r = SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::default()).unwrap();
-    assert_ne!(cache.path_for(&r), path);
-    // A corrupt file is ignored (and would be recomputed).
-    std::fs::write(&path, "{not json").unwrap();
-    assert!(cache.load(&p).is_none());
-    std::fs::remove_dir_all(&dir).unwrap();
-}
-
-#[test]
-fn unwritable_cache_still_computes() {
-    let dir = temp_dir("ro");
-    std::fs::write(&dir, "a file, not a directory").unwrap();
-    let cache = CalibrationCache::new(dir.join("sub"));
-    let p = problem();
-    assert!(cache.store(&p, &Calibration::compute(&p).unwrap()).is_err());
-    assert!(cache.get_or_compute(&p).is_ok());
-    std::fs::remove_file(&dir).unwrap();
 }
 
 /// The calibrated law reproduces the solver's critical points and has the

@@ -107,7 +107,8 @@ fn calibrated(
     preview: bool,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
-    use crate::sphere::{CalibrationCache, Shape, SolverOptions, SphereProblem};
+    use crate::sphere::{Shape, SolverOptions, SphereProblem};
+    use crate::study::cache::CalibrationCache;
     let mu = contact.tabor();
     let problem =
         SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default()).map_err(|e| {

@@ -1,0 +1,142 @@
+//! The on-disk cache of sphere-solver calibrations: JSON files in one
+//! directory, named by [`Calibration::key`], so scenes and sweeps never
+//! recompute a calibration.
+
+use crate::error::{Error, Result};
+use crate::sphere::{Calibration, Shape, SolverOptions, SphereProblem};
+use std::path::{Path, PathBuf};
+
+/// Calibrations stored as JSON files in one directory.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CalibrationCache {
+    dir: PathBuf,
+}
+
+impl CalibrationCache {
+    /// A cache in `dir` (created on first store).
+    pub fn new(dir: impl Into<PathBuf>) -> Self {
+        CalibrationCache { dir: dir.into() }
+    }
+
+    /// `$ASPERITY_CACHE`, else `$HOME/.cache/asperity`, else a directory
+    /// under the system temporary directory.
+    pub fn default_location() -> Self {
+        if let Some(d) = std::env::var_os("ASPERITY_CACHE").filter(|d| !d.is_empty()) {
+            return Self::new(d);
+        }
+        if let Some(h) = std::env::var_os("HOME").filter(|d| !d.is_empty()) {
+            return Self::new(Path::new(&h).join(".cache").join("asperity"));
+        }
+        Self::new(std::env::temp_dir().join("asperity-cache"))
+    }
+
+    /// The directory.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+
+    /// File of a problem's calibration.
+    pub fn path_for(&self, problem: &SphereProblem) -> PathBuf {
+        self.dir.join(format!("{}.json", Calibration::key(problem)))
+    }
+
+    /// The stored calibration of `problem`, if present, readable and made by
+    /// this solver version for these parameters.
+    pub fn load(&self, problem: &SphereProblem) -> Option<Calibration> {
+        let text = std::fs::read_to_string(self.path_for(problem)).ok()?;
+        let c: Calibration = serde_json::from_str(&text).ok()?;
+        c.matches(problem).then_some(c)
+    }
+
+    /// Stores a calibration (atomically: temp file then rename).
+    ///
+    /// # Errors
+    /// [`Error::Io`] when the directory or file cannot be written.
+    pub fn store(&self, problem: &SphereProblem, c: &Calibration) -> Result<PathBuf> {
+        let io = |e: std::io::Error| Error::io(self.dir.display(), e);
+        std::fs::create_dir_all(&self.dir).map_err(io)?;
+        let path = self.path_for(problem);
+        let tmp = path.with_extension(format!("tmp{}", std::process::id()));
+        let text = serde_json::to_string(c).map_err(|e| Error::io(path.display(), e))?;
+        std::fs::write(&tmp, text).map_err(io)?;
+        std::fs::rename(&tmp, &path).map_err(io)?;
+        Ok(path)
+    }
+
+    /// The cached calibration, or computes and stores it. A cache that
+    /// cannot be written does not fail the computation.
+    ///
+    /// # Errors
+    /// As [`Calibration::compute`].
+    pub fn get_or_compute(&self, problem: &SphereProblem) -> Result<Calibration> {
+        if let Some(c) = self.load(problem) {
+            return Ok(c);
+        }
+        let c = Calibration::compute(problem)?;
+        let _ = self.store(problem, &c);
+        Ok(c)
+    }
+}
+
+/// Convenience: the calibration of `mu` (paraboloid, default options) from
+/// the default cache.
+///
+/// # Errors
+/// As [`SphereProblem::new`] and [`Calibration::compute`].
+pub fn calibrate(mu: f64) -> Result<Calibration> {
+    let p = SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default())?;
+    CalibrationCache::default_location().get_or_compute(&p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn problem() -> SphereProblem {
+        SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::coarse()).unwrap()
+    }
+
+    fn temp_dir(tag: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("asperity-cal-{tag}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        d
+    }
+
+    #[test]
+    fn cache_round_trip_and_no_recompute() {
+        let dir = temp_dir("rt");
+        let cache = CalibrationCache::new(&dir);
+        let p = problem();
+        assert!(cache.load(&p).is_none());
+        let c = cache.get_or_compute(&p).unwrap();
+        let path = cache.path_for(&p);
+        assert!(path.exists());
+        assert_eq!(cache.load(&p).unwrap(), c);
+        // A tampered file is returned as is: proof that nothing is recomputed.
+        let mut t = c.clone();
+        t.lambda_equivalent = 42.0;
+        cache.store(&p, &t).unwrap();
+        assert_eq!(cache.get_or_compute(&p).unwrap().lambda_equivalent, 42.0);
+        // Other parameters, other files.
+        let q =
+            SphereProblem::new(1.0, Shape::Sphere { rho: 100.0 }, SolverOptions::coarse()).unwrap();
+        assert_ne!(cache.path_for(&q), path);
+        let r = SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::default()).unwrap();
+        assert_ne!(cache.path_for(&r), path);
+        // A corrupt file is ignored (and would be recomputed).
+        std::fs::write(&path, "{not json").unwrap();
+        assert!(cache.load(&p).is_none());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn unwritable_cache_still_computes() {
+        let dir = temp_dir("ro");
+        std::fs::write(&dir, "a file, not a directory").unwrap();
+        let cache = CalibrationCache::new(dir.join("sub"));
+        let p = problem();
+        assert!(cache.store(&p, &Calibration::compute(&p).unwrap()).is_err());
+        assert!(cache.get_or_compute(&p).is_ok());
+        std::fs::remove_file(&dir).unwrap();
+    }
+}
