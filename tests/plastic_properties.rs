@@ -170,6 +170,14 @@ proptest! {
         let adh = AdhesivePlastic::new(l.clone().as_loading(), work).unwrap();
         let wc = l.critical_interference();
         let w1 = 10f64.powf(lw);
+        // Across a breakpoint the published fits jump (KE's load rises 37 %
+        // at w = 110 for nu = 0, which shrinks the unloading radius): the
+        // growth holds within each piece of the fit.
+        let (d1, d2) = (w1 * wc, w1 * (1.0 + f) * wc);
+        prop_assume!(!l
+            .breakpoints(Branch::Approach)
+            .iter()
+            .any(|&b| b > d1 && b <= d2));
         let p1 = adh.pull_off_after(w1 * wc, Control::Load).load;
         let p2 = adh.pull_off_after(w1 * (1.0 + f) * wc, Control::Load).load;
         prop_assert!(p2 <= p1, "{v:?}: w {w1}: {p1} then {p2}");
