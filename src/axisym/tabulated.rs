@@ -98,7 +98,7 @@ impl TabulatedProfile {
                 ),
             ));
         }
-        let d = slopes(&h, &del);
+        let d = crate::numeric::pchip::slopes(&h, &del);
         Ok(TabulatedProfile { r, f, d })
     }
 
@@ -193,34 +193,6 @@ impl TabulatedProfile {
                 let s = u.sin();
                 s * s * self.derivatives(a * s).0
             })
-    }
-}
-
-/// PCHIP slopes (Fritsch–Butland interior, Moler's end rule), as
-/// `crate::numeric::pchip` and scipy.
-fn slopes(h: &[f64], del: &[f64]) -> Vec<f64> {
-    let n = h.len() + 1;
-    let mut d = vec![0.0; n];
-    for k in 1..n - 1 {
-        if del[k - 1] * del[k] > 0.0 {
-            let w1 = 2.0 * h[k] + h[k - 1];
-            let w2 = h[k] + 2.0 * h[k - 1];
-            d[k] = (w1 + w2) / (w1 / del[k - 1] + w2 / del[k]);
-        }
-    }
-    d[0] = end_slope(h[0], h[1], del[0], del[1]);
-    d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
-    d
-}
-
-fn end_slope(h0: f64, h1: f64, del0: f64, del1: f64) -> f64 {
-    let d = ((2.0 * h0 + h1) * del0 - h0 * del1) / (h0 + h1);
-    if d * del0 <= 0.0 {
-        0.0
-    } else if del0 * del1 <= 0.0 && d.abs() > 3.0 * del0.abs() {
-        3.0 * del0
-    } else {
-        d
     }
 }
 

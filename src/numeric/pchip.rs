@@ -26,21 +26,11 @@ impl Pchip {
         }
         let h: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
         let del: Vec<f64> = (0..n - 1).map(|k| (y[k + 1] - y[k]) / h[k]).collect();
-        let mut d = vec![0.0; n];
-        if n == 2 {
-            d[0] = del[0];
-            d[1] = del[0];
+        let d = if n == 2 {
+            vec![del[0]; 2]
         } else {
-            for k in 1..n - 1 {
-                if del[k - 1] * del[k] > 0.0 {
-                    let w1 = 2.0 * h[k] + h[k - 1];
-                    let w2 = h[k] + 2.0 * h[k - 1];
-                    d[k] = (w1 + w2) / (w1 / del[k - 1] + w2 / del[k]);
-                }
-            }
-            d[0] = end_slope(h[0], h[1], del[0], del[1]);
-            d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
-        }
+            slopes(&h, &del)
+        };
         Some(Pchip { x, y, d })
     }
 
@@ -76,6 +66,24 @@ impl Pchip {
             + (-2.0 * s3 + 3.0 * s2) * y1
             + (s3 - s2) * d1
     }
+}
+
+/// PCHIP node slopes from the interval widths `h` and secants `del` (at
+/// least two intervals): Fritsch–Butland weighted harmonic means inside
+/// (zero at a local extremum), Moler's shape-preserving end rule.
+pub fn slopes(h: &[f64], del: &[f64]) -> Vec<f64> {
+    let n = h.len() + 1;
+    let mut d = vec![0.0; n];
+    for k in 1..n - 1 {
+        if del[k - 1] * del[k] > 0.0 {
+            let w1 = 2.0 * h[k] + h[k - 1];
+            let w2 = h[k] + 2.0 * h[k - 1];
+            d[k] = (w1 + w2) / (w1 / del[k - 1] + w2 / del[k]);
+        }
+    }
+    d[0] = end_slope(h[0], h[1], del[0], del[1]);
+    d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
+    d
 }
 
 /// Three-point end slope, kept shape-preserving (Moler, *Numerical Computing
