@@ -64,14 +64,8 @@ impl PlasticLoading for ChangEtsionBogy {
 
     #[inline]
     fn loading(&self, delta: f64) -> ContactState {
-        if !(delta > 0.0) {
-            return ContactState::FREE;
-        }
-        if delta <= self.omega_c {
-            return ContactState {
-                load: self.asperity.hertz.load_at(delta),
-                radius: self.asperity.hertz.radius_at(delta),
-            };
+        if let Some(s) = self.asperity.elastic_state(delta, self.omega_c) {
+            return s;
         }
         // a^2 = R (2 delta - omega_c)
         let a2 = self.asperity.radius * (2.0 * delta - self.omega_c);

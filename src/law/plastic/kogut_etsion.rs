@@ -97,14 +97,8 @@ impl PlasticLoading for KogutEtsion {
 
     #[inline]
     fn loading(&self, delta: f64) -> ContactState {
-        if !(delta > 0.0) {
-            return ContactState::FREE;
-        }
-        if delta <= self.omega_c {
-            return ContactState {
-                load: self.asperity.hertz.load_at(delta),
-                radius: self.asperity.hertz.radius_at(delta),
-            };
+        if let Some(s) = self.asperity.elastic_state(delta, self.omega_c) {
+            return s;
         }
         let (p, a) = self.bar(delta / self.omega_c);
         ContactState {

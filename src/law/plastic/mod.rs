@@ -114,6 +114,20 @@ pub struct PlasticAsperity {
 }
 
 impl PlasticAsperity {
+    /// The state below the plastic range, shared by every fit: free for
+    /// `delta <= 0`, Hertz for `0 < delta <= elastic_limit` (m); `None`
+    /// beyond it, where the law's own fit applies.
+    #[inline]
+    pub fn elastic_state(&self, delta: f64, elastic_limit: f64) -> Option<ContactState> {
+        if !(delta > 0.0) {
+            return Some(ContactState::FREE);
+        }
+        (delta <= elastic_limit).then(|| ContactState {
+            load: self.hertz.load_at(delta),
+            radius: self.hertz.radius_at(delta),
+        })
+    }
+
     /// Radius `R` (m, > 0), contact modulus `E*` (Pa, > 0), plastic data.
     ///
     /// # Errors

@@ -69,14 +69,8 @@ impl PlasticLoading for ZhaoMaiettaChang {
 
     #[inline]
     fn loading(&self, delta: f64) -> ContactState {
-        if !(delta > 0.0) {
-            return ContactState::FREE;
-        }
-        if delta <= self.omega_1 {
-            return ContactState {
-                load: self.asperity.hertz.load_at(delta),
-                radius: self.asperity.hertz.radius_at(delta),
-            };
+        if let Some(s) = self.asperity.elastic_state(delta, self.omega_1) {
+            return s;
         }
         let h = self.asperity.plasticity.hardness();
         let r = self.asperity.radius;
