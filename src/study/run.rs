@@ -34,6 +34,9 @@ pub struct Results {
     /// The explicit population's curve and its comparison with the
     /// integral, when the scene asks for one.
     pub montecarlo: Option<McResults>,
+    /// Where the results lie outside a model's validity (each a sentence
+    /// naming the quantity, its value and the bound).
+    pub warnings: Vec<String>,
 }
 
 /// A population summed over the program, beside the integral.
@@ -177,6 +180,7 @@ impl Plan {
             seconds: t0.elapsed().as_secs_f64(),
             evaluations,
             montecarlo,
+            warnings: Vec::new(),
         })
     }
 }

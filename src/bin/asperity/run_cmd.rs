@@ -60,6 +60,10 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
     let (plan, results) = (plan, results);
     let files = write_outputs(plan, results, out)?;
     let summary = Summary::new(plan, results);
+    // Warnings go to stderr as well, so that stdout stays parseable.
+    for w in &summary.warnings {
+        eprintln!("warning: {w}");
+    }
     if json {
         println!("{}", summary.to_json());
         return Ok(());
@@ -112,6 +116,12 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
             "    worst deviation from the integral: {} standard errors (< 5 expected)",
             m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))
         );
+    }
+    if !summary.warnings.is_empty() {
+        println!("  warnings:");
+        for w in &summary.warnings {
+            println!("    {w}");
+        }
     }
     println!("  wrote:");
     for f in files {

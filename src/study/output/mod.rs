@@ -53,6 +53,9 @@ pub struct Summary {
     pub montecarlo: Option<McSummary>,
     /// The plan's decisions: `what: choice (why)`.
     pub plan: Vec<String>,
+    /// Where the scene or its results lie outside a model's validity, one
+    /// sentence each (empty when none).
+    pub warnings: Vec<String>,
 }
 
 /// The Monte Carlo part of a summary.
@@ -124,6 +127,12 @@ impl Summary {
                 }
             }),
             plan: plan.decisions.iter().map(|d| d.to_string()).collect(),
+            warnings: plan
+                .warnings
+                .iter()
+                .chain(&results.warnings)
+                .cloned()
+                .collect(),
         }
     }
 

@@ -117,6 +117,10 @@ pub struct Plan {
     pub montecarlo: Option<McPlan>,
     /// The decisions, in order.
     pub decisions: Vec<Decision>,
+    /// Where the scene lies outside a model's validity, found while
+    /// planning (the run adds its own, [`crate::study::Results::warnings`]);
+    /// the summary lists both.
+    pub warnings: Vec<String>,
 }
 
 impl Plan {
@@ -212,6 +216,7 @@ impl Plan {
             pull_off,
             hysteresis_energy,
             decisions,
+            warnings: Vec::new(),
         })
     }
 
