@@ -1,9 +1,17 @@
 //! Executing a [`Plan`]: the loading program, pull-off and hysteresis energy.
 
+use super::plan::LawSource;
 use super::plan::{McPlan, Plan};
+use super::scene::ProgramTarget;
+use crate::electrical::{Interaction, Stiction};
 use crate::error::Result;
+use crate::gw::GwModel;
+use crate::law::plastic::{contact_fractions, RegimeFractions};
 use crate::law::AsperityLaw;
-use crate::loading::{Curve, History, LoadingModel, LoadingProgram, PullOff, State, SLOTS};
+use crate::loading::{
+    Curve, History, LoadingModel, LoadingProgram, Observable, PullOff, State, SLOTS,
+};
+use crate::material::plastic::{RegimeLimits, Variant};
 use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
 use std::sync::Arc;
 use std::time::Instant;
@@ -34,6 +42,14 @@ pub struct Results {
     /// The explicit population's curve and its comparison with the
     /// integral, when the scene asks for one.
     pub montecarlo: Option<McResults>,
+    /// The states listed in `[program]` (`separations` or `loads`), on
+    /// approach, in the listed order (empty without a list).
+    pub listed: Vec<State>,
+    /// Contact-regime fractions at the closest approach, when the materials
+    /// give a yield strength.
+    pub regimes: Option<RegimeFractions>,
+    /// The switch's stiction verdict, with `[switch]`.
+    pub stiction: Option<Stiction>,
     /// Where the results lie outside a model's validity (each a sentence
     /// naming the quantity, its value and the bound).
     pub warnings: Vec<String>,
@@ -180,7 +196,96 @@ impl Plan {
             seconds: t0.elapsed().as_secs_f64(),
             evaluations,
             montecarlo,
+            listed: Vec::new(),
+            regimes: None,
+            stiction: None,
             warnings: Vec::new(),
         })
+        .and_then(|r| self.finish(&model, r))
+    }
+
+    /// The parts that follow from the curve: listed states, regime
+    /// fractions, stiction, and their warnings.
+    fn finish(&self, model: &GwModel, mut r: Results) -> Result<Results> {
+        let outputs = self
+            .curve_outputs
+            .clone()
+            .with(Observable::Load)?
+            .with(Observable::Area)?;
+        let outputs = outputs.with(Observable::Count)?;
+        let steps: Vec<(f64, History)> = match &self.listed {
+            Some(ProgramTarget::Separations(xs)) => {
+                xs.iter().map(|&d| (d, History::Approach)).collect()
+            }
+            Some(ProgramTarget::Loads(ps)) => ps
+                .iter()
+                .map(|&p| {
+                    model
+                        .separation_at_load(p, self.start)
+                        .map(|d| (d, History::Approach))
+                        .map_err(|e| e.renamed("program.loads"))
+                })
+                .collect::<Result<_>>()?,
+            _ => Vec::new(),
+        };
+        r.listed = model.states(&steps, &outputs)?;
+        let closest = r.curve.program.closest;
+        if let Some(p) = self.plasticity {
+            let limits = match self.law.source {
+                LawSource::Plastic(v) => {
+                    let c = p.critical_interference(
+                        v,
+                        self.contact.radius,
+                        self.contact.contact_modulus,
+                    );
+                    let (e, f) = v.regime_multiples();
+                    RegimeLimits {
+                        elastic: e * c,
+                        fully_plastic: f * c,
+                    }
+                }
+                // An elastic law: the Kogut–Etsion regimes as the diagnostic.
+                _ => {
+                    let c = p.critical_interference(
+                        Variant::KogutEtsion,
+                        self.contact.radius,
+                        self.contact.contact_modulus,
+                    );
+                    let (e, f) = Variant::KogutEtsion.regime_multiples();
+                    RegimeLimits {
+                        elastic: e * c,
+                        fully_plastic: f * c,
+                    }
+                }
+            };
+            r.regimes = Some(contact_fractions(
+                &limits,
+                self.surface.sigma,
+                closest,
+                self.distribution.as_ref(),
+            ));
+        }
+        if let Some(sw) = &self.switch {
+            let pull = r.pull_off.map_or(0.0, |p| p.load.min(0.0));
+            r.stiction = Some(sw.stiction(pull)?);
+        }
+        if let Some(res) = &self.resistance {
+            if res.interaction() == Interaction::Greenwood {
+                let skipped = r
+                    .curve
+                    .approach
+                    .iter()
+                    .chain(&r.listed)
+                    .filter_map(|s| res.resistance(&self.curve_outputs, &s.totals))
+                    .filter(|c| c.interaction_skipped && c.contacts > 0.0)
+                    .count();
+                if skipped > 0 {
+                    r.warnings.push(format!(
+                        "electrical.interaction = \"greenwood\": left out at {skipped} states where fewer than 2 contacts are expected (the mean field needs several spots)"
+                    ));
+                }
+            }
+        }
+        Ok(r)
     }
 }

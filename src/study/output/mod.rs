@@ -53,9 +53,73 @@ pub struct Summary {
     pub montecarlo: Option<McSummary>,
     /// The plan's decisions: `what: choice (why)`.
     pub plan: Vec<String>,
+    /// Contact resistance at the closest approach (Ohm), with
+    /// `outputs.resistance`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub resistance_ohm: Option<f64>,
+    /// Plasticity diagnostics, when the materials give a yield strength.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plasticity: Option<PlasticitySummary>,
+    /// The switch's stiction verdict, with `[switch]`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stiction: Option<StictionSummary>,
+    /// The states listed in `[program]` (`separations` or `loads`), in the
+    /// listed order.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub states: Option<Vec<StateRow>>,
     /// Where the scene or its results lie outside a model's validity, one
     /// sentence each (empty when none).
     pub warnings: Vec<String>,
+}
+
+/// One listed state (approach).
+#[derive(Debug, Clone, Serialize)]
+pub struct StateRow {
+    /// Separation of the flat from the mean summit height (m).
+    pub separation_m: f64,
+    /// Total load (N, > 0 compressive).
+    #[serde(rename = "load_N")]
+    pub load_n: Option<f64>,
+    /// Real contact area (m^2).
+    pub real_area_m2: Option<f64>,
+    /// Expected number of contacts.
+    pub contacts: Option<f64>,
+    /// Contact resistance (Ohm), with `[electrical]`; `null` without
+    /// contact.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub resistance_ohm: Option<Option<f64>>,
+}
+
+/// Plasticity diagnostics of a run.
+#[derive(Debug, Clone, Serialize)]
+pub struct PlasticitySummary {
+    /// GW plasticity index `psi = (E*/H) sqrt(sigma/R)`.
+    pub plasticity_index: f64,
+    /// Hardness used (Pa).
+    #[serde(rename = "hardness_Pa")]
+    pub hardness_pa: f64,
+    /// Fraction of the contacts at the closest approach that are elastic.
+    pub elastic_fraction: Option<f64>,
+    /// ... elastic-plastic.
+    pub elastic_plastic_fraction: Option<f64>,
+    /// ... fully plastic.
+    pub fully_plastic_fraction: Option<f64>,
+}
+
+/// The stiction verdict (`pull_off_N` negative, tensile).
+#[derive(Debug, Clone, Serialize)]
+pub struct StictionSummary {
+    /// Pull-off of the rough contact (N, <= 0).
+    #[serde(rename = "pull_off_N")]
+    pub pull_off_n: f64,
+    /// Restoring force `k x travel` (N).
+    #[serde(rename = "restoring_force_N")]
+    pub restoring_force_n: f64,
+    /// `k x travel - |pull_off|` (N).
+    #[serde(rename = "margin_N")]
+    pub margin_n: f64,
+    /// Whether the margin is negative.
+    pub sticks: bool,
 }
 
 /// The Monte Carlo part of a summary.
@@ -127,6 +191,45 @@ impl Summary {
                 }
             }),
             plan: plan.decisions.iter().map(|d| d.to_string()).collect(),
+            resistance_ohm: if plan.scene.outputs.resistance {
+                closest.and_then(|s| resistance_of(plan, s))
+            } else {
+                None
+            },
+            plasticity: plan.plasticity.map(|p| {
+                let f = results.regimes.filter(|f| f.contacts_per_summit > 0.0);
+                PlasticitySummary {
+                    plasticity_index: crate::material::plastic::plasticity_index(
+                        plan.contact.contact_modulus,
+                        p.hardness(),
+                        plan.surface.sigma,
+                        plan.surface.radius,
+                    ),
+                    hardness_pa: p.hardness(),
+                    elastic_fraction: f.map(|f| f.elastic),
+                    elastic_plastic_fraction: f.map(|f| f.elastic_plastic),
+                    fully_plastic_fraction: f.map(|f| f.fully_plastic),
+                }
+            }),
+            stiction: results.stiction.map(|s| StictionSummary {
+                pull_off_n: s.pull_off,
+                restoring_force_n: s.restoring_force,
+                margin_n: s.margin,
+                sticks: s.sticks,
+            }),
+            states: plan.listed.as_ref().map(|_| {
+                results
+                    .listed
+                    .iter()
+                    .map(|s| StateRow {
+                        separation_m: s.separation,
+                        load_n: s.load(),
+                        real_area_m2: s.area(),
+                        contacts: s.count(),
+                        resistance_ohm: plan.resistance.as_ref().map(|_| resistance_of(plan, s)),
+                    })
+                    .collect()
+            }),
             warnings: plan
                 .warnings
                 .iter()
@@ -142,19 +245,34 @@ impl Summary {
     }
 }
 
+/// The contact resistance of a state (Ohm), with `[electrical]`; `None`
+/// without contact.
+pub fn resistance_of(plan: &Plan, state: &State) -> Option<f64> {
+    let r = plan
+        .resistance
+        .as_ref()?
+        .resistance(&plan.curve_outputs, &state.totals)?;
+    r.resistance.is_finite().then_some(r.resistance)
+}
+
 /// The curve as CSV: one row per separation and leg, columns
 /// `leg,separation_m,load_N,area_m2,count` (empty cells for outputs not
 /// computed), approach rows from far to near, then retraction rows from
 /// near to far (the order of the program).
 pub fn curve_csv(results: &Results, plan: &Plan) -> String {
-    let mut out = String::from("leg,separation_m,load_N,area_m2,count\n");
     let o = plan.scene.outputs;
+    let mut out = String::from("leg,separation_m,load_N,area_m2,count");
+    out.push_str(if o.resistance {
+        ",resistance_ohm\n"
+    } else {
+        "\n"
+    });
     let cell = |x: Option<f64>, asked: bool| match x {
         Some(v) if asked => format!("{v:e}"),
         _ => String::new(),
     };
     let mut row = |leg: &str, s: &State| {
-        let _ = writeln!(
+        let _ = write!(
             out,
             "{leg},{:e},{},{},{}",
             s.separation,
@@ -162,6 +280,10 @@ pub fn curve_csv(results: &Results, plan: &Plan) -> String {
             cell(s.area(), o.area),
             cell(s.count(), o.count)
         );
+        if o.resistance {
+            let _ = write!(out, ",{}", cell(resistance_of(plan, s), true));
+        }
+        out.push('\n');
     };
     for s in results.curve.approach.iter().rev() {
         row("approach", s);

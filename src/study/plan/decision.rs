@@ -157,6 +157,32 @@ pub enum Decision {
         /// `eta A_n / summits`.
         factor: f64,
     },
+    /// The plasticity index of the surface (materials give a yield
+    /// strength or hardness).
+    Plasticity {
+        /// `psi = (E*/H) sqrt(sigma/R)`.
+        psi: f64,
+        /// Hardness `H` (Pa).
+        hardness: f64,
+        /// Whether the law is elastic-plastic.
+        plastic_law: bool,
+    },
+    /// How the contact resistance is computed.
+    Resistance {
+        /// Spreading model name.
+        spreading: &'static str,
+        /// Whether Greenwood's interaction term is added.
+        greenwood: bool,
+        /// Whether a film resistance is added.
+        film: bool,
+    },
+    /// The states listed in `[program]`.
+    Listed {
+        /// How many.
+        count: usize,
+        /// Whether they are loads (else separations).
+        loads: bool,
+    },
 }
 
 impl Decision {
@@ -171,6 +197,9 @@ impl Decision {
             Decision::PullOff { .. } => "pull-off",
             Decision::HysteresisEnergy { .. } => "hysteresis energy",
             Decision::MonteCarlo { .. } => "montecarlo",
+            Decision::Plasticity { .. } => "plasticity",
+            Decision::Resistance { .. } => "resistance",
+            Decision::Listed { .. } => "listed states",
         }
     }
 
@@ -203,6 +232,11 @@ impl Decision {
             }
             .into(),
             Decision::MonteCarlo { summits, seed, .. } => format!("{summits} summits, seed {seed}"),
+            Decision::Plasticity { psi, .. } => format!("psi = {psi:.3}"),
+            Decision::Resistance { spreading, .. } => format!("{spreading} spots"),
+            Decision::Listed { count, loads } => {
+                format!("{count} {}", if *loads { "loads" } else { "separations" })
+            }
         }
     }
 
@@ -283,6 +317,39 @@ impl Decision {
                 } else {
                     String::new()
                 }
+            ),
+            Decision::Plasticity {
+                psi,
+                hardness,
+                plastic_law,
+            } => format!(
+                "GW plasticity index (E*/H) sqrt(sigma/R) with H = {hardness:.4e} Pa: {}; {}",
+                if *psi > 1.0 {
+                    "above 1, most contacts yield"
+                } else {
+                    "below 1, most contacts stay elastic"
+                },
+                if *plastic_law {
+                    "the elastic-plastic law follows them (regime fractions at the closest approach in the summary)"
+                } else {
+                    "the law is elastic"
+                }
+            ),
+            Decision::Resistance {
+                greenwood, film, ..
+            } => format!(
+                "each contact spot from the law's contact radius, summed in parallel{}{}",
+                if *greenwood {
+                    " plus Greenwood's mean-field interaction in the square apparent area (left out where fewer than 2 contacts are expected)"
+                } else {
+                    " (independent spots, no interaction)"
+                },
+                if *film { ", with a film resistance per spot" } else { "" }
+            ),
+            Decision::Listed { loads, .. } => format!(
+                "reported on approach in the listed order{}; the curve runs to the {}",
+                if *loads { ", each separation solved for its load" } else { "" },
+                if *loads { "largest load" } else { "closest separation" }
             ),
         }
     }

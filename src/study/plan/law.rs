@@ -6,8 +6,9 @@ use super::PlanMode;
 use crate::error::{Error, Result};
 use crate::law::errors::LawErrorTable;
 use crate::law::{AsperityLaw, LawKind};
+use crate::material::plastic::Variant;
 use crate::material::AsperityContact;
-use crate::study::scene::Scene;
+use crate::study::scene::{LawFamily, Scene};
 use std::sync::Arc;
 
 /// Where the plan's law comes from.
@@ -17,6 +18,20 @@ pub enum LawSource {
     Kind(LawKind),
     /// The law calibrated from the full Lennard-Jones sphere solver.
     Calibrated,
+    /// An elastic-plastic law (with JKR adhesion on the unloading shape
+    /// when `w > 0`).
+    Plastic(Variant),
+    /// JKR on an axisymmetric profile (`law.profile`).
+    Shaped,
+}
+
+impl LawSource {
+    /// Whether the retraction leg can differ from the approach leg: adhesive
+    /// hysteresis or plastic history.
+    pub fn has_history(&self, law: &dyn AsperityLaw) -> bool {
+        matches!(self, LawSource::Plastic(_))
+            || law.attach_interference() != law.detach_interference()
+    }
 }
 
 /// The law a plan uses.
@@ -48,6 +63,11 @@ pub(super) fn choose(
     let table = LawErrorTable::embedded();
     let w = contact.adhesion.work();
     let kind_name = scene.law.kind.as_str();
+    match scene.law.family()? {
+        LawFamily::Plastic(v) => return plastic(scene, contact, v, decisions),
+        LawFamily::Shaped => return shaped(scene, contact, decisions),
+        LawFamily::Elastic => {}
+    }
     if kind_name == "calibrated" && w > 0.0 {
         return calibrated(contact, preview, decisions);
     }
@@ -146,6 +166,72 @@ fn calibrated(
         name: "calibrated".into(),
         source: LawSource::Calibrated,
         law,
+        measured_error: None,
+    })
+}
+
+/// An elastic-plastic law: the variant's loading fit, elastic unloading from
+/// the flattened shape, and JKR adhesion on that shape when `w > 0`.
+fn plastic(
+    scene: &Scene,
+    contact: &AsperityContact,
+    variant: Variant,
+    decisions: &mut Vec<Decision>,
+) -> Result<LawChoice> {
+    use crate::law::plastic::{build, AdhesivePlastic, PlasticLaw};
+    let plasticity = scene.plasticity()?.ok_or_else(|| {
+        Error::invalid(
+            "materials.yield_strength",
+            format!(
+                "the {} law needs the yield strength of the softer body (Pa)",
+                variant.name()
+            ),
+        )
+    })?;
+    let loading = build(variant, contact.radius, contact.contact_modulus, plasticity)
+        .map_err(|e| e.in_table("materials"))?;
+    let w = contact.adhesion.work();
+    let law: Arc<dyn AsperityLaw> = if w > 0.0 {
+        Arc::new(AdhesivePlastic::new(loading.as_loading(), w)?)
+    } else {
+        PlasticLaw::as_law(loading)
+    };
+    decisions.push(Decision::Law {
+        name: variant.name().into(),
+        reason: LawReason::Given,
+        mu: contact.tabor(),
+        lambda: contact.lambda(),
+    });
+    Ok(LawChoice {
+        name: variant.name().into(),
+        source: LawSource::Plastic(variant),
+        law,
+        measured_error: None,
+    })
+}
+
+/// JKR on the scene's axisymmetric profile (Chebyshev-tabulated, exact
+/// beyond the table).
+fn shaped(
+    scene: &Scene,
+    contact: &AsperityContact,
+    decisions: &mut Vec<Decision>,
+) -> Result<LawChoice> {
+    let profile = scene.law.profile(contact.radius)?;
+    let name = format!("shaped ({})", profile.name());
+    let law =
+        crate::law::shaped::Shaped::new(profile, contact.contact_modulus, contact.adhesion.work())
+            .map_err(|e| e.in_table("law"))?;
+    decisions.push(Decision::Law {
+        name: name.clone(),
+        reason: LawReason::Given,
+        mu: contact.tabor(),
+        lambda: contact.lambda(),
+    });
+    Ok(LawChoice {
+        name,
+        source: LawSource::Shaped,
+        law: Arc::new(law),
         measured_error: None,
     })
 }

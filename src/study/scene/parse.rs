@@ -87,38 +87,8 @@ impl Scene {
         }
         non_negative("adhesion.w", self.adhesion.w)?;
         positive("adhesion.z0", self.adhesion.z0)?;
-        const LAWS: [&str; 7] = ["auto", "hertz", "dmt", "jkr", "maugis", "cos", "calibrated"];
-        if !LAWS.contains(&self.law.kind.as_str()) {
-            return Err(Error::invalid(
-                "law.kind",
-                format!(
-                    "unknown law {:?}; known: {}",
-                    self.law.kind,
-                    LAWS.join(", ")
-                ),
-            ));
-        }
+        self.validate_features()?;
         let p = &self.program;
-        match (p.closest_separation, p.max_load) {
-            (Some(d), None) => {
-                finite("program.closest_separation", d)?;
-            }
-            (None, Some(load)) => {
-                positive("program.max_load", load)?;
-            }
-            (Some(_), Some(_)) => {
-                return Err(Error::invalid(
-                    "program",
-                    "give closest_separation or max_load, not both",
-                ))
-            }
-            (None, None) => {
-                return Err(Error::invalid(
-                    "program",
-                    "missing closest_separation or max_load (one is required)",
-                ))
-            }
-        }
         if let Some(start) = p.start_separation {
             finite("program.start_separation", start)?;
             if let Some(d) = p.closest_separation {
