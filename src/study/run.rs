@@ -7,9 +7,9 @@ use crate::electrical::{Interaction, Stiction};
 use crate::error::Result;
 use crate::gw::GwModel;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
-use crate::law::AsperityLaw;
+use crate::law::{AsperityLaw, LawKind};
 use crate::loading::{
-    Curve, History, LoadingModel, LoadingProgram, Observable, PullOff, State, SLOTS,
+    Curve, History, LoadingModel, LoadingProgram, Observable, Observables, PullOff, State, SLOTS,
 };
 use crate::material::plastic::{RegimeLimits, Variant};
 use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
@@ -50,6 +50,9 @@ pub struct Results {
     pub regimes: Option<RegimeFractions>,
     /// The switch's stiction verdict, with `[switch]`.
     pub stiction: Option<Stiction>,
+    /// For an elastic-plastic law: the elastic (Hertz) approach states at
+    /// the same separations, for the load–area comparison.
+    pub elastic_approach: Option<Vec<State>>,
     /// Where the results lie outside a model's validity (each a sentence
     /// naming the quantity, its value and the bound).
     pub warnings: Vec<String>,
@@ -199,6 +202,7 @@ impl Plan {
             listed: Vec::new(),
             regimes: None,
             stiction: None,
+            elastic_approach: None,
             warnings: Vec::new(),
         })
         .and_then(|r| self.finish(&model, r))
@@ -264,6 +268,18 @@ impl Plan {
                 closest,
                 self.distribution.as_ref(),
             ));
+        }
+        if matches!(self.law.source, LawSource::Plastic(_)) {
+            let hertz: Arc<dyn AsperityLaw> = Arc::from(LawKind::Hertz.build(&self.contact)?);
+            let elastic = self.model_with(hertz)?;
+            let steps: Vec<(f64, History)> = r
+                .curve
+                .approach
+                .iter()
+                .map(|s| (s.separation, History::Approach))
+                .collect();
+            r.elastic_approach =
+                Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
         }
         if let Some(sw) = &self.switch {
             let pull = r.pull_off.map_or(0.0, |p| p.load.min(0.0));

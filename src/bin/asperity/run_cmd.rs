@@ -117,6 +117,50 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
             m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))
         );
     }
+    if let Some(r) = summary.resistance_ohm {
+        println!("  resistance         {r:.4e} Ohm at the closest approach");
+    }
+    if let Some(p) = &summary.plasticity {
+        let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:.1} %", 100.0 * v));
+        println!(
+            "  plasticity index   {:.3} (H = {:.3e} Pa); contacts at the closest approach: elastic {}, elastic-plastic {}, fully plastic {}",
+            p.plasticity_index,
+            p.hardness_pa,
+            pct(p.elastic_fraction),
+            pct(p.elastic_plastic_fraction),
+            pct(p.fully_plastic_fraction)
+        );
+    }
+    if let Some(s) = &summary.stiction {
+        println!(
+            "  stiction           pull-off {:.4e} N, spring k x travel {:.4e} N, margin {:.4e} N: {}",
+            s.pull_off_n,
+            s.restoring_force_n,
+            s.margin_n,
+            if s.sticks { "STICKS (margin < 0)" } else { "reopens" }
+        );
+    }
+    if let Some(states) = &summary.states {
+        println!("  listed states (approach):");
+        println!(
+            "    {:>13} {:>13} {:>13} {:>11} {:>13}",
+            "separation m", "load N", "area m^2", "contacts", "resistance Ohm"
+        );
+        for st in states {
+            println!(
+                "    {:>13.5e} {:>13.5e} {:>13.5e} {:>11.4} {:>13}",
+                st.separation_m,
+                st.load_n.unwrap_or(f64::NAN),
+                st.real_area_m2.unwrap_or(f64::NAN),
+                st.contacts.unwrap_or(f64::NAN),
+                match st.resistance_ohm {
+                    Some(Some(r)) => format!("{r:.5e}"),
+                    Some(None) => "no contact".into(),
+                    None => "-".into(),
+                }
+            );
+        }
+    }
     if !summary.warnings.is_empty() {
         println!("  warnings:");
         for w in &summary.warnings {

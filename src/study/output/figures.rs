@@ -71,6 +71,15 @@ pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<P
         chart.1.write_svg(&path, 800, 560)?;
         written.push(path);
     }
+    for (name, chart, loglog) in super::feature_charts(plan, results) {
+        let path = dir.join(&name);
+        if loglog {
+            chart.write_svg_loglog(&path, 800, 560)?;
+        } else {
+            chart.write_svg(&path, 800, 560)?;
+        }
+        written.push(path);
+    }
     Ok(written)
 }
 

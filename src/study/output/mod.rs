@@ -1,7 +1,9 @@
 //! Result tables (the curve as CSV, a JSON summary) and the figures.
 
+mod feature_figures;
 mod figures;
 
+pub use feature_figures::{feature_charts, FeatureChart};
 pub use figures::{charts, si_prefix, si_prefix_area, write_outputs};
 
 use crate::loading::State;
