@@ -65,6 +65,12 @@ fn output_columns(scene: &Scene) -> Vec<&'static str> {
             "mc_max_abs_z",
         ]);
     }
+    if o.resistance {
+        cols.push("resistance_ohm");
+    }
+    if scene.switch.is_some() {
+        cols.extend(["stiction_margin_N", "sticks"]);
+    }
     cols
 }
 
@@ -118,6 +124,10 @@ fn point_row(
                         .as_ref()
                         .and_then(|m| m.max_load_standard_error),
                     "mc_pull_off_N" => s.montecarlo.as_ref().and_then(|m| m.pull_off_load),
+                    "resistance_ohm" => s.resistance_ohm,
+                    "stiction_margin_N" => s.stiction.as_ref().map(|t| t.margin_n),
+                    // 1 when the switch sticks (margin < 0), else 0.
+                    "sticks" => s.stiction.as_ref().map(|t| f64::from(u8::from(t.sticks))),
                     _ => s.montecarlo.as_ref().and_then(|m| m.max_abs_z),
                 }));
             }
