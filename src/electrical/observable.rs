@@ -98,6 +98,11 @@ impl ResistanceObservables {
         ))
     }
 
+    /// The per-spot resistance law.
+    pub fn spot(&self) -> &SpotResistance {
+        &self.spot
+    }
+
     /// The interaction asked for.
     pub fn interaction(&self) -> Interaction {
         self.interaction

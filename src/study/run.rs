@@ -3,7 +3,7 @@
 use super::plan::LawSource;
 use super::plan::{McPlan, Plan};
 use super::scene::ProgramTarget;
-use crate::electrical::{Interaction, Stiction};
+use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction};
 use crate::error::Result;
 use crate::gw::GwModel;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
@@ -75,7 +75,15 @@ pub struct McResults {
     pub pull_off: Option<PullOff>,
     /// Wall-clock time of drawing and summing (s).
     pub seconds: f64,
+    /// With `[electrical]`: the sample's own spots at the closest
+    /// separation, at random positions in the area the sample stands for
+    /// (`None` without contact or beyond [`MAX_SAMPLE_SPOTS`] spots).
+    pub spots: Option<SampleResistance>,
 }
+
+/// Most contact spots of a population for which explicit-position
+/// resistances are computed (Greenwood's formula is `O(n^2)`).
+pub const MAX_SAMPLE_SPOTS: usize = 20_000;
 
 /// Draws the plan's population and sums it over `program`.
 fn run_montecarlo(
@@ -93,7 +101,7 @@ fn run_montecarlo(
         None => SummitLaw::fixed(run_law.clone(), mc.law.reference_radius())?,
         Some(_) => mc.law.clone(),
     };
-    let summer = MonteCarlo::new(population, law)?;
+    let summer = MonteCarlo::new(population.clone(), law.clone())?;
     let mc_curve = summer
         .curve(&curve.program, &plan.curve_outputs)?
         .scaled(mc.factor);
@@ -119,7 +127,22 @@ fn run_montecarlo(
         .flatten()
         .map(|v| v.abs())
         .reduce(f64::max);
+    let spots = match &plan.resistance {
+        Some(res) => {
+            let side = (plan.surface.nominal_area / mc.factor).sqrt();
+            let seed = crate::numeric::mix::splitmix64(mc.spec.seed ^ 0x5350_4f54); // "SPOT"
+            let found = population_spots(&population, &law, curve.program.closest, side, seed)?;
+            match found {
+                Some(s) if s.len() <= MAX_SAMPLE_SPOTS => {
+                    Some(SampleResistance::new(&s, res.spot())?)
+                }
+                _ => None,
+            }
+        }
+        None => None,
+    };
     Ok(McResults {
+        spots,
         pull_off: mc_curve.sampled_pull_off(),
         curve: mc_curve,
         z,

@@ -112,6 +112,16 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
             show(m.pull_off_load, "N"),
             show(m.integral_sampled_pull_off_load, "N")
         );
+        if let Some(s) = &m.spots {
+            println!(
+                "    sample's spots   {} at random positions in a {:.3e} m square: parallel {:.4e} Ohm, Greenwood {:.4e} Ohm, exact {}",
+                s.count,
+                s.side_m,
+                s.parallel_ohm,
+                s.greenwood_ohm,
+                s.exact_ohm.map_or("- (more than 3000 spots)".into(), |r| format!("{r:.4e} Ohm"))
+            );
+        }
         println!(
             "    worst deviation from the integral: {} standard errors (< 5 expected)",
             m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))

@@ -50,7 +50,7 @@ pub fn feature_charts(plan: &Plan, results: &Results) -> Vec<FeatureChart> {
     if let Some(elastic) = &results.elastic_approach {
         let c = &results.curve;
         let hertz = Curve {
-            program: c.program.clone(),
+            program: c.program,
             approach: elastic.clone(),
             retract: Vec::new(),
         };

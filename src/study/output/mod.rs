@@ -145,6 +145,25 @@ pub struct McSummary {
     pub max_abs_z: Option<f64>,
     /// Wall-clock time of drawing and summing (s).
     pub seconds: f64,
+    /// With `[electrical]`: the sample's own spots at the closest
+    /// separation, at random positions in the area it stands for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spots: Option<SampleSpotsSummary>,
+}
+
+/// Resistances of a population's explicit spots (Ohm).
+#[derive(Debug, Clone, Serialize)]
+pub struct SampleSpotsSummary {
+    /// Number of spots (summits in contact).
+    pub count: usize,
+    /// Side of the square the spots were placed in (m): `sqrt(summits/eta)`.
+    pub side_m: f64,
+    /// Independent parallel spots.
+    pub parallel_ohm: f64,
+    /// Greenwood's formula for the explicit positions.
+    pub greenwood_ohm: f64,
+    /// The exact equal-potential solution (`null` above 3000 spots).
+    pub exact_ohm: Option<f64>,
 }
 
 impl Summary {
@@ -190,6 +209,16 @@ impl Summary {
                         .map(|p| p.load),
                     max_abs_z: m.max_abs_z,
                     seconds: m.seconds,
+                    spots: m.spots.map(|s| SampleSpotsSummary {
+                        count: s.spots,
+                        side_m: plan
+                            .montecarlo
+                            .as_ref()
+                            .map_or(f64::NAN, |p| (plan.surface.nominal_area / p.factor).sqrt()),
+                        parallel_ohm: s.parallel,
+                        greenwood_ohm: s.greenwood,
+                        exact_ohm: s.exact,
+                    }),
                 }
             }),
             plan: plan.decisions.iter().map(|d| d.to_string()).collect(),
