@@ -121,6 +121,21 @@ fn listed_loads_are_reached_and_resistance_and_stiction_reported() {
     let exponent = (last_r / r0).ln() / (loads[5] / loads[0]).ln();
     assert!(exponent < -0.5 && exponent > -1.0, "exponent {exponent}");
     assert!(rel(f(&j["resistance_ohm"]), last_r) < 1e-12);
+    // Holm's phi-theta with Wiedemann–Franz: T = sqrt(T0^2 + U^2/(4L)),
+    // L = (pi^2/3)(k_B/e)^2 (exact SI constants), U = I R.
+    let kb_e = 1.380_649e-23 / 1.602_176_634e-19;
+    let lorenz = std::f64::consts::PI.powi(2) / 3.0 * kb_e * kb_e;
+    let h = &j["heating"];
+    let u = 0.1 * last_r;
+    assert!(rel(f(&h["contact_voltage_V"]), u) < 1e-12);
+    let t = (293.15f64.powi(2) + u * u / (4.0 * lorenz)).sqrt();
+    assert!(rel(f(&h["max_temperature_K"]), t) < 1e-12);
+    for st in states {
+        let u = 0.1 * f(&st["resistance_ohm"]);
+        assert!(rel(f(&st["contact_voltage_V"]), u) < 1e-12);
+        let t = (293.15f64.powi(2) + u * u / (4.0 * lorenz)).sqrt();
+        assert!(rel(f(&st["max_temperature_K"]), t) < 1e-12);
+    }
     let s = &j["stiction"];
     let (pull, restoring, margin) = (
         f(&s["pull_off_N"]),

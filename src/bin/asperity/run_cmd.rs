@@ -130,6 +130,18 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
     if let Some(r) = summary.resistance_ohm {
         println!("  resistance         {r:.4e} Ohm at the closest approach");
     }
+    if let Some(h) = &summary.heating {
+        let show = |x: Option<f64>, unit: &str| {
+            x.map_or("- (no contact)".into(), |v| format!("{v:.4e} {unit}"))
+        };
+        println!(
+            "  heating            {:.3e} A: contact voltage {}, peak temperature {} (bulk {:.2} K)",
+            h.current_a,
+            show(h.contact_voltage_v, "V"),
+            show(h.max_temperature_k, "K"),
+            h.bulk_temperature_k
+        );
+    }
     if let Some(p) = &summary.plasticity {
         let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:.1} %", 100.0 * v));
         println!(

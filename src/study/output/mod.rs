@@ -59,6 +59,9 @@ pub struct Summary {
     /// `outputs.resistance`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub resistance_ohm: Option<f64>,
+    /// Joule heating at the closest approach, with `electrical.current`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heating: Option<HeatingSummary>,
     /// Plasticity diagnostics, when the materials give a yield strength.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub plasticity: Option<PlasticitySummary>,
@@ -90,6 +93,29 @@ pub struct StateRow {
     /// contact.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub resistance_ohm: Option<Option<f64>>,
+    /// Contact voltage `I R` (V), with `electrical.current`.
+    #[serde(rename = "contact_voltage_V", skip_serializing_if = "Option::is_none")]
+    pub contact_voltage_v: Option<Option<f64>>,
+    /// Peak contact temperature (K), with `electrical.current`.
+    #[serde(rename = "max_temperature_K", skip_serializing_if = "Option::is_none")]
+    pub max_temperature_k: Option<Option<f64>>,
+}
+
+/// Joule heating of the contact at the closest approach.
+#[derive(Debug, Clone, Serialize)]
+pub struct HeatingSummary {
+    /// Current (A).
+    #[serde(rename = "current_A")]
+    pub current_a: f64,
+    /// Bulk temperature (K).
+    #[serde(rename = "bulk_temperature_K")]
+    pub bulk_temperature_k: f64,
+    /// Contact voltage `I R` (V).
+    #[serde(rename = "contact_voltage_V")]
+    pub contact_voltage_v: Option<f64>,
+    /// Peak contact temperature `sqrt(T0^2 + U^2/(4L))` (K).
+    #[serde(rename = "max_temperature_K")]
+    pub max_temperature_k: Option<f64>,
 }
 
 /// Plasticity diagnostics of a run.
@@ -227,6 +253,15 @@ impl Summary {
             } else {
                 None
             },
+            heating: plan.heating.map(|(i, h)| {
+                let r = closest.and_then(|s| resistance_of(plan, s));
+                HeatingSummary {
+                    current_a: i,
+                    bulk_temperature_k: h.bulk_temperature(),
+                    contact_voltage_v: r.map(|r| i * r),
+                    max_temperature_k: r.and_then(|r| h.max_temperature_at(i, r).ok()),
+                }
+            }),
             plasticity: plan.plasticity.map(|p| {
                 let f = results.regimes.filter(|f| f.contacts_per_summit > 0.0);
                 PlasticitySummary {
@@ -258,6 +293,12 @@ impl Summary {
                         real_area_m2: s.area(),
                         contacts: s.count(),
                         resistance_ohm: plan.resistance.as_ref().map(|_| resistance_of(plan, s)),
+                        contact_voltage_v: plan
+                            .heating
+                            .map(|(i, _)| resistance_of(plan, s).map(|r| i * r)),
+                        max_temperature_k: plan.heating.map(|(i, h)| {
+                            resistance_of(plan, s).and_then(|r| h.max_temperature_at(i, r).ok())
+                        }),
                     })
                     .collect()
             }),

@@ -217,6 +217,12 @@ fn shaped(
     contact: &AsperityContact,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
+    if contact.adhesion.work() == 0.0 {
+        return Err(Error::invalid(
+            "adhesion.w",
+            "kind = \"shaped\" is JKR adhesion on the profile: it needs w > 0",
+        ));
+    }
     let profile = scene.law.profile(contact.radius)?;
     let name = format!("shaped ({})", profile.name());
     let law =

@@ -33,7 +33,7 @@ pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
 pub use law::{LawChoice, LawSource};
 pub use montecarlo::McPlan;
 
-use crate::electrical::{Interaction, ResistanceObservables, Switch};
+use crate::electrical::{Heating, Interaction, ResistanceObservables, Switch};
 use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
 use crate::heights::HeightDistribution;
@@ -127,6 +127,9 @@ pub struct Plan {
     pub resistance: Option<ResistanceObservables>,
     /// The switch spring, with `[switch]`.
     pub switch: Option<Switch>,
+    /// The current (A) and Holm's heating relation, with
+    /// `electrical.current`.
+    pub heating: Option<(f64, Heating)>,
     /// Where the scene lies outside a model's validity, found while
     /// planning (the run adds its own, [`crate::study::Results::warnings`]);
     /// the summary lists both.
@@ -257,6 +260,10 @@ impl Plan {
                 Some(s) => Some(
                     Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch"))?,
                 ),
+                None => None,
+            },
+            heating: match &scene.electrical {
+                Some(e) => e.heating()?,
                 None => None,
             },
             warnings,

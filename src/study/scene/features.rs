@@ -5,7 +5,7 @@
 
 use super::schema::{ElectricalSpec, LawSpec, Scene, MAX_LISTED_STATES};
 use crate::axisym::Profile;
-use crate::electrical::{Conductor, Interaction, SpotResistance, Spreading, Switch};
+use crate::electrical::{Conductor, Heating, Interaction, SpotResistance, Spreading, Switch};
 use crate::error::{finite, non_negative, positive, Allowed, Error, Result};
 use crate::material::plastic::{Plasticity, Variant};
 
@@ -293,6 +293,7 @@ impl Scene {
         if let Some(e) = &self.electrical {
             e.spot_resistance()?;
             e.interaction()?;
+            e.heating()?;
         }
         if self.outputs.resistance && self.electrical.is_none() {
             return Err(Error::invalid(
@@ -377,6 +378,31 @@ impl ElectricalSpec {
             Some("film_resistance") => e.renamed("electrical.film_resistance"),
             _ => e.in_table("electrical"),
         })
+    }
+
+    /// The current (A) and the heating relation, when `current` is given.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `electrical.current` or
+    /// `electrical.bulk_temperature`; [`Error::Invalid`] naming
+    /// `electrical.bulk_temperature` given without a current.
+    pub fn heating(&self) -> Result<Option<(f64, Heating)>> {
+        match (self.current, self.bulk_temperature) {
+            (Some(i), t) => {
+                let i = positive("electrical.current", i)?;
+                let h = match t {
+                    Some(t) => Heating::new(positive("electrical.bulk_temperature", t)?)
+                        .map_err(|e| e.renamed("electrical.bulk_temperature"))?,
+                    None => Heating::default(),
+                };
+                Ok(Some((i, h)))
+            }
+            (None, Some(_)) => Err(Error::invalid(
+                "electrical.bulk_temperature",
+                "applies only with electrical.current (the heating needs a current)",
+            )),
+            (None, None) => Ok(None),
+        }
     }
 
     /// The interaction choice.

@@ -83,6 +83,15 @@ pub struct ElectricalSpec {
     /// `film_resistance / (pi a^2)`. Default 0.
     #[serde(default)]
     pub film_resistance: f64,
+    /// Current through the contact (A), > 0, optional: the summary and the
+    /// listed states then give the contact voltage `I R` and the peak
+    /// contact temperature (Holm's phi-theta relation with the
+    /// Wiedemann–Franz law).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub current: Option<f64>,
+    /// Bulk temperature (K), > 0, for the heating; default 293.15.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bulk_temperature: Option<f64>,
 }
 
 fn default_spreading() -> String {
