@@ -50,8 +50,9 @@ pub struct Results {
     pub regimes: Option<RegimeFractions>,
     /// The switch's stiction verdict, with `[switch]`.
     pub stiction: Option<Stiction>,
-    /// For an elastic-plastic law: the elastic (Hertz) approach states at
-    /// the same separations, for the load–area comparison.
+    /// For an elastic-plastic law: the approach states of the elastic law it
+    /// reduces to as `psi -> 0` (JKR with adhesion, Hertz without) at the
+    /// same separations, for the load–area comparison.
     pub elastic_approach: Option<Vec<State>>,
     /// Where the results lie outside a model's validity (each a sentence
     /// naming the quantity, its value and the bound).
@@ -293,8 +294,15 @@ impl Plan {
             ));
         }
         if matches!(self.law.source, LawSource::Plastic(_)) {
-            let hertz: Arc<dyn AsperityLaw> = Arc::from(LawKind::Hertz.build(&self.contact)?);
-            let elastic = self.model_with(hertz)?;
+            // The elastic law the plastic one reduces to as psi -> 0: JKR
+            // with adhesion, Hertz without.
+            let kind = if self.contact.adhesion.work() > 0.0 {
+                LawKind::Jkr
+            } else {
+                LawKind::Hertz
+            };
+            let law: Arc<dyn AsperityLaw> = Arc::from(kind.build(&self.contact)?);
+            let elastic = self.model_with(law)?;
             let steps: Vec<(f64, History)> = r
                 .curve
                 .approach

@@ -1,6 +1,7 @@
 //! Charts of the optional features: resistance against force (log-log)
 //! with `[electrical]`, and load against real area for an elastic-plastic
-//! law beside the elastic (Hertz) summits.
+//! law beside the elastic summits it reduces to as `psi -> 0` (JKR with
+//! adhesion, Hertz without).
 
 use super::resistance_of;
 use crate::loading::Curve;
@@ -58,7 +59,14 @@ pub fn feature_charts(plan: &Plan, results: &Results) -> Vec<FeatureChart> {
             &format!("{title}: load against real area, elastic vs elastic-plastic"),
             &[
                 (plan.law.name.clone(), c.clone()),
-                ("hertz (elastic)".into(), hertz),
+                (
+                    if plan.contact.adhesion.work() > 0.0 {
+                        "jkr (elastic)".into()
+                    } else {
+                        "hertz (elastic)".into()
+                    },
+                    hertz,
+                ),
             ],
         );
         out.push(("load_area_plastic.svg".into(), chart, false));
