@@ -512,3 +512,38 @@ fn a_population_places_its_own_spots() {
     }
     assert!((spots.side_m - 1e-4).abs() < 1e-18);
 }
+
+#[test]
+fn plastic_laws_scale_with_the_radius_as_documented() {
+    // RadiusScaling::PLASTIC = (1, 2, 1): delta ~ R, P ~ R^2, a ~ R at
+    // fixed E*, Y, H; checked for every variant across its breakpoints.
+    use asperity::law::plastic::build;
+    use asperity::law::RadiusScaling;
+    use asperity::material::plastic::{Plasticity, Variant};
+    let s = RadiusScaling::PLASTIC;
+    let estar = 47.96e9;
+    for v in Variant::ALL {
+        for rho in [0.3, 2.0, 7.0] {
+            let a = build(v, 1e-6, estar, Plasticity::gold()).unwrap();
+            let b = build(v, rho * 1e-6, estar, Plasticity::gold()).unwrap();
+            let wc = a.critical_interference();
+            for m in [0.5, 1.5, 3.0, 20.0, 80.0, 150.0] {
+                let d = m * wc;
+                let sa = a.state(d, Branch::Approach);
+                let sb = b.state(d * rho.powf(s.interference), Branch::Approach);
+                assert!(
+                    rel(sb.load, sa.load * rho.powf(s.load)) < 1e-12,
+                    "{v:?} {rho} {m}"
+                );
+                assert!(rel(sb.radius, sa.radius * rho.powf(s.contact_radius)) < 1e-12);
+            }
+        }
+    }
+    // A population with lognormal radii runs with a non-adhesive plastic law.
+    let text = with(&example("gold-rf-mems-plastic.toml"), "w = 0.5", "w = 0.0")
+        + "\n[montecarlo]\nsummits = 2000\nradius_log_std = 0.3\n";
+    let scene = Scene::from_toml(&text).unwrap();
+    let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
+    let r = plan.run().unwrap();
+    assert!(r.montecarlo.unwrap().curve.approach[0].load().unwrap() > 0.0);
+}
