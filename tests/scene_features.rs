@@ -547,3 +547,50 @@ fn plastic_laws_scale_with_the_radius_as_documented() {
     let r = plan.run().unwrap();
     assert!(r.montecarlo.unwrap().curve.approach[0].load().unwrap() > 0.0);
 }
+
+#[test]
+fn a_tabulated_profile_from_a_scene_follows_its_analytic_shape() {
+    // profile_r/profile_f sampled from the cone r tan(beta), tan(beta) =
+    // 0.3, out to 40 um: PCHIP reproduces linear data exactly, so the
+    // scene's curve is the cone's to the scene's rtol 1e-2 (both laws are
+    // Chebyshev tables to that tolerance).
+    let r: Vec<f64> = (0..=20).map(|i| i as f64 * 2e-6).collect();
+    let f: Vec<f64> = r.iter().map(|x| 0.3 * x).collect();
+    let list = |v: &[f64]| {
+        v.iter()
+            .map(|x| format!("{x:e}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let cone = example("conical-summits.toml");
+    let tab = with(
+        &with(&cone, "profile = \"cone\"", "profile = \"tabulated\""),
+        "tan_angle = 0.3",
+        &format!("profile_r = [{}]\nprofile_f = [{}]", list(&r), list(&f)),
+    );
+    let run = |t: &str| {
+        let s = Scene::from_toml(t).unwrap();
+        let p = Plan::new(&s, PlanMode::Planned).unwrap();
+        let r = p.run().unwrap();
+        (
+            r.max_load().unwrap(),
+            r.pull_off.unwrap().load,
+            p.law.name.clone(),
+        )
+    };
+    let (a, pa, name) = run(&tab);
+    let (b, pb, _) = run(&cone);
+    assert_eq!(name, "shaped (tabulated)");
+    assert!(rel(a, b) < 1e-2, "max load {a} vs {b}");
+    assert!(rel(pa, pb) < 1e-2, "pull-off {pa} vs {pb}");
+    // A non-monotone table is refused, naming the field.
+    let mut bad = f.clone();
+    bad[10] = bad[12];
+    let text = with(
+        &with(&cone, "profile = \"cone\"", "profile = \"tabulated\""),
+        "tan_angle = 0.3",
+        &format!("profile_r = [{}]\nprofile_f = [{}]", list(&r), list(&bad)),
+    );
+    let e = Scene::from_toml(&text).unwrap_err();
+    assert!(e.field().unwrap_or("").starts_with("law.profile"), "{e}");
+}
