@@ -58,3 +58,49 @@ fn the_paraboloid_reproduces_maugis_at_1e_10() {
     }
     println!("worst relative error against law::Maugis: {worst:.2e}");
 }
+
+/// `lambda = sigma0/(E* tan beta)`: the cone's range `h0 = w/sigma0` over
+/// its JKR elastic displacement `w/(E* tan beta)`, inverted.
+fn cone(lambda: f64) -> AxisymMd {
+    let (e, w, t) = (1e9, 0.05, 0.2);
+    AxisymMd::new(Profile::cone(t).unwrap(), e, w, lambda * e * t).unwrap()
+}
+
+#[test]
+fn the_cone_tends_to_jkr_as_the_range_shrinks() {
+    let (e, w, t) = (1e9, 0.05, 0.2);
+    let jkr = AxisymJkr::new(Profile::cone(t).unwrap(), e, w).unwrap();
+    let (pj, qj) = (jkr.pull_off_load_control(), jkr.jump_out_displacement_control());
+    let mut last = (f64::INFINITY, f64::INFINITY);
+    for lambda in [10.0, 100.0, 1000.0] {
+        let md = cone(lambda);
+        let (p, q) = (md.pull_off_load_control(), md.jump_out_displacement_control());
+        let d = (
+            rel(p.load, pj.load).max(rel(p.radius, pj.radius)),
+            rel(q.load, qj.load)
+                .max(rel(q.radius, qj.radius))
+                .max(rel(q.interference, qj.interference)),
+        );
+        println!("cone lambda {lambda}: pull-off {:.2e}, jump-out {:.2e}", d.0, d.1);
+        // Second order in 1/lambda (measured 8.4e-4, 8.4e-6, 8.5e-8 and
+        // 1.0e-2, 1.0e-4, 1.0e-6): 100-fold per decade.
+        assert!(d.0 < 0.02 * last.0 && d.1 < 0.02 * last.1, "{lambda}: {d:?}");
+        assert!(d.0 < 1e-1 / (lambda * lambda) && d.1 < 2.0 / (lambda * lambda));
+        last = d;
+    }
+}
+
+#[test]
+fn the_cone_tends_to_the_rigid_derjaguin_force_as_the_range_grows() {
+    let (w, t) = (0.05, 0.2);
+    let mut last = f64::INFINITY;
+    for lambda in [1e-1, 1e-2, 1e-3] {
+        let md = cone(lambda);
+        let rigid = -PI * w * md.range() / (t * t);
+        let d = rel(md.pull_off_load_control().load, rigid);
+        println!("cone lambda {lambda}: pull-off / rigid - 1 = {d:.2e}");
+        // First order in lambda (measured 0.37, 3.5e-2, 3.5e-3).
+        assert!(d < 0.15 * last && d < 4.0 * lambda, "{lambda}: {d}");
+        last = d;
+    }
+}

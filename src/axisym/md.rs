@@ -513,3 +513,48 @@ fn too_deep(what: &str) -> Error {
         format!("the Maugis-Dugdale {what} lies outside the scanned range of contact radii"),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_shape_gap_matches_its_closed_forms() {
+        // Cone: G = tan(beta) (s - a phi); paraboloid: ((c^2 - 2a^2) phi + a s)/(pi R).
+        let (t, r) = (0.3, 2e-6);
+        let cone = AxisymMd::new(Profile::cone(t).unwrap(), 1e9, 0.05, 1e7).unwrap();
+        let par = AxisymMd::new(Profile::paraboloid(r).unwrap(), 1e9, 0.05, 1e7).unwrap();
+        for (a, c) in [(1e-8, 1.5e-8), (1e-8, 1e-6), (3e-7, 3.1e-7)] {
+            let s = ((c - a) * (c + a) as f64).sqrt();
+            let phi = (a / c as f64).acos();
+            let want = t * (s - a * phi);
+            assert!((cone.shape_gap(a, c)[0] / want - 1.0).abs() < 1e-12, "{a} {c}");
+            let want = ((c * c - 2.0 * a * a) * phi + a * s) / (PI * r);
+            assert!((par.shape_gap(a, c)[0] / want - 1.0).abs() < 1e-9, "{a} {c}");
+            // dG/dc by central differences.
+            let h = 1e-6 * (c - a);
+            let num = (cone.shape_gap(a, c + h)[0] - cone.shape_gap(a, c - h)[0]) / (2.0 * h);
+            assert!((cone.shape_gap(a, c)[1] / num - 1.0).abs() < 1e-6, "{a} {c}");
+        }
+    }
+
+    #[test]
+    fn the_slopes_are_the_derivatives_of_the_curve() {
+        let md = AxisymMd::new(Profile::power(1e4, 1.5).unwrap(), 1e9, 0.05, 3e7).unwrap();
+        for a in [1e-9, 1e-8, 1e-7] {
+            let h = 1e-5 * a;
+            let (p, m) = (md.point(a + h), md.point(a - h));
+            let (dd, df) = md.slopes(a);
+            let nd = (p.interference - m.interference) / (2.0 * h);
+            let nf = (p.load - m.load) / (2.0 * h);
+            assert!((dd - nd).abs() < 1e-6 * nd.abs().max(dd.abs()), "{a} {dd} {nd}");
+            assert!((df - nf).abs() < 1e-6 * nf.abs().max(df.abs()), "{a} {df} {nf}");
+        }
+        assert_eq!(
+            AxisymMd::new(Profile::flat(1e-6).unwrap(), 1e9, 0.05, 1e7)
+                .unwrap_err()
+                .field(),
+            Some("profile")
+        );
+    }
+}
