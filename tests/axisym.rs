@@ -111,7 +111,10 @@ fn deviation_from_analytic(j: &AxisymJkr, ana: &Value) -> (f64, f64) {
     let (mut radii, mut values): (f64, f64) = (0.0, 0.0);
     for (got, key) in [
         (j.pull_off_load_control(), "pull_off_load_control"),
-        (j.jump_out_displacement_control(), "jump_out_displacement_control"),
+        (
+            j.jump_out_displacement_control(),
+            "jump_out_displacement_control",
+        ),
     ] {
         let want = &ana[key];
         let (ds, _) = scales(j, got.radius);

@@ -4,7 +4,8 @@
 //! the cone tends to JKR as the range shrinks and to the rigid (Derjaguin)
 //! force `-pi w h0/tan^2 beta` as it grows.
 use asperity::axisym::{AxisymJkr, AxisymMd, Profile};
-use asperity::law::{AsperityLaw, Control, Maugis};
+use asperity::law::shaped::{ShapedMd, ShapedMdExact};
+use asperity::law::{AsperityLaw, Branch, Control, Maugis};
 use std::f64::consts::PI;
 
 fn rel(x: f64, y: f64) -> f64 {
@@ -50,7 +51,10 @@ fn the_paraboloid_reproduces_maugis_at_1e_10() {
             ];
             for x in errs {
                 worst = worst.max(x);
-                assert!(x < 1e-10, "lambda {lambda} {control:?}: {mine:?} vs {theirs:?}");
+                assert!(
+                    x < 1e-10,
+                    "lambda {lambda} {control:?}: {mine:?} vs {theirs:?}"
+                );
             }
         }
         let z = law.zero_load_radius().unwrap();
@@ -70,21 +74,33 @@ fn cone(lambda: f64) -> AxisymMd {
 fn the_cone_tends_to_jkr_as_the_range_shrinks() {
     let (e, w, t) = (1e9, 0.05, 0.2);
     let jkr = AxisymJkr::new(Profile::cone(t).unwrap(), e, w).unwrap();
-    let (pj, qj) = (jkr.pull_off_load_control(), jkr.jump_out_displacement_control());
+    let (pj, qj) = (
+        jkr.pull_off_load_control(),
+        jkr.jump_out_displacement_control(),
+    );
     let mut last = (f64::INFINITY, f64::INFINITY);
     for lambda in [10.0, 100.0, 1000.0] {
         let md = cone(lambda);
-        let (p, q) = (md.pull_off_load_control(), md.jump_out_displacement_control());
+        let (p, q) = (
+            md.pull_off_load_control(),
+            md.jump_out_displacement_control(),
+        );
         let d = (
             rel(p.load, pj.load).max(rel(p.radius, pj.radius)),
             rel(q.load, qj.load)
                 .max(rel(q.radius, qj.radius))
                 .max(rel(q.interference, qj.interference)),
         );
-        println!("cone lambda {lambda}: pull-off {:.2e}, jump-out {:.2e}", d.0, d.1);
+        println!(
+            "cone lambda {lambda}: pull-off {:.2e}, jump-out {:.2e}",
+            d.0, d.1
+        );
         // Second order in 1/lambda (measured 8.4e-4, 8.4e-6, 8.5e-8 and
         // 1.0e-2, 1.0e-4, 1.0e-6): 100-fold per decade.
-        assert!(d.0 < 0.02 * last.0 && d.1 < 0.02 * last.1, "{lambda}: {d:?}");
+        assert!(
+            d.0 < 0.02 * last.0 && d.1 < 0.02 * last.1,
+            "{lambda}: {d:?}"
+        );
         assert!(d.0 < 1e-1 / (lambda * lambda) && d.1 < 2.0 / (lambda * lambda));
         last = d;
     }
@@ -103,4 +119,62 @@ fn the_cone_tends_to_the_rigid_derjaguin_force_as_the_range_grows() {
         assert!(d < 0.15 * last && d < 4.0 * lambda, "{lambda}: {d}");
         last = d;
     }
+}
+
+/// The law on `AsperityLaw`: a paraboloid `ShapedMd` (tables of the exact
+/// general-profile solve) follows `law::Maugis` on both branches, with
+/// Maugis' history (free on approach until `-h0`, attached on retraction
+/// down to the snap), on both sides of `lambda_c`.
+#[test]
+fn the_shaped_md_law_is_maugis_for_a_paraboloid() {
+    let (r, e, w) = (1e-6, 1e9, 0.05);
+    for lambda in [0.3, 2.0] {
+        let law = Maugis::new(r, e, w, lambda).unwrap();
+        let sigma = AxisymMd::stress_from_lambda(lambda, r, e, w);
+        let s = ShapedMd::new(Profile::paraboloid(r).unwrap(), e, w, sigma).unwrap();
+        let ps = law.pull_off(Control::Load).unwrap().load.abs();
+        assert!(rel(s.attach_interference(), law.attach_interference()) < 1e-12);
+        assert!(rel(s.detach_interference(), law.detach_interference()) < 1e-10);
+        let (lo, hi) = (
+            law.detach_interference(),
+            30.0 * law.detach_interference().abs(),
+        );
+        let mut worst: f64 = 0.0;
+        for i in 0..=300 {
+            let d = lo - 0.01 * lo.abs() + (hi - lo) * (i as f64 / 300.0).powi(2);
+            for b in [Branch::Approach, Branch::Retract] {
+                let (x, y) = (s.state(d, b), law.state(d, b));
+                let e = (x.load - y.load).abs() / (y.load.abs() + ps);
+                worst = worst.max(e);
+                assert!(e < 1e-9, "lambda {lambda} {d} {b:?}: {x:?} {y:?}");
+                assert!(
+                    (x.radius - y.radius).abs() <= 1e-8 * y.radius.max(1e-9),
+                    "{d}"
+                );
+            }
+        }
+        println!("lambda {lambda}: worst load error vs Maugis {worst:.2e}");
+    }
+}
+
+/// A cone's tables against its exact solve, and the history rules.
+#[test]
+fn a_conical_shaped_md_law_matches_its_exact_solve() {
+    let (e, w, t) = (1e9, 0.05, 0.2);
+    let prof = Profile::cone(t).unwrap();
+    let s = ShapedMd::new(prof.clone(), e, w, 3.0 * e * t).unwrap();
+    let x = ShapedMdExact::new(prof, e, w, 3.0 * e * t).unwrap();
+    let dc = x.detach_interference();
+    let ps = x.pull_off(Control::Load).unwrap().load.abs();
+    for i in 0..=50 {
+        let d = dc + 20.0 * dc.abs() * (i as f64 / 50.0).powi(2);
+        let (f, g) = (s.state(d, Branch::Retract), x.state(d, Branch::Retract));
+        assert!((f.load - g.load).abs() <= 1e-9 * (g.load.abs() + ps), "{d}");
+        assert!(f.load >= x.pull_off(Control::Load).unwrap().load * (1.0 + 1e-9));
+    }
+    let h0 = x.contact().range();
+    assert_eq!(s.state(-1.001 * h0, Branch::Approach).load, 0.0);
+    assert!(s.state(-0.999 * h0, Branch::Approach).load < 0.0);
+    assert!(s.state(-1.001 * h0, Branch::Retract).load < 0.0);
+    assert_eq!(s.state(1.001 * dc, Branch::Retract).load, 0.0);
 }

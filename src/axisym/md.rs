@@ -259,13 +259,7 @@ impl AxisymMd {
                 return f64::NAN;
             }
         }
-        brent(
-            |c| self.gap_excess(a, c),
-            a,
-            hi,
-            4.0 * f64::EPSILON * hi,
-        )
-        .unwrap_or(f64::NAN)
+        brent(|c| self.gap_excess(a, c), a, hi, 4.0 * f64::EPSILON * hi).unwrap_or(f64::NAN)
     }
 
     /// Junction radius `c0`: `h(c0) + (2 sigma0/E*)(1 - 2/pi) c0 = h0`.
@@ -528,13 +522,22 @@ mod tests {
             let s = ((c - a) * (c + a) as f64).sqrt();
             let phi = (a / c as f64).acos();
             let want = t * (s - a * phi);
-            assert!((cone.shape_gap(a, c)[0] / want - 1.0).abs() < 1e-12, "{a} {c}");
+            assert!(
+                (cone.shape_gap(a, c)[0] / want - 1.0).abs() < 1e-12,
+                "{a} {c}"
+            );
             let want = ((c * c - 2.0 * a * a) * phi + a * s) / (PI * r);
-            assert!((par.shape_gap(a, c)[0] / want - 1.0).abs() < 1e-9, "{a} {c}");
+            assert!(
+                (par.shape_gap(a, c)[0] / want - 1.0).abs() < 1e-9,
+                "{a} {c}"
+            );
             // dG/dc by central differences.
             let h = 1e-6 * (c - a);
             let num = (cone.shape_gap(a, c + h)[0] - cone.shape_gap(a, c - h)[0]) / (2.0 * h);
-            assert!((cone.shape_gap(a, c)[1] / num - 1.0).abs() < 1e-6, "{a} {c}");
+            assert!(
+                (cone.shape_gap(a, c)[1] / num - 1.0).abs() < 1e-6,
+                "{a} {c}"
+            );
         }
     }
 
@@ -547,8 +550,14 @@ mod tests {
             let (dd, df) = md.slopes(a);
             let nd = (p.interference - m.interference) / (2.0 * h);
             let nf = (p.load - m.load) / (2.0 * h);
-            assert!((dd - nd).abs() < 1e-6 * nd.abs().max(dd.abs()), "{a} {dd} {nd}");
-            assert!((df - nf).abs() < 1e-6 * nf.abs().max(df.abs()), "{a} {df} {nf}");
+            assert!(
+                (dd - nd).abs() < 1e-6 * nd.abs().max(dd.abs()),
+                "{a} {dd} {nd}"
+            );
+            assert!(
+                (df - nf).abs() < 1e-6 * nf.abs().max(df.abs()),
+                "{a} {df} {nf}"
+            );
         }
         assert_eq!(
             AxisymMd::new(Profile::flat(1e-6).unwrap(), 1e9, 0.05, 1e7)
