@@ -149,7 +149,22 @@ impl Shaped {
             Profile::Sphere { radius } => 0.95 * radius,
             _ => (50.0 * exact.zero_load_radius).min(max),
         };
-        let hi = jkr.interference(a_hi).max(lo + 100.0 * lo.abs());
+        let hi = match jkr.profile() {
+            // Not past 0.95 R: as a -> R the load loses all its digits
+            // (atanh), and the tables would refine on that noise for ever.
+            Profile::Sphere { .. } => jkr.interference(a_hi),
+            _ => jkr.interference(a_hi).max(lo + 100.0 * lo.abs()),
+        };
+        if !(hi > lo) {
+            return Err(crate::Error::invalid(
+                "work_of_adhesion",
+                format!(
+                    "the jump-out radius {} m of this sphere is beyond 0.95 R: adhesion too \
+                     strong for the small-strain exact sphere",
+                    jkr.jump_out_displacement_control().radius
+                ),
+            ));
+        }
         let table = InterpolatedLaw::new(exact.clone(), lo, hi, tol)?;
         Ok(Shaped { exact, table })
     }
