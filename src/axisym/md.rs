@@ -518,9 +518,9 @@ mod tests {
         let (t, r) = (0.3, 2e-6);
         let cone = AxisymMd::new(Profile::cone(t).unwrap(), 1e9, 0.05, 1e7).unwrap();
         let par = AxisymMd::new(Profile::paraboloid(r).unwrap(), 1e9, 0.05, 1e7).unwrap();
-        for (a, c) in [(1e-8, 1.5e-8), (1e-8, 1e-6), (3e-7, 3.1e-7)] {
-            let s = ((c - a) * (c + a) as f64).sqrt();
-            let phi = (a / c as f64).acos();
+        for (a, c) in [(1e-8f64, 1.5e-8f64), (1e-8, 1e-6), (3e-7, 3.1e-7)] {
+            let s = ((c - a) * (c + a)).sqrt();
+            let phi = (a / c).acos();
             let want = t * (s - a * phi);
             assert!(
                 (cone.shape_gap(a, c)[0] / want - 1.0).abs() < 1e-12,
