@@ -178,3 +178,48 @@ fn a_conical_shaped_md_law_matches_its_exact_solve() {
     assert!(s.state(-1.001 * h0, Branch::Retract).load < 0.0);
     assert_eq!(s.state(1.001 * dc, Branch::Retract).load, 0.0);
 }
+
+proptest::proptest! {
+    // Cost bound: each case builds one AxisymMd (two 160-point scans, each
+    // point one zone solve of ~50 adaptive quadratures: ~10-30 ms) and
+    // solves 3 states; no tables are built. The range h0 is tied to the
+    // profile's own JKR jump-out so every case has its instabilities inside
+    // the scan, and the sphere keeps w/(E* R) = 1e-4 and a <= 0.4 R (its zone must end
+    // before the equator).
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(24))]
+    /// Over profiles and ranges: the load-controlled pull-off is at least as
+    /// tensile as the snap and as every stable state; the stable branch
+    /// inverts `delta(a)`; the zone lies outside the contact; the paraboloid's
+    /// pull-off lies between JKR (1.5 pi w R) and DMT (2 pi w R).
+    #[test]
+    fn md_instabilities_and_branch(
+        kind in 0u8..4, n in 1.2f64..3.0, le in 8.0f64..11.0, lw in -2.0f64..0.0,
+        lmu in -1.0f64..1.0, frac in 0.0f64..1.0,
+    ) {
+        let (e, w) = (10f64.powf(le), 10f64.powf(lw));
+        let r = 1e3 * w / e; // w/(E* R) = 1e-3
+        let prof = match kind {
+            0 => Profile::paraboloid(r).unwrap(),
+            1 => Profile::cone(0.2).unwrap(),
+            2 => Profile::power(1e-6f64.powf(1.0 - n), n).unwrap(),
+            _ => Profile::sphere(10.0 * r).unwrap(),
+        };
+        let jkr = AxisymJkr::new(prof.clone(), e, w).unwrap();
+        let h0 = 10f64.powf(lmu) * jkr.jump_out_displacement_control().interference.abs();
+        let md = AxisymMd::new(prof, e, w, w / h0).unwrap();
+        let (p, q) = (md.pull_off_load_control(), md.jump_out_displacement_control());
+        proptest::prop_assert!(p.load <= q.load * (1.0 - 1e-12) || p == q, "{:?} {:?}", p, q);
+        proptest::prop_assert!(q.interference <= -h0 * (1.0 - 1e-12));
+        let a = (p.radius.max(q.radius).max(1e-3 * md.zero_load().radius) * (1.0 + 5.0 * frac))
+            .min(0.4 * md.profile().max_radius());
+        let pt = md.point(a);
+        proptest::prop_assert!(pt.outer_radius > a && pt.load >= p.load);
+        let back = md.stable_point(pt.interference).unwrap();
+        proptest::prop_assert!((back.radius / a - 1.0).abs() < 1e-8, "{} {}", a, back.radius);
+        proptest::prop_assert!(md.stable_point(q.interference - 1e-6 * q.interference.abs()).is_none());
+        if kind == 0 {
+            let x = -p.load / (PI * w * r);
+            proptest::prop_assert!((1.5 * (1.0 - 1e-9)..=2.0).contains(&x), "{}", x);
+        }
+    }
+}

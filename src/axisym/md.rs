@@ -423,15 +423,43 @@ impl AxisymMd {
         Ok(self.disc_point(0.0))
     }
 
+    /// Smallest `hi = lo0 * 1.5^k` (from `start`) with `value(hi) >= target`,
+    /// or `None` when the zone reaches the end of the profile first.
+    fn bracket_up(&self, start: f64, target: f64, value: impl Fn(&MdPoint) -> f64) -> Option<f64> {
+        let mut hi = start;
+        for _ in 0..400 {
+            let v = value(&self.point(hi));
+            if !v.is_finite() || hi >= self.profile.max_radius() {
+                return None;
+            }
+            if v >= target {
+                return Some(hi);
+            }
+            hi *= 1.5;
+        }
+        None
+    }
+
+    /// A starting radius above `lo` (m) for the upward brackets.
+    fn start_above(&self, lo: f64) -> f64 {
+        if lo > 0.0 {
+            1.5 * lo
+        } else {
+            1e-3 * self.junction.outer_radius
+        }
+    }
+
     fn find_zero_load(&self) -> Result<MdPoint> {
         let lo = self.pull_off.radius;
-        let mut hi = 2.0 * lo.max(self.junction.outer_radius);
-        while self.point(hi).load < 0.0 {
-            hi *= 2.0;
-            if hi > self.profile.max_radius() || !hi.is_finite() {
-                return Err(too_deep("zero-load radius"));
-            }
-        }
+        let hi = self
+            .bracket_up(self.start_above(lo), 0.0, |p| p.load)
+            .ok_or_else(|| {
+                Error::invalid(
+                    "stress",
+                    "the Dugdale zone passes the sphere's equator before zero load \
+                     (range too long for this sphere)",
+                )
+            })?;
         let r = brent(|a| self.point(a).load, lo, hi, 4.0 * f64::EPSILON * hi)
             .ok_or_else(|| no_convergence("Maugis-Dugdale zero-load radius"))?;
         Ok(self.point(r))
@@ -446,8 +474,8 @@ impl AxisymMd {
     }
 
     /// The stable state at interference `delta` (m), or `None` below the
-    /// snap. Displacement control: past the snap `delta` rises along the
-    /// curve.
+    /// snap (and for a sphere beyond where the zone reaches its equator).
+    /// Displacement control: past the snap `delta` rises along the curve.
     pub fn stable_point(&self, delta: f64) -> Option<MdPoint> {
         if !(delta >= self.snap.interference) {
             return None;
@@ -469,15 +497,7 @@ impl AxisymMd {
                 0.0
             }
         };
-        let mut hi = 2.0 * lo_a.max(self.junction.outer_radius);
-        let cap = 0.999 * self.profile.max_radius();
-        while self.point(hi).interference < delta {
-            hi *= 2.0;
-            if hi > cap {
-                hi = cap;
-                break;
-            }
-        }
+        let hi = self.bracket_up(self.start_above(lo_a), delta, |p| p.interference)?;
         let a = brent(
             |x| self.point(x).interference - delta,
             lo_a,
