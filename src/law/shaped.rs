@@ -417,6 +417,25 @@ impl AsperityLaw for ShapedMd {
     }
 }
 
+/// The shaped law of a profile for scenes and populations: JKR
+/// ([`Shaped`]) when `stress` is `None`, Maugis–Dugdale ([`ShapedMd`]) with
+/// Dugdale stress `sigma0 = stress` (Pa) otherwise; `E*` (Pa), `w` (J/m^2).
+///
+/// # Errors
+/// As [`Shaped::new`] or [`ShapedMd::new`] (fields `contact_modulus`,
+/// `work_of_adhesion`, `stress`, `exponent`, `profile`).
+pub fn build(
+    profile: Profile,
+    contact_modulus: f64,
+    work: f64,
+    stress: Option<f64>,
+) -> Result<Arc<dyn AsperityLaw>> {
+    Ok(match stress {
+        None => Arc::new(Shaped::new(profile, contact_modulus, work)?),
+        Some(s) => Arc::new(ShapedMd::new(profile, contact_modulus, work, s)?),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -446,6 +465,17 @@ mod tests {
         assert!((s.detach_interference() / dc - 1.0).abs() < 1e-14);
         let z = j.zero_load_radius().unwrap();
         assert!((s.zero_load_radius().unwrap() / z - 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn build_picks_jkr_or_maugis_dugdale() {
+        let p = Profile::cone(0.2).unwrap();
+        let j = build(p.clone(), 1e9, 0.05, None).unwrap();
+        assert_eq!(j.attach_interference(), 0.0);
+        let m = build(p.clone(), 1e9, 0.05, Some(6e8)).unwrap();
+        assert!((m.attach_interference() + 0.05 / 6e8).abs() < 1e-24);
+        let e = build(p, 1e9, 0.05, Some(-1.0)).unwrap_err();
+        assert_eq!(e.field(), Some("stress"));
     }
 
     #[test]
