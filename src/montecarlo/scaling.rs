@@ -105,7 +105,7 @@ impl SummitLaw {
     pub fn from_kind(kind: LawKind, contact: &AsperityContact) -> Result<Self> {
         let table_tolerance = kind
             .worth_tabulating()
-            .then(|| TABLE_TOLERANCE_FRACTION * Accuracy::DEFAULT.rel_tol);
+            .then_some(TABLE_TOLERANCE_FRACTION * Accuracy::DEFAULT.rel_tol);
         Ok(SummitLaw {
             law: Arc::from(kind.build(contact)?),
             reference_radius: contact.radius,
