@@ -49,8 +49,10 @@ mod scaling;
 mod summation;
 
 pub use population::{Population, PopulationSpec, Radii, RadiusSpec, MAX_SUMMITS, SAMPLING_BLOCK};
-pub use scaling::SummitLaw;
-pub use summation::{MonteCarlo, SUM_BLOCK};
+pub use scaling::{SummitLaw, TABLE_TOLERANCE_FRACTION};
+pub use summation::{MonteCarlo, CHUNK, LANES, SERIAL_BELOW, SUM_BLOCK};
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_batch;
