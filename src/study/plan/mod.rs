@@ -132,6 +132,8 @@ impl Plan {
     /// naming the scene field.
     pub fn new(scene: &Scene, mode: PlanMode) -> Result<Plan> {
         Plan::build(scene, mode, false)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
     }
 
     /// Plans `scene` without running anything expensive (`asperity run
@@ -142,6 +144,8 @@ impl Plan {
     /// As [`Plan::new`].
     pub fn preview(scene: &Scene, mode: PlanMode) -> Result<Plan> {
         Plan::build(scene, mode, true)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
     }
 
     fn build(scene: &Scene, mode: PlanMode, preview: bool) -> Result<Plan> {

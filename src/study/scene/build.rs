@@ -63,3 +63,54 @@ fn field(e: Error, modulus: &str, poisson: &str) -> Error {
         _ => e.renamed(poisson),
     }
 }
+
+/// Maps an error about a derived quantity (the Maugis `lambda` or Tabor
+/// `mu`, which no scene key names) back to the scene input that drove it out
+/// of range; other errors pass unchanged.
+///
+/// `lambda = 1.1570 (R w^2 / (E*^2 z0^3))^(1/3)`: each input's share of
+/// `ln lambda` against a typical gold microswitch (R = 1 um, w = 0.5 J/m^2,
+/// E* = 50 GPa, z0 = 0.3 nm) is `exponent x ln(value/typical)`; the input
+/// with the largest share in the direction of the failure is named (for
+/// `E*`, the more compliant body's modulus), and the message lists them all.
+pub fn map_derived(scene: &Scene, e: Error) -> Error {
+    if !matches!(e.field(), Some("lambda" | "mu" | "tabor" | "tabor_parameter")) {
+        return e;
+    }
+    let m = &scene.materials;
+    let (e_field, e_value) = if m.e1 <= m.e2 {
+        ("materials.e1", m.e1)
+    } else {
+        ("materials.e2", m.e2)
+    };
+    let s = &scene.surface;
+    let a = &scene.adhesion;
+    let shares = [
+        ("surface.radius", s.radius, 1.0 / 3.0, 1e-6),
+        ("adhesion.w", a.w, 2.0 / 3.0, 0.5),
+        (e_field, e_value, -2.0 / 3.0, 5e10),
+        ("adhesion.z0", a.z0, -1.0, 3e-10),
+    ];
+    let share = |&(_, v, p, t): &(&str, f64, f64, f64)| p * (v / t).ln();
+    let too_large = match &e {
+        Error::OutOfRange { value, .. } => !value.is_finite() || *value > 1.0,
+        _ => true,
+    };
+    let pick = shares
+        .iter()
+        .max_by(|x, y| {
+            let (sx, sy) = (share(x), share(y));
+            let (sx, sy) = if too_large { (sx, sy) } else { (-sx, -sy) };
+            sx.total_cmp(&sy)
+        })
+        .map_or("materials.e1", |x| x.0);
+    Error::invalid(
+        pick,
+        format!(
+            "{e}: the Maugis lambda = 1.1570 (R w^2/(E*^2 z0^3))^(1/3) is driven out of range by \
+             {pick} (surface.radius = {:e} m, adhesion.w = {:e} J/m^2, materials.e1 = {:e} Pa, \
+             materials.e2 = {:e} Pa, adhesion.z0 = {:e} m)",
+            s.radius, a.w, m.e1, m.e2, a.z0
+        ),
+    )
+}

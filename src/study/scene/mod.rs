@@ -11,7 +11,7 @@ mod build;
 mod parse;
 mod schema;
 
-pub use build::{build_contact, build_distribution, build_surface};
+pub use build::{build_contact, build_distribution, build_surface, map_derived};
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, MonteCarloSpec, OutputsSpec, ProgramSpec,
