@@ -104,7 +104,9 @@ fn run_montecarlo(
             // The standard error means something only with enough summits
             // in range (central limit); with none in range the sum is an
             // exact 0 that a tiny expectation cannot be "many errors" from.
-            if m.evaluations >= MIN_SUMMITS_FOR_Z && contacts_of(m, mc.factor) >= MIN_SUMMITS_FOR_Z as f64 {
+            if m.evaluations >= MIN_SUMMITS_FOR_Z
+                && contacts_of(m, mc.factor) >= MIN_SUMMITS_FOR_Z as f64
+            {
                 m.deviation_from(g)
             } else {
                 [None; SLOTS]
@@ -135,7 +137,10 @@ fn run_montecarlo(
                 Some(_) => mc.law.clone(),
             };
             let c = MonteCarlo::new(population, law)?
-                .curve(&curve.program, &crate::loading::Observables::standard(true, false, false))?
+                .curve(
+                    &curve.program,
+                    &crate::loading::Observables::standard(true, false, false),
+                )?
                 .scaled(mc.factor);
             seed_pull_offs.push((other.spec.seed, c.sampled_pull_off().map(|p| p.load)));
         }
@@ -177,6 +182,11 @@ impl Plan {
     /// tolerance; [`crate::Error::Invalid`] when a maximum load cannot be
     /// reached.
     pub fn run(&self) -> Result<Results> {
+        self.run_unmapped()
+            .map_err(|e| crate::study::scene::map_derived(&self.scene, e))
+    }
+
+    fn run_unmapped(&self) -> Result<Results> {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;

@@ -156,11 +156,14 @@ pub fn run_warnings(
         .flatten()
         .find(|v| !v.is_finite());
     if let Some(v) = bad {
-        return Err(Error::NoConvergence {
-            what: format!("the curve has a non-finite value ({v}); outputs withheld"),
-            iterations: 0,
-            residual: v,
-        });
+        let pick = crate::study::scene::most_extreme_input(&plan.scene, &[]);
+        return Err(Error::invalid(
+            pick,
+            format!(
+                "the curve has a non-finite value ({v}), outputs withheld: {pick} is the input \
+                 furthest from typical values"
+            ),
+        ));
     }
     let closest = curve.program.closest;
     if let Target::Load(_) = plan.target {

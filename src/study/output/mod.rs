@@ -274,7 +274,11 @@ pub fn montecarlo_csv(results: &Results) -> Option<String> {
                     .filter(|e| honest && e.is_finite()),
             )
         };
-        let z = if honest { z } else { [None; crate::loading::SLOTS] };
+        let z = if honest {
+            z
+        } else {
+            [None; crate::loading::SLOTS]
+        };
         let note = if honest {
             String::new()
         } else {

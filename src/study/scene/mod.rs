@@ -11,7 +11,9 @@ mod build;
 mod parse;
 mod schema;
 
-pub use build::{build_contact, build_distribution, build_surface, map_derived};
+pub use build::{
+    build_contact, build_distribution, build_surface, map_derived, most_extreme_input,
+};
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, MonteCarloSpec, OutputsSpec, ProgramSpec,

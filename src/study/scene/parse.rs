@@ -161,6 +161,17 @@ impl Scene {
 /// Largest `program.points` (per leg).
 pub const MAX_POINTS: usize = 1_000_000;
 
+/// Smallest summit radius, height scale and interaction range (m): below a
+/// femtometre no length of a contact means anything.
+pub const MIN_LENGTH: f64 = 1e-15;
+
+/// Largest summit radius, height scale and interaction range (m).
+pub const MAX_LENGTH: f64 = 1.0;
+
+/// Largest number of summits `eta A_n` on the nominal area (totals stay
+/// far from overflow).
+pub const MAX_SURFACE_SUMMITS: f64 = 1e24;
+
 /// Largest memory (bytes) a Monte Carlo population may take (heights, radii
 /// and the sorted suffix), so that a scene never aborts on allocation.
 pub const MAX_POPULATION_BYTES: f64 = 2.0 * (1u64 << 30) as f64;
@@ -182,8 +193,16 @@ fn not_applicable(scene: &Scene) -> Result<()> {
     let s = &scene.surface;
     let d = s.distribution.as_str();
     for (key, present, owner) in [
-        ("surface.weibull_shape", s.weibull_shape.is_some(), "weibull"),
-        ("surface.truncation", s.truncation.is_some(), "truncated-gaussian"),
+        (
+            "surface.weibull_shape",
+            s.weibull_shape.is_some(),
+            "weibull",
+        ),
+        (
+            "surface.truncation",
+            s.truncation.is_some(),
+            "truncated-gaussian",
+        ),
         ("surface.heights", s.heights.is_some(), "empirical"),
     ] {
         if present && d != owner {
@@ -211,16 +230,32 @@ fn costs(scene: &Scene) -> Result<()> {
             allowed: Allowed::closed(2.0, MAX_POINTS as f64),
         });
     }
+    let s = &scene.surface;
+    for (name, x) in [
+        ("surface.radius", s.radius),
+        ("surface.sigma", s.sigma),
+        ("adhesion.z0", scene.adhesion.z0),
+    ] {
+        Allowed::closed(MIN_LENGTH, MAX_LENGTH).check(name, x)?;
+    }
+    let summits = s.density * s.nominal_area;
+    if !(summits >= 1.0 && summits <= MAX_SURFACE_SUMMITS) {
+        let pick =
+            super::build::most_extreme_input(scene, &["surface.density", "surface.nominal_area"]);
+        return Err(Error::invalid(
+            pick,
+            format!(
+                "eta A_n = surface.density x surface.nominal_area = {summits:e} summits; allowed \
+                 [1, {MAX_SURFACE_SUMMITS:e}] (fewer than one summit is no rough surface)"
+            ),
+        ));
+    }
     let Some(mc) = &scene.montecarlo else {
         return Ok(());
     };
-    let s = &scene.surface;
     let (n, field) = match mc.summits {
         Some(n) => (n as f64, "montecarlo.summits"),
-        None => (
-            (s.density * s.nominal_area).round(),
-            "surface.nominal_area",
-        ),
+        None => ((s.density * s.nominal_area).round(), "surface.nominal_area"),
     };
     if !n.is_finite() {
         return Err(Error::invalid(
