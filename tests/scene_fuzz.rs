@@ -157,7 +157,7 @@ fn mutate(base: &Value, table: &str, key: &str, mutation: &str) -> String {
 }
 
 fn finite(x: Option<f64>) -> bool {
-    x.map_or(true, f64::is_finite)
+    x.is_none_or(f64::is_finite)
 }
 
 /// Parses, plans and runs one scene (only plans a calibrated law).

@@ -239,7 +239,7 @@ fn costs(scene: &Scene) -> Result<()> {
         Allowed::closed(MIN_LENGTH, MAX_LENGTH).check(name, x)?;
     }
     let summits = s.density * s.nominal_area;
-    if !(summits >= 1.0 && summits <= MAX_SURFACE_SUMMITS) {
+    if !(1.0..=MAX_SURFACE_SUMMITS).contains(&summits) {
         let pick =
             super::build::most_extreme_input(scene, &["surface.density", "surface.nominal_area"]);
         return Err(Error::invalid(
