@@ -57,8 +57,8 @@ fn top_summit(plan: &Plan) -> f64 {
 /// The scene field that sets the closest separation.
 fn program_field(plan: &Plan) -> &'static str {
     match plan.target {
-        Target::Separation(_) => "program.closest_separation",
         Target::Load(_) => "program.max_load",
+        _ => "program.closest_separation",
     }
 }
 

@@ -47,7 +47,11 @@ pub fn execute(
     plan_only: bool,
 ) -> crate::CliResult {
     if plan_only {
-        print!("{}", Plan::preview(scene, mode)?);
+        let plan = Plan::preview(scene, mode)?;
+        print!("{plan}");
+        for w in &plan.warnings {
+            println!("  warning: {w}");
+        }
         return Ok(());
     }
     let plan = Plan::new(scene, mode)?;
