@@ -8,7 +8,9 @@
 //! - run (`exit 0`) with finite outputs, and with warnings when the real
 //!   area is outside GW's validity range;
 //!
-//! never panic, abort or hang. To keep every run cheap in a debug build the
+//! never panic, abort or hang. Three variants add the keys no example sets
+//! (`montecarlo.summits`, `program.start_separation`, `weibull_shape`,
+//! `truncation`). To keep every run cheap in a debug build the
 //! base scenes use at most [`POINTS`] points per leg (the `points` field
 //! itself is mutated from its original value), and the calibrated scene is
 //! only planned (`Plan::preview`: the sphere solver for every mutated Tabor
@@ -60,6 +62,30 @@ fn scenes() -> Vec<(String, String)> {
         })
         .collect();
     v.sort();
+    // Keys no example scene sets, so that every schema key is mutated.
+    let find = |n: &str| v.iter().find(|x| x.0 == n).unwrap().1.clone();
+    let mc = find("montecarlo-gold.toml")
+        .replacen("# summits = 10000", "summits = 500", 1)
+        .replacen("points = 60", "points = 60\nstart_separation = 40e-9", 1);
+    let gold = find("mems-gold.toml");
+    let weibull = gold.replacen(
+        "distribution = \"gaussian\"",
+        "distribution = \"weibull\"\nweibull_shape = 2.0",
+        1,
+    );
+    let truncated = gold.replacen(
+        "distribution = \"gaussian\"",
+        "distribution = \"truncated-gaussian\"\ntruncation = 3.0",
+        1,
+    );
+    for (n, t) in [
+        ("extra-montecarlo", mc),
+        ("extra-weibull", weibull),
+        ("extra-truncated", truncated),
+    ] {
+        assert!(Scene::from_toml(&t).is_ok(), "{n}");
+        v.push((n.to_string(), t));
+    }
     v
 }
 

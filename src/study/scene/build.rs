@@ -124,13 +124,20 @@ pub fn map_derived(scene: &Scene, e: Error) -> Error {
         && scene.program.start_separation.is_none()
         && matches!(e, Error::OutOfRange { .. })
     {
+        let s = &scene.surface;
+        let parameter = match (s.weibull_shape, s.truncation) {
+            (Some(k), _) => format!(" (surface.weibull_shape = {k:e})"),
+            (_, Some(k)) => format!(" (surface.truncation = {k:e})"),
+            _ => String::new(),
+        };
         return Error::invalid(
             field,
             format!(
                 "{text}: no summit comes within range of the flat there; the start (where the \
                  first summit comes in range) follows from surface.sigma = {:e} m, \
-                 surface.distribution and the interaction range adhesion.z0 = {:e} m",
-                scene.surface.sigma, scene.adhesion.z0
+                 surface.distribution = {:?}{parameter} and the interaction range \
+                 adhesion.z0 = {:e} m",
+                s.sigma, s.distribution, scene.adhesion.z0
             ),
         );
     }
