@@ -261,3 +261,47 @@ pub fn checked(mut plan: Plan) -> Result<Plan> {
     plan.warnings.extend(w);
     Ok(plan)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::study::{PlanMode, Scene, DEFAULT_SCENE};
+
+    #[test]
+    fn negative_energy_is_zero_within_tolerance_and_an_error_beyond() {
+        let scene =
+            Scene::from_toml(&DEFAULT_SCENE.replacen("points = 200", "points = 20", 1)).unwrap();
+        let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
+        let results = plan.run().unwrap();
+        assert!(results.warnings.is_empty(), "{:?}", results.warnings);
+        let mut e = Some(-1e-30);
+        let w = run_warnings(&plan, &results.curve, &mut e).unwrap();
+        assert_eq!(e, Some(0.0));
+        assert!(w.iter().any(|s| s.contains("zero within")), "{w:?}");
+        let mut e = Some(-1.0);
+        let err = run_warnings(&plan, &results.curve, &mut e).unwrap_err();
+        assert!(
+            !err.is_bad_input() && err.to_string().contains("hysteresis"),
+            "{err}"
+        );
+        let mut e = Some(1e-12);
+        assert!(run_warnings(&plan, &results.curve, &mut e)
+            .unwrap()
+            .is_empty());
+        assert_eq!(e, Some(1e-12));
+    }
+
+    #[test]
+    fn eta_r_sigma_above_the_bound_warns_at_plan_time() {
+        let scene =
+            Scene::from_toml(&DEFAULT_SCENE.replacen("density = 1e12", "density = 3e13", 1))
+                .unwrap();
+        let plan = Plan::preview(&scene, PlanMode::Planned).unwrap();
+        assert!((eta_r_sigma(&plan) - 0.15).abs() < 1e-12);
+        assert!(
+            plan.warnings.iter().any(|w| w.contains("eta R sigma")),
+            "{:?}",
+            plan.warnings
+        );
+    }
+}
