@@ -13,6 +13,7 @@ pub mod plot;
 pub mod run;
 pub mod scene;
 pub mod sweep;
+pub mod validity;
 
 pub use output::{
     charts, curve_csv, montecarlo_csv, resistance_of, write_outputs, McSummary, PlasticitySummary,

@@ -74,6 +74,16 @@ pub struct McResults {
     pub max_abs_z: Option<f64>,
     /// Most tensile sampled retraction load of the population.
     pub pull_off: Option<PullOff>,
+    /// Summits of the population in contact (count / scale factor; summits
+    /// in range when the count is not computed), per state (approach
+    /// states, then retraction states). Standard errors are reported only
+    /// where at least [`MIN_SUMMITS_FOR_Z`] are.
+    pub contacts: Vec<f64>,
+    /// Most tensile sampled retraction load of populations drawn with
+    /// other seeds (`seed + 1 ..`), to show how one realisation's pull-off
+    /// scatters; empty when the population is too large for
+    /// [`SEED_SPREAD_BUDGET`].
+    pub seed_pull_offs: Vec<(u64, Option<f64>)>,
     /// Wall-clock time of drawing and summing (s).
     pub seconds: f64,
     /// With `[electrical]`: the sample's own spots at the closest
@@ -85,6 +95,13 @@ pub struct McResults {
 /// Most contact spots of a population for which explicit-position
 /// resistances are computed (Greenwood's formula is `O(n^2)`).
 pub const MAX_SAMPLE_SPOTS: usize = 20_000;
+
+/// Extra seeds drawn for the pull-off scatter of one realisation.
+pub const EXTRA_SEEDS: u64 = 4;
+
+/// Largest `summits x points` for which [`EXTRA_SEEDS`] more populations
+/// are summed (a few tenths of a second in a release build).
+pub const SEED_SPREAD_BUDGET: f64 = 2e7;
 
 /// Draws the plan's population and sums it over `program`.
 fn run_montecarlo(
@@ -115,7 +132,9 @@ fn run_montecarlo(
             // The standard error means something only with enough summits
             // in range (central limit); with none in range the sum is an
             // exact 0 that a tiny expectation cannot be "many errors" from.
-            if m.evaluations >= MIN_SUMMITS_FOR_Z {
+            if m.evaluations >= MIN_SUMMITS_FOR_Z
+                && contacts_of(m, mc.factor) >= MIN_SUMMITS_FOR_Z as f64
+            {
                 m.deviation_from(g)
             } else {
                 [None; SLOTS]
@@ -142,14 +161,49 @@ fn run_montecarlo(
         }
         None => None,
     };
+    let contacts = mc_curve
+        .approach
+        .iter()
+        .chain(&mc_curve.retract)
+        .map(|m| contacts_of(m, mc.factor))
+        .collect();
+    let mut seed_pull_offs = Vec::new();
+    if plan.pull_off && (mc.summits as f64) * (curve.program.points as f64) <= SEED_SPREAD_BUDGET {
+        for k in 1..=EXTRA_SEEDS {
+            let mut other = mc.clone();
+            other.spec.seed = mc.spec.seed.wrapping_add(k);
+            let spec = other.population_spec(&plan.surface)?;
+            let population = Arc::new(Population::sample(&spec, plan.distribution.as_ref())?);
+            let law = match mc.law.scaling() {
+                None => SummitLaw::fixed(run_law.clone(), mc.law.reference_radius())?,
+                Some(_) => mc.law.clone(),
+            };
+            let c = MonteCarlo::new(population, law)?
+                .curve(
+                    &curve.program,
+                    &crate::loading::Observables::standard(true, false, false),
+                )?
+                .scaled(mc.factor);
+            seed_pull_offs.push((other.spec.seed, c.sampled_pull_off().map(|p| p.load)));
+        }
+    }
     Ok(McResults {
         spots,
+        contacts,
+        seed_pull_offs,
         pull_off: mc_curve.sampled_pull_off(),
         curve: mc_curve,
         z,
         max_abs_z,
         seconds: t0.elapsed().as_secs_f64(),
     })
+}
+
+/// Summits of a population state in contact: its count over the scale
+/// factor, or the summits in range when the count is not computed.
+fn contacts_of(m: &State, factor: f64) -> f64 {
+    m.count()
+        .map_or(m.evaluations as f64, |c| (c / factor).round())
 }
 
 impl Results {
@@ -171,6 +225,11 @@ impl Plan {
     /// tolerance; [`crate::Error::Invalid`] when a maximum load cannot be
     /// reached.
     pub fn run(&self) -> Result<Results> {
+        self.run_unmapped()
+            .map_err(|e| crate::study::scene::map_derived(&self.scene, e))
+    }
+
+    fn run_unmapped(&self) -> Result<Results> {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;
@@ -196,7 +255,7 @@ impl Plan {
         } else {
             None
         };
-        let hysteresis_energy = if self.hysteresis_energy {
+        let mut hysteresis_energy = if self.hysteresis_energy {
             curve.hysteresis_energy()
         } else {
             None
@@ -212,6 +271,7 @@ impl Plan {
             .flat_map(|l| l.iter())
             .map(|s| s.evaluations)
             .sum();
+        let warnings = super::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
             None => None,
@@ -227,7 +287,7 @@ impl Plan {
             regimes: None,
             stiction: None,
             elastic_approach: None,
-            warnings: Vec::new(),
+            warnings,
         })
         .and_then(|r| self.finish(&model, r))
     }

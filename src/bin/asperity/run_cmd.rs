@@ -47,7 +47,11 @@ pub fn execute(
     plan_only: bool,
 ) -> crate::CliResult {
     if plan_only {
-        print!("{}", Plan::preview(scene, mode)?);
+        let plan = Plan::preview(scene, mode)?;
+        print!("{plan}");
+        for w in &plan.warnings {
+            println!("  warning: {w}");
+        }
         return Ok(());
     }
     let plan = Plan::new(scene, mode)?;
@@ -82,6 +86,16 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
         "  separations {:.3e} .. {:.3e} m, {} points per leg, rtol {:e}",
         summary.closest_separation, summary.start_separation, summary.points, summary.rtol
     );
+    match summary.law_model_error {
+        Some(e) => println!(
+            "  model error        law {} differs from the full Lennard-Jones solution by {:.2} % \
+             (rtol {:e} bounds only the numerics)",
+            summary.law,
+            100.0 * e,
+            summary.rtol
+        ),
+        None => println!("  model error        not measured for law {}", summary.law),
+    }
     println!("  max load           {}", show(summary.max_load, "N"));
     println!("  max real area      {}", show(summary.max_area, "m^2"));
     println!("  max contacts       {}", show(summary.max_count, ""));
@@ -108,9 +122,8 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
             println!("    max load         {p:.4e} N +- {se:.2e} N (standard error)");
         }
         println!(
-            "    sampled pull-off {} (integral at the same separations: {})",
-            show(m.pull_off_load, "N"),
-            show(m.integral_sampled_pull_off_load, "N")
+            "    sampled pull-off {} (this realisation: the minimum of its own load curve)",
+            show(m.pull_off_load, "N")
         );
         if let Some(s) = &m.spots {
             println!(
@@ -123,7 +136,25 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
             );
         }
         println!(
-            "    worst deviation from the integral: {} standard errors (< 5 expected)",
+            "    integral         {} (minimum of the mean load at the same separations, \
+             not the mean of the realisations' minima)",
+            show(m.integral_sampled_pull_off_load, "N")
+        );
+        match (m.pull_off_seed_mean, m.pull_off_seed_std) {
+            (Some(mean), Some(sd)) => println!(
+                "    one switch's pull-off over {} seeds: mean {mean:.4e} N, std {sd:.2e} N",
+                1 + m.pull_off_other_seeds.len()
+            ),
+            _ => println!("    pull-off scatter over seeds: not computed (population too large)"),
+        }
+        if m.states_without_standard_error > 0 {
+            println!(
+                "    {} states with fewer than 20 summits in contact: no standard error there",
+                m.states_without_standard_error
+            );
+        }
+        println!(
+            "    worst deviation of the curve from the integral: {} standard errors (< 5 expected)",
             m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))
         );
     }

@@ -73,6 +73,15 @@ pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<P
     }
     for (name, chart, loglog) in super::feature_charts(plan, results) {
         let path = dir.join(&name);
+        // A feature chart with nothing to draw (no compressive state with
+        // contact, say) is left out, not an error.
+        let drawable =
+            chart.series.iter().flat_map(|s| &s.points).any(|p| {
+                p.0.is_finite() && p.1.is_finite() && (!loglog || (p.0 > 0.0 && p.1 > 0.0))
+            });
+        if !drawable {
+            continue;
+        }
         if loglog {
             chart.write_svg_loglog(&path, 800, 560)?;
         } else {

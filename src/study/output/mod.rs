@@ -47,6 +47,11 @@ pub struct Summary {
     pub hysteresis_energy: Option<f64>,
     /// Requested relative tolerance.
     pub rtol: f64,
+    /// Model error of the chosen law: its measured relative error against
+    /// the full Lennard-Jones solution at this Tabor parameter
+    /// ([`crate::law::errors::LawErrorTable`]); `null` when unknown
+    /// (calibrated, no adhesion). `rtol` bounds only the numerics.
+    pub law_model_error: Option<f64>,
     /// Wall-clock time of the run (s).
     pub seconds: f64,
     /// Law evaluations spent by quadrature.
@@ -159,13 +164,33 @@ pub struct McSummary {
     pub seed: u64,
     /// Largest approach load of the population (N), scaled to the surface.
     pub max_load: Option<f64>,
-    /// Its standard error (N).
+    /// Its standard error (N); `null` with fewer than
+    /// [`crate::study::run::MIN_SUMMITS_FOR_Z`] summits in contact there.
     pub max_load_standard_error: Option<f64>,
-    /// Most tensile sampled retraction load (N).
+    /// Most tensile sampled retraction load of this one realisation (N):
+    /// the pull-off of one switch with these summits (the minimum of its
+    /// own load curve).
     pub pull_off_load: Option<f64>,
     /// The integral's most tensile load at the same sampled separations
-    /// (N), to compare with `pull_off_load`.
+    /// (N): the minimum of the *mean* load curve, which is not the mean of
+    /// the realisations' minima (each realisation's few tensile summits
+    /// detach at their own separations), so the two differ by far more than
+    /// the standard errors of the curve.
     pub integral_sampled_pull_off_load: Option<f64>,
+    /// Pull-offs (N) of populations with seeds `seed + 1 ..` (the scatter
+    /// of one switch's pull-off; empty when the population is too large,
+    /// see [`crate::study::run::SEED_SPREAD_BUDGET`]); `null` entries have
+    /// no tensile load.
+    pub pull_off_other_seeds: Vec<Option<f64>>,
+    /// Mean of the pull-offs of all seeds drawn (this one and the others).
+    pub pull_off_seed_mean: Option<f64>,
+    /// Their sample standard deviation (N, divisor n - 1): how much one
+    /// realisation's pull-off scatters.
+    pub pull_off_seed_std: Option<f64>,
+    /// States where fewer than [`crate::study::run::MIN_SUMMITS_FOR_Z`]
+    /// summits of the population are in contact: no standard error or
+    /// deviation is reported there (the central limit does not hold).
+    pub states_without_standard_error: usize,
     /// Largest deviation from the integral over the curve, in standard
     /// errors (`< 5` expected when the population follows the model).
     pub max_abs_z: Option<f64>,
@@ -214,20 +239,44 @@ impl Summary {
             pull_off_separation: results.pull_off.map(|p| p.separation),
             hysteresis_energy: results.hysteresis_energy,
             rtol: plan.scene.accuracy.rtol,
+            law_model_error: plan.law.measured_error.filter(|_| adhesive),
             seconds: results.seconds,
             evaluations: results.evaluations,
             montecarlo: results.montecarlo.as_ref().map(|m| {
+                // A standard error only where enough summits are in contact.
+                let min = crate::study::run::MIN_SUMMITS_FOR_Z as f64;
                 let top = m
                     .curve
                     .approach
                     .iter()
-                    .filter_map(|s| s.load().map(|p| (p, s.totals.error(0).unwrap_or(f64::NAN))))
+                    .zip(&m.contacts)
+                    .filter_map(|(s, &c)| {
+                        s.load().map(|p| {
+                            let se = s.totals.error(0).filter(|e| c >= min && e.is_finite());
+                            (p, se)
+                        })
+                    })
                     .max_by(|a, b| a.0.total_cmp(&b.0));
+                let seeds: Vec<f64> = m
+                    .pull_off
+                    .map(|p| p.load)
+                    .into_iter()
+                    .chain(m.seed_pull_offs.iter().filter_map(|s| s.1))
+                    .collect();
+                let (mean, std) = mean_std(&seeds);
                 McSummary {
+                    pull_off_other_seeds: m.seed_pull_offs.iter().map(|s| s.1).collect(),
+                    pull_off_seed_mean: mean,
+                    pull_off_seed_std: std,
+                    states_without_standard_error: m
+                        .contacts
+                        .iter()
+                        .filter(|&&c| c < crate::study::run::MIN_SUMMITS_FOR_Z as f64)
+                        .count(),
                     summits: plan.montecarlo.as_ref().map_or(0, |p| p.summits),
                     seed: plan.montecarlo.as_ref().map_or(0, |p| p.spec.seed),
                     max_load: top.map(|t| t.0),
-                    max_load_standard_error: top.map(|t| t.1),
+                    max_load_standard_error: top.and_then(|t| t.1),
                     pull_off_load: m.pull_off.map(|p| p.load),
                     integral_sampled_pull_off_load: results
                         .curve
@@ -366,15 +415,34 @@ pub fn curve_csv(results: &Results, plan: &Plan) -> String {
     out
 }
 
+/// Mean and sample standard deviation (divisor `n - 1`) of `x`; `None`
+/// for the deviation with fewer than two values.
+fn mean_std(x: &[f64]) -> (Option<f64>, Option<f64>) {
+    if x.is_empty() {
+        return (None, None);
+    }
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let std = (x.len() >= 2)
+        .then(|| (x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt());
+    (Some(mean), std)
+}
+
 /// The population's curve as CSV: `leg,separation_m,load_N,load_se_N,
-/// area_m2,area_se_m2,count,count_se,z_load,z_area,z_count` (standard
-/// errors and deviations from the integral in standard errors), in the
-/// order of [`curve_csv`].
+/// area_m2,area_se_m2,count,count_se,z_load,z_area,z_count,contacts,note`
+/// (standard errors and deviations from the integral in standard errors;
+/// `contacts` is the population's summits in contact), in the order of
+/// [`curve_csv`]. Where fewer than
+/// [`crate::study::run::MIN_SUMMITS_FOR_Z`] summits are in contact the
+/// standard-error and deviation cells are empty and `note` says why: a
+/// standard error estimated from so few summits is not one (the central
+/// limit does not hold; deviations of 30 "standard errors" appear).
 pub fn montecarlo_csv(results: &Results) -> Option<String> {
     let m = results.montecarlo.as_ref()?;
     let mut out = String::from(
-        "leg,separation_m,load_N,load_se_N,area_m2,area_se_m2,count,count_se,z_load,z_area,z_count\n",
+        "leg,separation_m,load_N,load_se_N,area_m2,area_se_m2,count,count_se,z_load,z_area,z_count,contacts,note\n",
     );
+    let min = crate::study::run::MIN_SUMMITS_FOR_Z;
     let cell = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v:e}"));
     let n = m.curve.approach.len();
     let rows = m
@@ -383,19 +451,36 @@ pub fn montecarlo_csv(results: &Results) -> Option<String> {
         .iter()
         .enumerate()
         .rev()
-        .map(|(i, s)| ("approach", s, m.z[i]))
+        .map(|(i, s)| ("approach", s, m.z[i], i))
         .chain(
             m.curve
                 .retract
                 .iter()
                 .enumerate()
-                .map(|(i, s)| ("retract", s, m.z[n + i])),
+                .map(|(i, s)| ("retract", s, m.z[n + i], n + i)),
         );
-    for (leg, s, z) in rows {
-        let se = |i: usize, x: Option<f64>| cell(x.map(|_| s.totals.error(i).unwrap_or(f64::NAN)));
+    for (leg, s, z, k) in rows {
+        let contacts = m.contacts.get(k).copied().unwrap_or(0.0);
+        let honest = contacts >= min as f64;
+        let se = |i: usize, x: Option<f64>| {
+            cell(
+                x.and_then(|_| s.totals.error(i))
+                    .filter(|e| honest && e.is_finite()),
+            )
+        };
+        let z = if honest {
+            z
+        } else {
+            [None; crate::loading::SLOTS]
+        };
+        let note = if honest {
+            String::new()
+        } else {
+            format!("no standard error: fewer than {min} summits in contact")
+        };
         let _ = writeln!(
             out,
-            "{leg},{:e},{},{},{},{},{},{},{},{},{}",
+            "{leg},{:e},{},{},{},{},{},{},{},{},{},{contacts},{note}",
             s.separation,
             cell(s.load()),
             se(0, s.load()),

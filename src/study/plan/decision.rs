@@ -62,6 +62,12 @@ pub enum LawReason {
     },
     /// Named in the scene.
     Given,
+    /// Named in the scene; its adhesion is left out because the JKR
+    /// interference scale (m) is far below the tolerance.
+    AdhesionNegligible {
+        /// `(pi^2 w^2 R/K^2)^(1/3)` (m).
+        jkr_scale: f64,
+    },
     /// The full-solver law, from the on-disk cache or computed at run time.
     Calibrated {
         /// Whether the cache already holds it.
@@ -377,6 +383,10 @@ fn law_why(reason: &LawReason, d: &Decision) -> String {
              full-solver law"
         ),
         LawReason::Given => "given in the scene".into(),
+        LawReason::AdhesionNegligible { jkr_scale } => format!(
+            "given in the scene; adhesion left out: its JKR interference scale {jkr_scale:.3e} m is \
+             below 1e-6 x rtol x sigma"
+        ),
         LawReason::Calibrated { cached, path } => format!(
             "full Lennard-Jones sphere solver (paraboloid), tabulated on both branches, with the \
              Lennard-Jones attraction kept out to a rigid gap of 100 z0 (the Dugdale laws cut it at \

@@ -191,14 +191,26 @@ fn plastic(
     let loading = build(variant, contact.radius, contact.contact_modulus, plasticity)
         .map_err(|e| e.in_table("materials"))?;
     let w = contact.adhesion.work();
-    let law: Arc<dyn AsperityLaw> = if w > 0.0 {
+    // JKR interference scale of the unflattened summit,
+    // (pi^2 w^2 R / K^2)^(1/3), K = 4E*/3: where it is below a millionth of
+    // rtol x sigma the adhesion cannot change any output at the tolerance
+    // (and underflows the JKR scales), so the bare law serves.
+    let k = 4.0 * contact.contact_modulus / 3.0;
+    let jkr_scale = (std::f64::consts::PI.powi(2) * w * w * contact.radius / (k * k)).cbrt();
+    let negligible = jkr_scale < 1e-6 * scene.accuracy.rtol * scene.surface.sigma;
+    let law: Arc<dyn AsperityLaw> = if w > 0.0 && !negligible {
         Arc::new(AdhesivePlastic::new(loading.as_loading(), w)?)
     } else {
         PlasticLaw::as_law(loading)
     };
+    let reason = if w > 0.0 && negligible {
+        LawReason::AdhesionNegligible { jkr_scale }
+    } else {
+        LawReason::Given
+    };
     decisions.push(Decision::Law {
         name: variant.name().into(),
-        reason: LawReason::Given,
+        reason,
         mu: contact.tabor(),
         lambda: contact.lambda(),
     });
@@ -227,7 +239,10 @@ fn shaped(
     let name = format!("shaped ({})", profile.name());
     let law =
         crate::law::shaped::Shaped::new(profile, contact.contact_modulus, contact.adhesion.work())
-            .map_err(|e| e.in_table("law"))?;
+            // The profile keys are valid (checked with the scene): what fails here
+            // is derived (instabilities out of floating-point range for these
+            // moduli and work of adhesion), named by the caller's mapping.
+            .map_err(|e| shaped_error(scene, e))?;
     decisions.push(Decision::Law {
         name: name.clone(),
         reason: LawReason::Given,
@@ -240,4 +255,32 @@ fn shaped(
         law: Arc::new(law),
         measured_error: None,
     })
+}
+
+/// A shaped law that cannot be built from valid profile keys: its
+/// instabilities left the floating-point range. Names the input furthest
+/// from typical values among the profile's own keys, `adhesion.w` and the
+/// moduli (`|ln(value/typical)|`).
+fn shaped_error(scene: &Scene, e: Error) -> Error {
+    let l = &scene.law;
+    let m = &scene.materials;
+    let candidates = [
+        ("law.tan_angle", l.tan_angle, 0.3),
+        ("law.exponent", l.exponent, 2.0),
+        ("law.radius", l.radius, 1e-6),
+        ("adhesion.w", Some(scene.adhesion.w), 0.5),
+        ("materials.e1", Some(m.e1), 8e10),
+        ("materials.e2", Some(m.e2), 8e10),
+    ];
+    let pick = candidates
+        .iter()
+        .filter_map(|(n, v, t)| v.filter(|v| *v > 0.0).map(|v| (*n, (v / t).ln().abs())))
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map_or("adhesion.w", |x| x.0);
+    Error::invalid(
+        pick,
+        format!(
+            "the shaped law cannot be built ({e}); {pick} is the input furthest from typical values"
+        ),
+    )
 }

@@ -145,6 +145,8 @@ impl Plan {
     /// naming the scene field.
     pub fn new(scene: &Scene, mode: PlanMode) -> Result<Plan> {
         Plan::build(scene, mode, false)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
     }
 
     /// Plans `scene` without running anything expensive (`asperity run
@@ -155,6 +157,8 @@ impl Plan {
     /// As [`Plan::new`].
     pub fn preview(scene: &Scene, mode: PlanMode) -> Result<Plan> {
         Plan::build(scene, mode, true)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
     }
 
     fn build(scene: &Scene, mode: PlanMode, preview: bool) -> Result<Plan> {
@@ -340,6 +344,14 @@ fn program(
         ),
         (None, PlanMode::EverythingOn) => (model.interaction_onset(), StartReason::EverythingOn),
     };
+    if !start.is_finite() {
+        // Derived from sigma, the distribution and the force range: named
+        // by the caller's mapping to the input furthest out.
+        return Err(Error::invalid(
+            "start separation",
+            format!("the program's start separation is {start:e} m"),
+        ));
+    }
     decisions.push(Decision::Start {
         separation: start,
         reason,

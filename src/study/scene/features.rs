@@ -370,6 +370,26 @@ impl ElectricalSpec {
             "electrical.mean_free_path1"
         };
         let body = |r: f64, l: Option<f64>| Conductor::new(r, l);
+        // Physical ranges (metals ~1e-8 Ohm m, mean free paths ~1e-8 m);
+        // beyond them conductances leave the floating-point range.
+        let rho_range = Allowed::closed(1e-12, 1e6);
+        let mfp_range = Allowed::closed(1e-12, 1e-2);
+        let names = |n: &str| {
+            if two {
+                [format!("electrical.{n}1"), format!("electrical.{n}2")]
+            } else {
+                [format!("electrical.{n}"), format!("electrical.{n}")]
+            }
+        };
+        let [r1, r2] = names("resistivity");
+        rho_range.check(&r1, rho.0)?;
+        rho_range.check(&r2, rho.1)?;
+        if let Some((l1, l2)) = mfp {
+            let [n1, n2] = names("mean_free_path");
+            mfp_range.check(&n1, l1)?;
+            mfp_range.check(&n2, l2)?;
+        }
+        Allowed::closed(0.0, 1e3).check("electrical.film_resistance", self.film_resistance)?;
         let b1 = body(rho.0, mfp.map(|m| m.0)).map_err(|e| e.renamed("electrical.resistivity"))?;
         let b2 = body(rho.1, mfp.map(|m| m.1)).map_err(|e| e.renamed("electrical.resistivity"))?;
         non_negative("electrical.film_resistance", self.film_resistance)?;

@@ -12,7 +12,9 @@ mod features;
 mod parse;
 mod schema;
 
-pub use build::{build_contact, build_distribution, build_surface};
+pub use build::{
+    build_contact, build_distribution, build_surface, map_derived, most_extreme_input,
+};
 pub use features::{LawFamily, ProgramTarget, ELASTIC_LAWS, PROFILES};
 
 pub use schema::{
