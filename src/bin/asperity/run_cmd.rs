@@ -47,11 +47,15 @@ pub fn execute(
     plan_only: bool,
 ) -> crate::CliResult {
     if plan_only {
-        print!("{}", Plan::preview(scene, mode)?);
+        crate::out!("{}", Plan::preview(scene, mode)?);
         return Ok(());
     }
     let plan = Plan::new(scene, mode)?;
-    let results = plan.run()?;
+    // Runs longer than ~2 s show curve states done on stderr.
+    let bar = crate::progress::Progress::new("run", "curve states", crate::progress::QUIET_FOR);
+    let results = plan.run_with_progress(&|done, total| bar.update(done, total));
+    bar.finish();
+    let results = results?;
     report(&plan, &results, out, json)
 }
 
@@ -65,12 +69,16 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
         eprintln!("warning: {w}");
     }
     if json {
-        println!("{}", summary.to_json());
+        // stdout holds only the JSON; the files go to stderr.
+        for f in &files {
+            eprintln!("wrote {}", f.display());
+        }
+        crate::outln!("{}", summary.to_json());
         return Ok(());
     }
     let show = |x: Option<f64>, unit: &str| x.map_or("-".into(), |v| format!("{v:.4e} {unit}"));
     let num = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.4}"));
-    println!(
+    crate::outln!(
         "{} — law {}, mu = {}, lambda = {}, {} summits",
         summary.title.as_deref().unwrap_or("scene"),
         summary.law,
@@ -78,54 +86,54 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
         num(summary.maugis_lambda),
         summary.summits
     );
-    println!(
+    crate::outln!(
         "  separations {:.3e} .. {:.3e} m, {} points per leg, rtol {:e}",
         summary.closest_separation, summary.start_separation, summary.points, summary.rtol
     );
-    println!("  max load           {}", show(summary.max_load, "N"));
-    println!("  max real area      {}", show(summary.max_area, "m^2"));
-    println!("  max contacts       {}", show(summary.max_count, ""));
+    crate::outln!("  max load           {}", show(summary.max_load, "N"));
+    crate::outln!("  max real area      {}", show(summary.max_area, "m^2"));
+    crate::outln!("  max contacts       {}", show(summary.max_count, ""));
     let pull = match (summary.pull_off_load, plan.pull_off) {
         (Some(p), _) => format!("{p:.4e} N"),
         (None, true) => "none: no tensile load on retraction".into(),
         (None, false) => "-".into(),
     };
-    println!("  pull-off force     {pull}");
-    println!(
+    crate::outln!("  pull-off force     {pull}");
+    crate::outln!(
         "  hysteresis energy  {}",
         show(summary.hysteresis_energy, "J")
     );
-    println!(
+    crate::outln!(
         "  run time           {:.3} s ({} law evaluations)",
         summary.seconds, summary.evaluations
     );
     if let Some(m) = &summary.montecarlo {
-        println!(
+        crate::outln!(
             "  Monte Carlo        {} summits (seed {}), {:.3} s",
             m.summits, m.seed, m.seconds
         );
         if let (Some(p), Some(se)) = (m.max_load, m.max_load_standard_error) {
-            println!("    max load         {p:.4e} N +- {se:.2e} N (standard error)");
+            crate::outln!("    max load         {p:.4e} N +- {se:.2e} N (standard error)");
         }
-        println!(
+        crate::outln!(
             "    sampled pull-off {} (integral at the same separations: {})",
             show(m.pull_off_load, "N"),
             show(m.integral_sampled_pull_off_load, "N")
         );
-        println!(
+        crate::outln!(
             "    worst deviation from the integral: {} standard errors (< 5 expected)",
             m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))
         );
     }
     if !summary.warnings.is_empty() {
-        println!("  warnings:");
+        crate::outln!("  warnings:");
         for w in &summary.warnings {
-            println!("    {w}");
+            crate::outln!("    {w}");
         }
     }
-    println!("  wrote:");
+    crate::outln!("  wrote:");
     for f in files {
-        println!("    {}", f.display());
+        crate::outln!("    {}", f.display());
     }
     Ok(())
 }
