@@ -161,10 +161,7 @@ impl Plan {
     ///
     /// # Errors
     /// As [`Plan::run`].
-    pub fn run_with_progress(
-        &self,
-        progress: &(dyn Fn(usize, usize) + Sync),
-    ) -> Result<Results> {
+    pub fn run_with_progress(&self, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Results> {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;

@@ -88,7 +88,10 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
     );
     crate::outln!(
         "  separations {:.3e} .. {:.3e} m, {} points per leg, rtol {:e}",
-        summary.closest_separation, summary.start_separation, summary.points, summary.rtol
+        summary.closest_separation,
+        summary.start_separation,
+        summary.points,
+        summary.rtol
     );
     crate::outln!("  max load           {}", show(summary.max_load, "N"));
     crate::outln!("  max real area      {}", show(summary.max_area, "m^2"));
@@ -105,12 +108,15 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
     );
     crate::outln!(
         "  run time           {:.3} s ({} law evaluations)",
-        summary.seconds, summary.evaluations
+        summary.seconds,
+        summary.evaluations
     );
     if let Some(m) = &summary.montecarlo {
         crate::outln!(
             "  Monte Carlo        {} summits (seed {}), {:.3} s",
-            m.summits, m.seed, m.seconds
+            m.summits,
+            m.seed,
+            m.seconds
         );
         if let (Some(p), Some(se)) = (m.max_load, m.max_load_standard_error) {
             crate::outln!("    max load         {p:.4e} N +- {se:.2e} N (standard error)");

@@ -1,10 +1,10 @@
 //! `asperity sweep` and `asperity merge`.
 
+use crate::progress::Progress;
 use crate::CliError;
 use asperity::study::scene::Scene;
 use asperity::study::sweep::{merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary};
 use clap::Args;
-use crate::progress::Progress;
 use std::path::PathBuf;
 
 /// Arguments of `asperity sweep`.

@@ -151,10 +151,7 @@ fn read_rows(
                     break;
                 }
                 (true, None) => {
-                    return Err(bad(format!(
-                        "line {} is not a result row: {line:?}",
-                        i + 1
-                    )))
+                    return Err(bad(format!("line {} is not a result row: {line:?}", i + 1)))
                 }
             }
         }
@@ -166,9 +163,12 @@ fn read_rows(
 impl ResultsFile {
     /// Opens (or creates) `dir/results.csv` for the sweep `meta`; refuses a
     /// directory holding a different sweep; drops a half-written last line.
+    /// The directory stays locked ([`DirLock`]) until the file is dropped.
     ///
     /// # Errors
-    /// [`Error::Invalid`] naming `--out`.
+    /// [`Error::Invalid`] naming `out` (a different sweep, a row that is not
+    /// this sweep's); [`Error::Io`] when another process holds the lock or
+    /// a file cannot be read or written.
     pub fn open(dir: &Path, meta: &SweepMeta) -> Result<ResultsFile> {
         let lock = DirLock::acquire(dir)?;
         let meta_path = dir.join("sweep.json");
@@ -294,8 +294,8 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<PathBuf> {
                 format!("cannot read sweep.json ({e}): not a sweep directory"),
             )
         })?;
-        let meta: SweepMeta = serde_json::from_str(&text)
-            .map_err(|e| shard_err(dir, format!("sweep.json: {e}")))?;
+        let meta: SweepMeta =
+            serde_json::from_str(&text).map_err(|e| shard_err(dir, format!("sweep.json: {e}")))?;
         if let Some(f) = &first {
             if !f.same_sweep(&meta) {
                 return Err(shard_err(
@@ -304,16 +304,13 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<PathBuf> {
                 ));
             }
         }
-        let (part, torn, _) = read_rows(
-            &dir.join("results.csv"),
-            &meta.header,
-            meta.total,
-            "merge",
-        )
-        .map_err(|e| match e {
-            Error::Invalid { reason, .. } => shard_err(dir, reason),
-            other => other,
-        })?;
+        let (part, torn, _) =
+            read_rows(&dir.join("results.csv"), &meta.header, meta.total, "merge").map_err(
+                |e| match e {
+                    Error::Invalid { reason, .. } => shard_err(dir, reason),
+                    other => other,
+                },
+            )?;
         if torn {
             return Err(shard_err(
                 dir,
@@ -485,11 +482,21 @@ mod tests {
         std::fs::write(&csv, format!("{good}9,0,0,ok,1e0\n")).unwrap();
         let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
         assert_eq!(e.field(), Some("merge"), "{e}");
-        assert!(e.to_string().contains(&format!("shard {}", b.display())), "{e}");
-        assert!(e.to_string().contains("point 9 lies outside the sweep"), "{e}");
+        assert!(
+            e.to_string().contains(&format!("shard {}", b.display())),
+            "{e}"
+        );
+        assert!(
+            e.to_string().contains("point 9 lies outside the sweep"),
+            "{e}"
+        );
         std::fs::write(&csv, good.replace("1,0,0,ok", "2,0,0,ok")).unwrap();
         let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
-        assert!(e.to_string().contains("point 2 does not belong to its shard 2/2"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("point 2 does not belong to its shard 2/2"),
+            "{e}"
+        );
         std::fs::remove_file(b.join("sweep.json")).unwrap();
         let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
         assert_eq!(e.field(), Some("merge"), "{e}");
