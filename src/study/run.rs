@@ -206,6 +206,30 @@ fn contacts_of(m: &State, factor: f64) -> f64 {
         .map_or(m.evaluations as f64, |c| (c / factor).round())
 }
 
+/// Curve steps computed between two progress reports.
+pub const PROGRESS_CHUNK: usize = 16;
+
+/// [`LoadingModel::curve`] in chunks of steps, reporting each chunk.
+fn curve_with_progress(
+    model: &dyn LoadingModel,
+    program: &LoadingProgram,
+    outputs: &crate::loading::Observables,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Curve> {
+    let steps = program.steps();
+    let mut states = Vec::with_capacity(steps.len());
+    for chunk in steps.chunks(PROGRESS_CHUNK) {
+        states.extend(model.states(chunk, outputs)?);
+        progress(states.len(), steps.len());
+    }
+    let retract = states.split_off(program.points);
+    Ok(Curve {
+        program: *program,
+        approach: states,
+        retract,
+    })
+}
+
 impl Results {
     /// Largest approach load (N) of the curve, if loads were computed.
     pub fn max_load(&self) -> Option<f64> {
@@ -225,18 +249,28 @@ impl Plan {
     /// tolerance; [`crate::Error::Invalid`] when a maximum load cannot be
     /// reached.
     pub fn run(&self) -> Result<Results> {
-        self.run_unmapped()
+        self.run_with_progress(&|_, _| {})
+    }
+
+    /// [`Plan::run`], calling `progress(done, total)` as the states of the
+    /// curve are computed (in chunks of [`PROGRESS_CHUNK`] steps; the
+    /// states are the same as in one call).
+    ///
+    /// # Errors
+    /// As [`Plan::run`].
+    pub fn run_with_progress(&self, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Results> {
+        self.run_unmapped(progress)
             .map_err(|e| crate::study::scene::map_derived(&self.scene, e))
     }
 
-    fn run_unmapped(&self) -> Result<Results> {
+    fn run_unmapped(&self, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Results> {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;
         let closest = self.closest_separation(&model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
         let curve = if self.compute_retraction {
-            model.curve(&program, &self.curve_outputs)?
+            curve_with_progress(&model, &program, &self.curve_outputs, progress)?
         } else {
             let steps: Vec<_> = program
                 .separations()
