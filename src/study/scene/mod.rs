@@ -10,8 +10,10 @@
 mod build;
 mod parse;
 mod schema;
+mod topography;
 
 pub use build::{build_contact, build_distribution, build_surface};
+pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, MonteCarloSpec, OutputsSpec, ProgramSpec,

@@ -34,10 +34,7 @@ impl Scene {
         nu.check("materials.nu1", m.nu1)?;
         nu.check("materials.nu2", m.nu2)?;
         let s = &self.surface;
-        positive("surface.density", s.density)?;
-        positive("surface.radius", s.radius)?;
-        positive("surface.sigma", s.sigma)?;
-        positive("surface.nominal_area", s.nominal_area)?;
+        super::topography::validate_surface(s)?;
         match s.distribution.as_str() {
             "gaussian" | "exponential" => {}
             "weibull" => {
