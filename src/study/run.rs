@@ -37,6 +37,9 @@ pub struct Results {
     /// Where the results lie outside a model's validity (each a sentence
     /// naming the quantity, its value and the bound).
     pub warnings: Vec<String>,
+    /// The measured map's part (the other model's headline numbers when
+    /// asked), when the scene has `[surface] topography`.
+    pub topography: Option<super::measured::TopographyResults>,
 }
 
 /// A population summed over the program, beside the integral.
@@ -131,7 +134,23 @@ impl Plan {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;
-        let closest = self.closest_separation(&model)?;
+        // A measured map with summits = "measured": the exact sum over its
+        // summits replaces the integral.
+        let mut results = match super::measured::main_model(self)? {
+            Some(m) => self.run_on(&m, run_law, t0)?,
+            None => self.run_on(&model, run_law, t0)?,
+        };
+        results.topography = super::measured::results(self)?;
+        Ok(results)
+    }
+
+    fn run_on<M: LoadingModel>(
+        &self,
+        model: &M,
+        run_law: Arc<dyn AsperityLaw>,
+        t0: Instant,
+    ) -> Result<Results> {
+        let closest = self.closest_separation(model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
         let curve = if self.compute_retraction {
             model.curve(&program, &self.curve_outputs)?
@@ -181,6 +200,7 @@ impl Plan {
             evaluations,
             montecarlo,
             warnings: Vec::new(),
+            topography: None,
         })
     }
 }

@@ -35,6 +35,18 @@ pub fn run(args: &RunArgs) -> crate::CliResult {
     } else {
         PlanMode::Planned
     };
+    if scene.surface.topography.is_some() {
+        // The map's path is relative to the scene file's directory.
+        let base = args.scene.parent().unwrap_or(Path::new("."));
+        let plan = if args.plan {
+            print!("{}", Plan::preview_in(&scene, mode, base)?);
+            return Ok(());
+        } else {
+            Plan::new_in(&scene, mode, base)?
+        };
+        let results = plan.run()?;
+        return report(&plan, &results, &args.out, args.json);
+    }
     execute(&scene, mode, &args.out, args.json, args.plan)
 }
 

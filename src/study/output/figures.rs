@@ -71,6 +71,7 @@ pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<P
         chart.1.write_svg(&path, 800, 560)?;
         written.push(path);
     }
+    written.extend(super::topography::write_charts(plan, dir)?);
     Ok(written)
 }
 

@@ -157,6 +157,13 @@ pub enum Decision {
         /// `eta A_n / summits`.
         factor: f64,
     },
+    /// Which model of a measured map (`[surface] topography`).
+    Topography {
+        /// The choice, in a few words.
+        choice: String,
+        /// Why.
+        why: String,
+    },
 }
 
 impl Decision {
@@ -171,6 +178,7 @@ impl Decision {
             Decision::PullOff { .. } => "pull-off",
             Decision::HysteresisEnergy { .. } => "hysteresis energy",
             Decision::MonteCarlo { .. } => "montecarlo",
+            Decision::Topography { .. } => "topography",
         }
     }
 
@@ -203,6 +211,7 @@ impl Decision {
             }
             .into(),
             Decision::MonteCarlo { summits, seed, .. } => format!("{summits} summits, seed {seed}"),
+            Decision::Topography { choice, .. } => choice.clone(),
         }
     }
 
@@ -284,6 +293,7 @@ impl Decision {
                     String::new()
                 }
             ),
+            Decision::Topography { why, .. } => why.clone(),
         }
     }
 }
