@@ -129,6 +129,21 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
             m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))
         );
     }
+    if let Some(t) = &summary.topography {
+        println!(
+            "  topography         {} ({} x {}), {} summits, model {}",
+            t.file, t.rows, t.cols, t.summits.count, t.model
+        );
+        if let Some(o) = &t.other {
+            println!(
+                "    {} model: max load {}, contacts {}, pull-off {}",
+                o.model,
+                show(o.max_load, "N"),
+                num(o.max_count),
+                show(o.pull_off_load, "N")
+            );
+        }
+    }
     if !summary.warnings.is_empty() {
         println!("  warnings:");
         for w in &summary.warnings {

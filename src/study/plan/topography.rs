@@ -57,11 +57,7 @@ impl TopographyPlan {
                     ),
                 )
             })?;
-            Some(SummitLaw::scaled(
-                law.law.clone(),
-                contact.radius,
-                scaling,
-            )?)
+            Some(SummitLaw::scaled(law.law.clone(), contact.radius, scaling)?)
         } else {
             None
         };

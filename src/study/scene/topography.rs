@@ -133,7 +133,10 @@ pub(super) fn validate_surface(s: &SurfaceSpec) -> Result<()> {
                 return Err(Error::invalid(name, "only with surface.topography"));
             }
         }
-        for (name, v) in stats.into_iter().chain([("surface.nominal_area", s.nominal_area)]) {
+        for (name, v) in stats
+            .into_iter()
+            .chain([("surface.nominal_area", s.nominal_area)])
+        {
             if v.is_nan() {
                 return Err(Error::invalid(
                     name,
@@ -233,7 +236,8 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
     let map = read_map(&file)?
         .scaled(spec.height_scale)
         .map_err(|e| e.renamed("surface.height_scale"))?;
-    let topo = Topography::new(map, spec.pixel_size).map_err(|e| e.renamed("surface.pixel_size"))?;
+    let topo =
+        Topography::new(map, spec.pixel_size).map_err(|e| e.renamed("surface.pixel_size"))?;
     let c = topo
         .characterise(spec.periodic)
         .map_err(|e| Error::invalid(FIELD, format!("{}: {e}", file.display())))?;
