@@ -22,6 +22,10 @@ use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use toml::Value;
 
+/// Where the example scenes live (relative paths in them, such as a
+/// `topography` map, resolve against it).
+const SCENE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes");
+
 /// Points per leg of the base scenes.
 const POINTS: i64 = 12;
 
@@ -194,7 +198,7 @@ fn case(text: &str, preview_only: bool) -> Result<Outcome, String> {
         Err(e) => return Err(format!("parse failed without bad input (exit 1): {e}")),
     };
     if preview_only {
-        return match Plan::preview(&scene, PlanMode::Planned) {
+        return match Plan::preview_in(&scene, PlanMode::Planned, std::path::Path::new(SCENE_DIR)) {
             Ok(p) => Ok(Outcome::Ran {
                 warnings: p.warnings.len(),
             }),
@@ -202,7 +206,7 @@ fn case(text: &str, preview_only: bool) -> Result<Outcome, String> {
             Err(e) => Err(format!("plan failed (exit 1): {e}")),
         };
     }
-    let plan = match Plan::new(&scene, PlanMode::Planned) {
+    let plan = match Plan::new_in(&scene, PlanMode::Planned, std::path::Path::new(SCENE_DIR)) {
         Ok(p) => p,
         Err(e) if e.is_bad_input() => return Ok(Outcome::Refused(e.to_string())),
         Err(e) => return Err(format!("plan failed (exit 1): {e}")),

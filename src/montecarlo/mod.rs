@@ -44,10 +44,12 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
+mod measured;
 mod population;
 mod scaling;
 mod summation;
 
+pub use measured::MeasuredSummits;
 pub use population::{Population, PopulationSpec, Radii, RadiusSpec, MAX_SUMMITS, SAMPLING_BLOCK};
 pub use scaling::{SummitLaw, TABLE_TOLERANCE_FRACTION};
 pub use summation::{MonteCarlo, CHUNK, LANES, SERIAL_BELOW, SUM_BLOCK};

@@ -7,6 +7,7 @@
 //! it (`cargo build --lib --no-default-features`).
 
 pub mod cache;
+pub mod measured;
 pub mod output;
 pub mod plan;
 pub mod plot;

@@ -5,7 +5,6 @@ use super::plan::{McPlan, Plan};
 use super::scene::ProgramTarget;
 use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction};
 use crate::error::Result;
-use crate::gw::GwModel;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
 use crate::law::{AsperityLaw, LawKind};
 use crate::loading::{
@@ -57,6 +56,9 @@ pub struct Results {
     /// Where the results lie outside a model's validity (each a sentence
     /// naming the quantity, its value and the bound).
     pub warnings: Vec<String>,
+    /// The measured map's part (the other model's headline numbers when
+    /// asked), when the scene has `[surface] topography`.
+    pub topography: Option<super::measured::TopographyResults>,
 }
 
 /// A population summed over the program, beside the integral.
@@ -267,10 +269,27 @@ impl Plan {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;
-        let closest = self.closest_separation(&model)?;
+        // A measured map with summits = "measured": the exact sum over its
+        // summits replaces the integral.
+        let mut results = match super::measured::main_model(self)? {
+            Some(m) => self.run_on(&m, run_law, t0, progress)?,
+            None => self.run_on(&model, run_law, t0, progress)?,
+        };
+        results.topography = super::measured::results(self)?;
+        Ok(results)
+    }
+
+    fn run_on<M: LoadingModel>(
+        &self,
+        model: &M,
+        run_law: Arc<dyn AsperityLaw>,
+        t0: Instant,
+        progress: &(dyn Fn(usize, usize) + Sync),
+    ) -> Result<Results> {
+        let closest = self.closest_separation(model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
         let curve = if self.compute_retraction {
-            curve_with_progress(&model, &program, &self.curve_outputs, progress)?
+            curve_with_progress(model, &program, &self.curve_outputs, progress)?
         } else {
             let steps: Vec<_> = program
                 .separations()
@@ -322,13 +341,14 @@ impl Plan {
             stiction: None,
             elastic_approach: None,
             warnings,
+            topography: None,
         })
-        .and_then(|r| self.finish(&model, r))
+        .and_then(|r| self.finish(model, r))
     }
 
     /// The parts that follow from the curve: listed states, regime
     /// fractions, stiction, and their warnings.
-    fn finish(&self, model: &GwModel, mut r: Results) -> Result<Results> {
+    fn finish<M: LoadingModel>(&self, model: &M, mut r: Results) -> Result<Results> {
         let outputs = self
             .curve_outputs
             .clone()

@@ -35,6 +35,18 @@ pub fn run(args: &RunArgs) -> crate::CliResult {
     } else {
         PlanMode::Planned
     };
+    if scene.surface.topography.is_some() {
+        // The map's path is relative to the scene file's directory.
+        let base = args.scene.parent().unwrap_or(Path::new("."));
+        let plan = if args.plan {
+            print!("{}", Plan::preview_in(&scene, mode, base)?);
+            return Ok(());
+        } else {
+            Plan::new_in(&scene, mode, base)?
+        };
+        let results = plan.run()?;
+        return report(&plan, &results, &args.out, args.json);
+    }
     execute(&scene, mode, &args.out, args.json, args.plan)
 }
 
@@ -231,6 +243,25 @@ pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::
                     Some(None) => "no contact".into(),
                     None => "-".into(),
                 }
+            );
+        }
+    }
+    if let Some(t) = &summary.topography {
+        crate::outln!(
+            "  topography         {} ({} x {}), {} summits, model {}",
+            t.file,
+            t.rows,
+            t.cols,
+            t.summits.count,
+            t.model
+        );
+        if let Some(o) = &t.other {
+            crate::outln!(
+                "    {} model: max load {}, contacts {}, pull-off {}",
+                o.model,
+                show(o.max_load, "N"),
+                num(o.max_count),
+                show(o.pull_off_load, "N")
             );
         }
     }

@@ -209,6 +209,7 @@ pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<P
         }
         written.push(path);
     }
+    written.extend(super::topography::write_charts(plan, dir)?);
     Ok(written)
 }
 

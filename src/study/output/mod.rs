@@ -2,9 +2,11 @@
 
 mod feature_figures;
 mod figures;
+mod topography;
 
 pub use feature_figures::{feature_charts, FeatureChart};
 pub use figures::{charts, si_prefix, si_prefix_area, write_outputs};
+pub use topography::{HeadlineJson, MeasuredJson, MomentsJson, TopographySummary};
 
 use crate::loading::State;
 use crate::study::plan::Plan;
@@ -80,6 +82,11 @@ pub struct Summary {
     /// Where the scene or its results lie outside a model's validity, one
     /// sentence each (empty when none).
     pub warnings: Vec<String>,
+    /// The measured map (`[surface] topography`): its characterisation, the
+    /// model used and, when asked, the other model's headline numbers.
+    /// Absent without a map.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub topography: Option<TopographySummary>,
 }
 
 /// One listed state (approach).
@@ -357,6 +364,7 @@ impl Summary {
                 .chain(&results.warnings)
                 .cloned()
                 .collect(),
+            topography: topography::summary(plan, results),
         }
     }
 

@@ -189,6 +189,13 @@ pub enum Decision {
         /// Whether they are loads (else separations).
         loads: bool,
     },
+    /// Which model of a measured map (`[surface] topography`).
+    Topography {
+        /// The choice, in a few words.
+        choice: String,
+        /// Why.
+        why: String,
+    },
 }
 
 impl Decision {
@@ -206,6 +213,7 @@ impl Decision {
             Decision::Plasticity { .. } => "plasticity",
             Decision::Resistance { .. } => "resistance",
             Decision::Listed { .. } => "listed states",
+            Decision::Topography { .. } => "topography",
         }
     }
 
@@ -243,6 +251,7 @@ impl Decision {
             Decision::Listed { count, loads } => {
                 format!("{count} {}", if *loads { "loads" } else { "separations" })
             }
+            Decision::Topography { choice, .. } => choice.clone(),
         }
     }
 
@@ -357,6 +366,7 @@ impl Decision {
                 if *loads { ", each separation solved for its load" } else { "" },
                 if *loads { "largest load" } else { "closest separation" }
             ),
+            Decision::Topography { why, .. } => why.clone(),
         }
     }
 }

@@ -28,10 +28,12 @@
 mod decision;
 mod law;
 mod montecarlo;
+mod topography;
 
 pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
 pub use law::{LawChoice, LawSource};
 pub use montecarlo::McPlan;
+pub use topography::TopographyPlan;
 
 use crate::electrical::{Heating, Interaction, ResistanceObservables, Switch};
 use crate::error::{Error, Result};
@@ -44,6 +46,7 @@ use crate::material::plastic::{plasticity_index, Plasticity};
 use crate::material::AsperityContact;
 use crate::study::scene::{build_contact, build_distribution, build_surface, ProgramTarget, Scene};
 use std::fmt;
+use std::path::Path;
 use std::sync::Arc;
 
 /// The program starts where summits beyond the flat's reach carry less than
@@ -134,6 +137,8 @@ pub struct Plan {
     /// planning (the run adds its own, [`crate::study::Results::warnings`]);
     /// the summary lists both.
     pub warnings: Vec<String>,
+    /// The measured map, when the scene has `[surface] topography`.
+    pub topography: Option<TopographyPlan>,
 }
 
 impl Plan {
@@ -144,7 +149,29 @@ impl Plan {
     /// Whatever the scene's values make impossible (validated again here),
     /// naming the scene field.
     pub fn new(scene: &Scene, mode: PlanMode) -> Result<Plan> {
-        Plan::build(scene, mode, false)
+        Plan::build(scene, mode, false, Path::new("."))
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
+    }
+
+    /// As [`Plan::new`] for a scene read from a file in `base_dir`: a
+    /// `[surface] topography` path is relative to it ([`Plan::new`] uses
+    /// the working directory).
+    ///
+    /// # Errors
+    /// As [`Plan::new`], and [`crate::study::scene::resolve`].
+    pub fn new_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Plan> {
+        Plan::build(scene, mode, false, base_dir)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
+    }
+
+    /// As [`Plan::preview`] for a scene read from a file in `base_dir`.
+    ///
+    /// # Errors
+    /// As [`Plan::new_in`].
+    pub fn preview_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Plan> {
+        Plan::build(scene, mode, true, base_dir)
             .map_err(|e| crate::study::scene::map_derived(scene, e))
             .and_then(crate::study::validity::checked)
     }
@@ -156,19 +183,32 @@ impl Plan {
     /// # Errors
     /// As [`Plan::new`].
     pub fn preview(scene: &Scene, mode: PlanMode) -> Result<Plan> {
-        Plan::build(scene, mode, true)
+        Plan::build(scene, mode, true, Path::new("."))
             .map_err(|e| crate::study::scene::map_derived(scene, e))
             .and_then(crate::study::validity::checked)
     }
 
-    fn build(scene: &Scene, mode: PlanMode, preview: bool) -> Result<Plan> {
+    fn build(scene: &Scene, mode: PlanMode, preview: bool, base_dir: &Path) -> Result<Plan> {
         scene.validate()?;
+        let resolved = crate::study::scene::resolve(scene, base_dir)?;
+        let scene = resolved.as_ref().map_or(scene, |r| &r.scene);
         let contact = build_contact(scene)?;
         let surface = build_surface(scene)?;
         let distribution = build_distribution(&scene.surface)?;
         let mut decisions = Vec::new();
         let rtol = scene.accuracy.rtol;
         let law = law::choose(scene, &contact, mode, preview, &mut decisions)?;
+        let topography = match &resolved {
+            Some(r) => {
+                let t = TopographyPlan::new(r, &law, &contact)?;
+                decisions.push(Decision::Topography {
+                    choice: t.choice(),
+                    why: t.why(),
+                });
+                Some(t)
+            }
+            None => None,
+        };
         let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
         let (curve_outputs, accuracy) = outputs(scene, mode, &model, &law, &mut decisions)?;
         let resistance = resistance(scene, &surface, &mut decisions)?;
@@ -271,6 +311,7 @@ impl Plan {
                 None => None,
             },
             warnings,
+            topography,
         })
     }
 
@@ -305,7 +346,7 @@ impl Plan {
     /// # Errors
     /// [`Error::Invalid`] naming `program.max_load` when the load is not
     /// reached.
-    pub fn closest_separation(&self, model: &GwModel) -> Result<f64> {
+    pub fn closest_separation(&self, model: &impl LoadingModel) -> Result<f64> {
         match self.target {
             Target::Separation(d) => Ok(d),
             Target::Load(p) => model

@@ -11,11 +11,13 @@ mod build;
 mod features;
 mod parse;
 mod schema;
+mod topography;
 
 pub use build::{
     build_contact, build_distribution, build_surface, map_derived, most_extreme_input,
 };
 pub use features::{LawFamily, ProgramTarget, ELASTIC_LAWS, PROFILES};
+pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, ElectricalSpec, LawSpec, MaterialsSpec, MonteCarloSpec,

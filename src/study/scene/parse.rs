@@ -34,10 +34,7 @@ impl Scene {
         nu.check("materials.nu1", m.nu1)?;
         nu.check("materials.nu2", m.nu2)?;
         let s = &self.surface;
-        positive("surface.density", s.density)?;
-        positive("surface.radius", s.radius)?;
-        positive("surface.sigma", s.sigma)?;
-        positive("surface.nominal_area", s.nominal_area)?;
+        super::topography::validate_surface(s)?;
         match s.distribution.as_str() {
             "gaussian" | "exponential" => {}
             "weibull" => {
@@ -201,15 +198,21 @@ fn costs(scene: &Scene) -> Result<()> {
         });
     }
     let s = &scene.surface;
+    // With a measured map, density, radius and sigma come from the map
+    // (checked when it is read; the spec holds placeholders until then).
+    let measured = s.topography.is_some();
     for (name, x) in [
         ("surface.radius", s.radius),
         ("surface.sigma", s.sigma),
         ("adhesion.z0", scene.adhesion.z0),
     ] {
+        if measured && name != "adhesion.z0" {
+            continue;
+        }
         Allowed::closed(MIN_LENGTH, MAX_LENGTH).check(name, x)?;
     }
     let summits = s.density * s.nominal_area;
-    if !(1.0..=MAX_SURFACE_SUMMITS).contains(&summits) {
+    if !measured && !(1.0..=MAX_SURFACE_SUMMITS).contains(&summits) {
         let pick =
             super::build::most_extreme_input(scene, &["surface.density", "surface.nominal_area"]);
         return Err(Error::invalid(

@@ -161,18 +161,26 @@ pub struct MaterialsSpec {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SurfaceSpec {
-    /// Summit areal density `eta` (1/m^2), > 0.
+    /// Summit areal density `eta` (1/m^2), > 0. Required unless
+    /// `topography` is given (then it comes from the map and must not be
+    /// given); absent reads as NaN.
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub density: f64,
-    /// Summit radius `R` (m), > 0.
+    /// Summit radius `R` (m), > 0. Required unless `topography` is given.
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub radius: f64,
     /// Summit-height standard deviation `sigma` (m), > 0 (the decay length
-    /// for the exponential distribution).
+    /// for the exponential distribution). Required unless `topography` is
+    /// given.
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub sigma: f64,
     /// Height distribution: `"gaussian"` (default), `"exponential"`,
     /// `"weibull"`, `"truncated-gaussian"`, `"empirical"`.
     #[serde(default = "default_distribution")]
     pub distribution: String,
-    /// Nominal area `A_n` (m^2), > 0.
+    /// Nominal area `A_n` (m^2), > 0. Required unless `topography` is
+    /// given (default then: the map's area, rows x cols x pixel_size^2).
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub nominal_area: f64,
     /// Weibull shape `k` (> 0), for `distribution = "weibull"`.
     #[serde(default)]
@@ -183,6 +191,44 @@ pub struct SurfaceSpec {
     /// Measured summit heights (m), for `"empirical"`.
     #[serde(default)]
     pub heights: Option<Vec<f64>>,
+    /// A measured height map (`.npy`, or a text matrix `.txt`/`.csv`/`.asc`),
+    /// path relative to the scene file's directory. The summits come from
+    /// the map (`docs/surface.md`, "Scenes from measurements"): `density`,
+    /// `radius` and `sigma` must then not be given, and `distribution`
+    /// must stay `"gaussian"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub topography: Option<String>,
+    /// Pixel size of the map (m), > 0; required with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pixel_size: Option<f64>,
+    /// Factor from the map's height unit to metres (e.g. `1e-9` for nm),
+    /// > 0; default 1. Only with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height_scale: Option<f64>,
+    /// Treat the map as periodic (remove only the mean, wrap neighbours);
+    /// default false. Only with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub periodic: Option<bool>,
+    /// Which model of the map the study uses: `"measured"` (default: an
+    /// exact sum over the measured summits, each with its own height and
+    /// radius) or `"moments"` (Gaussian GW with the parameters McCool's
+    /// relations give from the measured moments). Only with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub summits: Option<String>,
+    /// Also run the other model of the map and report its headline numbers
+    /// in the summary's `topography` object; default false. Only with
+    /// `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compare: Option<bool>,
+}
+
+/// The value of a summit statistic not given in the scene.
+fn unset() -> f64 {
+    f64::NAN
+}
+
+fn is_unset(x: &f64) -> bool {
+    x.is_nan()
 }
 
 fn default_distribution() -> String {
