@@ -8,8 +8,15 @@ use std::hint::black_box;
 
 /// A rounded cone `sqrt(r^2 + rho^2) - rho` (rho = 50 nm), 41 nodes to 500 nm.
 fn table() -> Profile {
+    table_of(41)
+}
+
+/// The same rounded cone sampled at `n` nodes (a measured tip has hundreds).
+fn table_of(n: usize) -> Profile {
     let rho: f64 = 5e-8;
-    let r: Vec<f64> = (0..41).map(|i| i as f64 * 10.0 * rho / 40.0).collect();
+    let r: Vec<f64> = (0..n)
+        .map(|i| i as f64 * 10.0 * rho / (n - 1) as f64)
+        .collect();
     let f = r.iter().map(|x| (x * x + rho * rho).sqrt() - rho).collect();
     Profile::tabulated(r, f).unwrap()
 }
@@ -94,6 +101,11 @@ fn bench_build(c: &mut Criterion) {
     group.bench_function("cone", |b| {
         b.iter(|| black_box(Shaped::new(Profile::cone(0.2).unwrap(), 1e9, 0.05).unwrap()))
     });
+    for n in [41, 400] {
+        group.bench_function(format!("table_{n}_nodes"), |b| {
+            b.iter(|| black_box(Shaped::new(table_of(n), 1e8, 1.0).unwrap()))
+        });
+    }
     group.bench_function("md_cone", |b| {
         b.iter(|| black_box(ShapedMd::new(Profile::cone(0.2).unwrap(), 1e9, 0.05, 6e8).unwrap()))
     });
