@@ -37,6 +37,7 @@ fn assert_same(name: &str, got: &str, want: &str) {
 #[test]
 fn example_scenes_reproduce_their_golden_curves() {
     for name in [
+        "calibrated-gold",
         "dmt-stiff",
         "hertz-exponential",
         "max-load",

@@ -184,13 +184,15 @@ impl GwModel {
     }
 
     /// Default start of a program (m): the separation beyond which the
-    /// summits the flat can reach (`z > d + cutoff`) make up less than
-    /// `fraction` of all summits, `sigma q(1 - fraction) - cutoff`, capped
-    /// at the [interaction onset](LoadingModel::interaction_onset).
+    /// summits the flat can reach (`z > d + range`, `range` the law's
+    /// [`interaction_range`](AsperityLaw::interaction_range), its cutoff
+    /// for laws whose load vanishes) make up less than `fraction` of all
+    /// summits, `sigma q(1 - fraction) - range`, capped at the
+    /// [interaction onset](LoadingModel::interaction_onset).
     pub fn start_separation(&self, fraction: f64) -> f64 {
         let s = self.distribution.quantile(1.0 - fraction);
         let top = self.interaction_onset();
-        (self.surface.sigma * s - self.law.cutoff_interference()).min(top)
+        (self.surface.sigma * s - self.law.interaction_range()).min(top)
     }
 
     /// Interferences (m) the summits reach in a program that comes as close
@@ -459,11 +461,13 @@ impl LoadingModel for GwModel {
         }
     }
 
-    /// `sigma s_max - cutoff`, `s_max` the end of the numerical support:
-    /// beyond it every total is exactly zero.
+    /// `sigma s_max - range`, `s_max` the end of the numerical support and
+    /// `range` the law's [`interaction_range`](AsperityLaw::interaction_range):
+    /// beyond it every total is exactly zero (laws whose load vanishes) or
+    /// negligible (long-range laws, which are never cut).
     fn interaction_onset(&self) -> f64 {
         let (_, s_hi) = self.distribution.numerical_support(SUPPORT_EPS);
-        self.surface.sigma * s_hi - self.law.cutoff_interference()
+        self.surface.sigma * s_hi - self.law.interaction_range()
     }
 
     /// `rtol sigma`.

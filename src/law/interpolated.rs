@@ -451,6 +451,10 @@ impl AsperityLaw for InterpolatedLaw {
         self.inner.cutoff_interference()
     }
 
+    fn interaction_range(&self) -> f64 {
+        self.inner.interaction_range()
+    }
+
     fn max_interference(&self) -> f64 {
         self.inner.max_interference()
     }

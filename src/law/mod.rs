@@ -208,6 +208,18 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     /// `-inf` for laws whose force never vanishes (Bradley).
     fn cutoff_interference(&self) -> f64;
 
+    /// Interference (m) below which an asperity's load is negligible for
+    /// placing the default start of a loading program, never for
+    /// truncating a load: the [cutoff](AsperityLaw::cutoff_interference)
+    /// (the default) for laws whose load vanishes exactly; finite for
+    /// long-range laws whose load never vanishes but falls below a stated
+    /// fraction of the pull-off (the calibrated Lennard-Jones law:
+    /// [`crate::law::tabulated::RANGE_GAP`]). `-inf` for laws with no such
+    /// range (rigid Bradley).
+    fn interaction_range(&self) -> f64 {
+        self.cutoff_interference()
+    }
+
     /// Largest admissible interference (m); `+inf` except for rigid laws
     /// (Bradley: `z0`, where the gap closes and the load diverges).
     fn max_interference(&self) -> f64 {

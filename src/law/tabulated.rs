@@ -10,16 +10,38 @@
 //! `detach_bar` upwards). Without hysteresis (small mu: no S-curve) both
 //! branches are the same curve and attach/detach are `-inf`.
 //!
-//! Outside the table: below its first interference the rigid
-//! Lennard-Jones (Bradley) far field, scaled to match the first point,
-//! `P ~ (H^-2 - H^-8/4)` with `H = 1 - s Dbar` the rigid gap in `z0`
-//! (`s = alpha/(z0 Dbar) = mu (9 pi^2/16)^(1/3)`); above its last
-//! interference a Hertz continuation `Pbar = P_last + Dbar^(3/2) -
-//! Dbar_last^(3/2)`, `A^2 = A_last^2 + Dbar - Dbar_last` (an approximation:
-//! calibrate up to the loads you need). The far field is cut off at the
-//! rigid gap `H = far_field_cutoff_gap` (default 100: there the pull is
-//! `(8/3)/H^2 = 2.7e-4 pi w R`, < 0.02% of the pull-off), below which the
-//! load is exactly zero, so rough-surface integrals stay finite.
+//! Interference origin: `Dbar = 0` where the undeformed bodies are a rigid
+//! gap `z0` apart (the Lennard-Jones equilibrium separation, where the
+//! continuum laws' surfaces touch). This is the origin of every law in
+//! [`crate::law`]: the continuum laws' contact surface is the plane where
+//! the Lennard-Jones traction changes sign, so at large loads the
+//! calibrated law carries the Hertz/Maugis–Dugdale load at the same
+//! interference; Bradley uses it too. Measured from the geometric
+//! touching of the force-law planes instead, the same scene would shift by
+//! `z0` against the continuum laws (17 % in load at `Pbar = 4`, mu = 2).
+//!
+//! Outside the table, below its first interference (`Dbar_1`, rigid gap
+//! `H_1 = 1 - s Dbar_1 > 1`): Bradley's rigid far field times an elastic
+//! enhancement that decays as `H^(-7/2)`,
+//! `Pbar = -(8/3) (H^-2 - H^-8/4) [1 + (E_1 - 1) (H_1/H)^(7/2)]`,
+//! `H = 1 - s Dbar` the rigid gap in `z0`
+//! (`s = alpha/(z0 Dbar) = mu (9 pi^2/16)^(1/3)`), `E_1` the table's ratio
+//! to Bradley at its first point (so the load is continuous there). The
+//! exponent is first-order elasticity: the far-field traction
+//! `~ (w/z0) H^-3` over a patch of radius `sqrt(2 R z0 H)` deflects the
+//! half-space by `u ~ mu^(3/2) z0 H^(-5/2)`, changing the force by a
+//! relative `~ 2u/(H z0) ~ mu^(3/2) H^(-7/2)`; the full solver confirms it
+//! (mu = 1.59: enhancement 2.4e-2, 3.9e-3, 2.6e-4 at H = 6, 10, 20 against
+//! 3.9e-3, 3.8e-4 predicted from H = 6). The load is never cut: it decays
+//! like `H^-2`, its rough-surface integrals are finite without a cut, and a
+//! cut at any gap drops a share `~ (4/3)/H_cut` of the pull-off once sigma
+//! is far larger than `H_cut z0`. [`RANGE_GAP`] only places the default
+//! start of a loading program ([`AsperityLaw::interaction_range`]).
+//!
+//! Above the table's last interference (the calibration reaches
+//! `Pbar >= 100`, [`crate::sphere::calibrate::TABLE_MIN_LOAD_BAR`]) a
+//! Hertz continuation `Pbar = P_last + Dbar^(3/2) - Dbar_last^(3/2)`,
+//! `A^2 = A_last^2 + Dbar - Dbar_last` (adhesion changes slowly there).
 
 use super::{AsperityLaw, Branch, ContactState, Control, Instability};
 use crate::error::{Error, Result};
@@ -71,15 +93,23 @@ pub struct CurveTable {
     pub zero_load_radius_bar: Option<f64>,
     /// `s = mu (9 pi^2/16)^(1/3)`: rigid gap `H = 1 - s Dbar` for the far field.
     pub far_field_scale: f64,
-    /// Rigid gap `H` (units `z0`) below which the far-field load is set to
-    /// zero: interference cut-off `Dbar = (1 - H)/s`.
-    pub far_field_cutoff_gap: f64,
 }
 
+/// Rigid gap (units `z0`) beyond which a single asperity's Lennard-Jones
+/// pull, `(8/3)/H^2 = 2.7e-4 pi w R`, is below 0.02 % of its pull-off:
+/// where the default start of a loading program is placed. The load is
+/// not cut there.
+pub const RANGE_GAP: f64 = 100.0;
+
+/// Exponent of the far-field elastic enhancement's decay, `(H_1/H)^(7/2)`
+/// (first-order elasticity, see the module notes).
+pub const ENHANCEMENT_DECAY: f64 = 3.5;
+
 impl CurveTable {
-    /// Interference `Dbar` below which the load is zero.
-    pub fn cutoff_bar(&self) -> f64 {
-        (1.0 - self.far_field_cutoff_gap) / self.far_field_scale
+    /// Interference `Dbar = (1 - RANGE_GAP)/s` at the rigid gap
+    /// [`RANGE_GAP`].
+    pub fn range_bar(&self) -> f64 {
+        (1.0 - RANGE_GAP) / self.far_field_scale
     }
 }
 
@@ -113,6 +143,9 @@ pub struct Tabulated {
     scales: MaugisScales,
 }
 
+/// Bradley's load `-(8/3) (H^-2 - H^-8/4)` in `pi w R`: this factor.
+const BRADLEY: f64 = 8.0 / 3.0;
+
 /// Rigid LJ sphere force shape `H^-2 - H^-8/4`.
 fn bradley_shape(h: f64) -> f64 {
     let x2 = 1.0 / (h * h);
@@ -142,13 +175,6 @@ impl Tabulated {
                 "must be finite and > 0",
             ));
         }
-        let first = table.detached.interference_bar[0];
-        if !(table.cutoff_bar() < first) {
-            return Err(Error::invalid(
-                "table.far_field_cutoff_gap",
-                "the cut-off must lie below the table's first interference",
-            ));
-        }
         Ok(Tabulated {
             table,
             detached,
@@ -168,14 +194,15 @@ impl Tabulated {
         let xs = it.load.x();
         let (first, last) = (xs[0], xs[xs.len() - 1]);
         if d < first {
-            if d < self.table.cutoff_bar() {
-                return (0.0, 0.0);
-            }
             let s = self.table.far_field_scale;
             let (h, h1) = (1.0 - s * d, 1.0 - s * first);
             let p1 = it.load.y()[0];
             if h1 > 1.0 {
-                return (p1 * bradley_shape(h) / bradley_shape(h1), 0.0);
+                let (b, b1) = (bradley_shape(h), bradley_shape(h1));
+                // E_1 = p1/Bradley(h1); Pbar = Bradley(h) [1 + (E_1 - 1) (h1/h)^3.5].
+                let excess = p1 / (-BRADLEY * b1) - 1.0;
+                let decay = (h1 / h).powf(ENHANCEMENT_DECAY);
+                return (-BRADLEY * b * (1.0 + excess * decay), 0.0);
             }
             return (p1, it.radius.y()[0]);
         }
@@ -223,8 +250,14 @@ impl AsperityLaw for Tabulated {
             .map_or(f64::NEG_INFINITY, |a| a * self.scales.interference)
     }
 
+    /// `-inf`: the Lennard-Jones far field is never cut.
     fn cutoff_interference(&self) -> f64 {
-        self.table.cutoff_bar() * self.scales.interference
+        f64::NEG_INFINITY
+    }
+
+    /// The interference at the rigid gap [`RANGE_GAP`].
+    fn interaction_range(&self) -> f64 {
+        self.table.range_bar() * self.scales.interference
     }
 
     fn breakpoints(&self, branch: Branch) -> Vec<f64> {
@@ -232,9 +265,9 @@ impl AsperityLaw for Tabulated {
             Branch::Approach => self.table.attach_bar,
             Branch::Retract => self.table.detach_bar,
         };
-        let mut v = vec![self.cutoff_interference()];
-        v.extend(b.map(|x| x * self.scales.interference));
-        v
+        b.map(|x| x * self.scales.interference)
+            .into_iter()
+            .collect()
     }
 
     fn pull_off(&self, control: Control) -> Option<Instability> {
@@ -293,7 +326,6 @@ mod tests {
             jump_out: None,
             zero_load_radius_bar: Some(crate::law::jkr::ZERO_LOAD_RADIUS),
             far_field_scale: 1.77,
-            far_field_cutoff_gap: 100.0,
         }
     }
 
@@ -345,9 +377,9 @@ mod tests {
         let e = Tabulated::new(Arc::new(jkr_table()), -1.0, 5e10, 0.5).unwrap_err();
         assert_eq!(e.field(), Some("radius"));
         let mut t = jkr_table();
-        t.far_field_cutoff_gap = 2.0;
+        t.far_field_scale = 0.0;
         let e = Tabulated::new(Arc::new(t), 1e-6, 5e10, 0.5).unwrap_err();
-        assert_eq!(e.field(), Some("table.far_field_cutoff_gap"));
+        assert_eq!(e.field(), Some("table.far_field_scale"));
         let e = Tabulated::new(Arc::new(jkr_table()), 1e-6, 5e10, f64::NAN).unwrap_err();
         assert_eq!(e.field(), Some("work_of_adhesion"));
     }

@@ -648,11 +648,12 @@ impl LoadingModel for MonteCarlo {
         self.run(steps, observables)
     }
 
-    /// The top summit's height minus the law's cutoff (per radius, the
-    /// loosest).
+    /// The top summit's height minus the law's
+    /// [`interaction_range`](crate::law::AsperityLaw::interaction_range) (its cutoff
+    /// for laws whose load vanishes; per radius, the loosest).
     fn interaction_onset(&self) -> f64 {
         let z = self.population.heights();
-        let cut = self.law.law().cutoff_interference();
+        let cut = self.law.law().interaction_range();
         let top = z[z.len() - 1];
         if cut == f64::NEG_INFINITY {
             return f64::INFINITY;

@@ -398,9 +398,9 @@ fn law_why(reason: &LawReason, d: &Decision) -> String {
              below 1e-6 x rtol x sigma"
         ),
         LawReason::Calibrated { cached, path } => format!(
-            "full Lennard-Jones sphere solver (paraboloid), tabulated on both branches, with the \
-             Lennard-Jones attraction kept out to a rigid gap of 100 z0 (the Dugdale laws cut it at \
-             ~z0: on rough surfaces this tail can dominate the pull-off); {} {path}",
+            "full Lennard-Jones sphere solver (paraboloid), tabulated on both branches to 100 pi w R, \
+             with the Lennard-Jones attraction never cut (the Dugdale laws cut it at ~z0: on rough \
+             surfaces this tail can dominate the pull-off); {} {path}",
             if *cached {
                 "read from the cache"
             } else {
