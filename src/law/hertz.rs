@@ -11,6 +11,9 @@ use std::f64::consts::PI;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Hertz {
     radius: f64,
+    /// `R^(1/2)` (m^(1/2)): `a = R^(1/2) delta^(1/2)` shares the load's
+    /// square root (one `sqrt` per summit in a Monte Carlo sum).
+    sqrt_radius: f64,
     /// `(4/3) E* R^(1/2)` (N/m^(3/2)).
     stiffness: f64,
 }
@@ -25,6 +28,7 @@ impl Hertz {
         positive("contact_modulus", contact_modulus)?;
         Ok(Hertz {
             radius,
+            sqrt_radius: radius.sqrt(),
             stiffness: 4.0 / 3.0 * contact_modulus * radius.sqrt(),
         })
     }
@@ -43,7 +47,7 @@ impl Hertz {
     #[inline]
     pub fn radius_at(&self, delta: f64) -> f64 {
         if delta > 0.0 {
-            (self.radius * delta).sqrt()
+            self.sqrt_radius * delta.sqrt()
         } else {
             0.0
         }
@@ -79,14 +83,15 @@ impl AsperityLaw for Hertz {
         load: &mut [f64],
         radius: &mut [f64],
     ) {
-        let (k, r) = (self.stiffness, self.radius);
+        let (k, sr) = (self.stiffness, self.sqrt_radius);
         pulp::Arch::new().dispatch(
             #[inline(always)]
             || {
                 for ((&d, l), a) in delta.iter().zip(load.iter_mut()).zip(radius.iter_mut()) {
                     let d = if d > 0.0 { d } else { 0.0 };
-                    *l = k * d * d.sqrt();
-                    *a = (r * d).sqrt();
+                    let s = d.sqrt();
+                    *l = k * d * s;
+                    *a = sr * s;
                 }
             },
         );

@@ -518,6 +518,9 @@ impl ChunkFactors<'_> {
     #[inline]
     fn scale(&self, load: &mut [f64], radius: &mut [f64]) {
         match *self {
+            // Summits of the law's own radius: nothing to scale (a pass
+            // over the chunk saved).
+            ChunkFactors::Uniform([_, 1.0, 1.0]) => {}
             ChunkFactors::Uniform(f) => pulp::Arch::new().dispatch(
                 #[inline(always)]
                 || {
