@@ -28,6 +28,7 @@ use crate::heights::HeightDistribution;
 use crate::law::{AsperityLaw, Branch};
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
 use crate::numeric::quadrature::{integrate_pieces_n, kronrod21_n, QuadOptions};
+use rayon::prelude::*;
 use std::sync::Arc;
 
 /// How to integrate.
@@ -457,6 +458,21 @@ impl LoadingModel for GwModel {
             }
             _ => self.quadrature(separation, history, observables),
         }
+    }
+
+    /// The states of `steps` computed in parallel (rayon): each state is
+    /// independent of the others and computed by the same serial code, so
+    /// the results are bit-identical for any thread count, in step order.
+    ///
+    /// # Errors
+    /// As [`LoadingModel::state`] (the first failing step's error).
+    fn states(&self, steps: &[(f64, History)], observables: &Observables) -> Result<Vec<State>> {
+        let results: Vec<Result<State>> = steps
+            .par_iter()
+            .map(|&(d, h)| self.state(d, h, observables))
+            .collect();
+        // Collected in order first, so the reported error is deterministic.
+        results.into_iter().collect()
     }
 
     /// `sigma s_max - cutoff`, `s_max` the end of the numerical support:
