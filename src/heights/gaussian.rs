@@ -32,6 +32,17 @@ impl HeightDistribution for Gaussian {
         normal::pdf(s)
     }
 
+    /// `-s^2/2 - ln sqrt(2 pi)`.
+    fn log_pdf(&self, s: f64) -> f64 {
+        -0.5 * s * s - LN_SQRT_2PI
+    }
+
+    /// `exp(-(s - r)(s + r)/2)`: no underflow of either density, and the
+    /// difference `s - r` is exact for nearby heights.
+    fn pdf_ratio(&self, s: f64, r: f64) -> f64 {
+        (-0.5 * (s - r) * (s + r)).exp()
+    }
+
     fn tail(&self, s: f64) -> f64 {
         normal::tail(s)
     }

@@ -367,6 +367,10 @@ impl AsperityLaw for InterpolatedLaw {
         self.inner.history_breakpoints()
     }
 
+    fn contact_loss_peak(&self, recovery: f64) -> Option<f64> {
+        self.inner.contact_loss_peak(recovery)
+    }
+
     fn attach_interference(&self) -> f64 {
         self.inner.attach_interference()
     }

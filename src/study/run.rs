@@ -3,7 +3,9 @@
 use super::plan::{McPlan, Plan};
 use crate::error::Result;
 use crate::law::AsperityLaw;
-use crate::loading::{Curve, History, LoadingModel, LoadingProgram, PullOff, State, SLOTS};
+use crate::loading::{
+    hysteresis_energy_to, Curve, History, LoadingModel, LoadingProgram, PullOff, State, SLOTS,
+};
 use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
 use std::sync::Arc;
 use std::time::Instant;
@@ -149,11 +151,17 @@ impl Plan {
             }
         };
         let pull_off = if self.pull_off {
-            model.pull_off(closest, PULL_OFF_SAMPLES)?
+            model.pull_off(closest, self.start, PULL_OFF_SAMPLES)?
         } else {
             None
         };
-        let hysteresis_energy = if self.hysteresis_energy {
+        let hysteresis_energy = if self.hysteresis_energy && self.compute_retraction {
+            Some(hysteresis_energy_to(
+                &model,
+                &program,
+                model.accuracy().rel_tol,
+            )?)
+        } else if self.hysteresis_energy {
             curve.hysteresis_energy()
         } else {
             None

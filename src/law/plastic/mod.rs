@@ -202,6 +202,10 @@ macro_rules! plastic_asperity_law {
                 $crate::law::plastic::PlasticLoading::breakpoint_interferences(self)
             }
 
+            fn contact_loss_peak(&self, recovery: f64) -> Option<f64> {
+                $crate::law::plastic::unloading::contact_loss_peak(self, recovery)
+            }
+
             fn attach_interference(&self) -> f64 {
                 0.0
             }

@@ -133,3 +133,34 @@ fn constructors_name_bad_fields() {
         Some("contact_modulus")
     );
 }
+
+#[test]
+fn contact_loss_peak_is_where_the_unloading_curve_ends() {
+    for law in laws() {
+        let lim = law.elastic_limit();
+        // Elastic peaks: no history-dependent point.
+        assert_eq!(law.contact_loss_peak(0.5 * lim), None);
+        assert_eq!(law.contact_loss_peak(f64::NAN), None);
+        for k in [3.0, 30.0, 300.0] {
+            let dm = k * law.critical_interference();
+            let recovery =
+                unloading::Unloading::from_peak(dm, law.state(dm, Branch::Approach), E).span;
+            if recovery <= lim {
+                continue;
+            }
+            let got = law.contact_loss_peak(recovery).unwrap();
+            let span =
+                unloading::Unloading::from_peak(got, law.state(got, Branch::Approach), E).span;
+            assert!(
+                (span / recovery - 1.0).abs() < 1e-12,
+                "{:?} {k}: {got} vs {dm}",
+                law.variant()
+            );
+            // That peak's retraction branch is free just below `got -
+            // recovery`, in contact just above.
+            let x = got - recovery;
+            assert_eq!(law.state_after(x - 1e-9 * recovery, got).load, 0.0);
+            assert!(law.state_after(x + 1e-6 * recovery, got).load > 0.0);
+        }
+    }
+}

@@ -104,6 +104,46 @@ pub fn state_after<L: PlasticLoading + ?Sized>(
     .plastic_state(delta)
 }
 
+/// The peak interference `delta_max` (m) whose unloading curve loses
+/// contact after the flat retracted by `recovery` (m) from the closest
+/// approach: the root of `span(delta_max) = recovery` (`span = delta_max -
+/// delta_res`, continuous and non-decreasing in `delta_max`), by bisection to
+/// a few ulp. `None` when `recovery` does not exceed the span at the
+/// elastic limit (elastic peaks lose contact at `delta = 0`, a fixed
+/// breakpoint) or is not finite. The GW integral splits its retraction
+/// quadrature there: the integrand has a kink (load `~ x^(3/2)`, radius
+/// `~ x^(1/2)`) at the summit that just lost contact.
+pub fn contact_loss_peak<L: PlasticLoading + ?Sized>(law: &L, recovery: f64) -> Option<f64> {
+    let e = law.asperity().contact_modulus;
+    let span = |dm: f64| Unloading::from_peak(dm, law.loading(dm), e).span;
+    let mut lo = law.elastic_limit();
+    if !(recovery.is_finite() && lo > 0.0 && recovery > span(lo)) {
+        return None;
+    }
+    let mut hi = 2.0 * lo.max(recovery);
+    let mut grown = 0;
+    while span(hi) < recovery {
+        lo = hi;
+        hi *= 2.0;
+        grown += 1;
+        if grown > 200 {
+            return None;
+        }
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if !(mid > lo && mid < hi) {
+            break;
+        }
+        if span(mid) < recovery {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(hi)
+}
+
 /// One asperity's memory for any interference path (approach, retract,
 /// reload, ...): its largest interference so far.
 #[derive(Debug, Clone, Copy, PartialEq)]
