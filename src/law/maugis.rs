@@ -261,18 +261,25 @@ impl MaugisCurve {
             nodes: Vec::new(),
         };
         let samples = curve.scan();
+        // One scan: every sample's raw quantities computed once.
+        let raws: Vec<Raw> = samples.iter().map(|&a| curve.raw(a)).collect();
         // Displacement-controlled snap: the minimum of Dbar.
         let top = if curve.non_contact_stable {
             curve.detach = curve.non_contact_point(b);
             Angle::from_y(0.0)
         } else {
-            let a = curve.refine(&samples, |r| r.interference, |c, a| c.d_interference(a));
+            let a = curve.refine(
+                &samples,
+                &raws,
+                |r| r.interference,
+                |c, a| c.d_interference(a),
+            );
             curve.detach = curve.point(a);
             a
         };
         curve.build_table(top);
         // Load-controlled pull-off: the minimum of Pbar (contact branch).
-        let ap = curve.refine(&samples, |r| r.load, |c, a| c.d_load(a));
+        let ap = curve.refine(&samples, &raws, |r| r.load, |c, a| c.d_load(a));
         curve.pull_off = curve.point(ap);
         curve.pull_angle = ap;
         // Zero load on the stable side of the pull-off (t below it).
@@ -544,12 +551,10 @@ impl MaugisCurve {
                 acc = acc * u2 + k;
             }
             acc * u2 * u
-        } else if angle.uses_t() {
-            let (s2, c2) = (2.0 * t).sin_cos();
-            s2 - 2.0 * t * c2
         } else {
-            let (s2, c2) = (2.0 * angle.y).sin_cos();
-            s2 + 2.0 * t * c2
+            // Double angle: sin 2t = 2 sin cos, cos 2t = (cos - sin)(cos + sin)
+            // (absolute error a few ulp, as a second sin_cos of 2t or 2y).
+            2.0 * sin * cos - 2.0 * t * ((cos - sin) * (cos + sin))
         };
         let alpha = 0.25 * lam * f;
         // t sin t - (1 - cos t), with 1 - cos t = sin^2 t/(1 + cos t).
@@ -621,17 +626,18 @@ impl MaugisCurve {
         v
     }
 
-    /// Angle minimising `value` over the samples, refined as the root of
+    /// Angle minimising `value` over the samples (`raws` evaluated at
+    /// `samples`), refined as the root of
     /// its derivative `deriv` (a sign change around the sampled minimum).
     fn refine(
         &self,
         samples: &[Angle],
+        raws: &[Raw],
         value: impl Fn(&Raw) -> f64,
         deriv: impl Fn(&Self, Angle) -> f64,
     ) -> Angle {
-        let vals: Vec<f64> = samples.iter().map(|&a| value(&self.raw(a))).collect();
-        let k = (0..vals.len())
-            .min_by(|&i, &j| vals[i].total_cmp(&vals[j]))
+        let k = (0..raws.len())
+            .min_by(|&i, &j| value(&raws[i]).total_cmp(&value(&raws[j])))
             .unwrap_or(0);
         let lo = samples[k.saturating_sub(1)];
         let hi = samples[(k + 1).min(samples.len() - 1)];
