@@ -302,6 +302,15 @@ impl GwModel {
         };
         // A rigid law is bounded by its own divergence (checked in `new`).
         let s_hi = top.min((d + law.max_interference()) / sigma);
+        let mask = obs.mask();
+        if !(s_hi > s_lo) {
+            return Ok(State {
+                separation: d,
+                totals: Totals::new([0.0; SLOTS], [0.0; SLOTS], mask),
+                method: MethodUsed::Quadrature,
+                evaluations: 0,
+            });
+        }
         let points = self.split_points(d, history, s_lo, s_hi);
         // Load alone needs no contact radius: cheaper for tabulated laws.
         let load_only = obs.load_only();

@@ -4,6 +4,9 @@ use super::quad::power_moment;
 use super::HeightDistribution;
 use crate::special::{gaussian_fn, normal};
 
+/// `ln sqrt(2 pi)`.
+const LN_SQRT_2PI: f64 = 0.918_938_533_204_672_8;
+
 /// Gaussian summit heights (Greenwood & Williamson 1966): `s` standard
 /// normal, so the surface's `sigma` (m) is the summit-height standard
 /// deviation and `h = d/sigma` is measured from the mean summit height.
