@@ -47,10 +47,12 @@ fn no_tensile_load_inside_the_program_means_no_pull_off() {
 
 #[test]
 fn the_pull_off_lies_in_the_program_and_is_its_most_tensile_load() {
-    for lambda in [1e-3, 1.0] {
+    // lambda = 1e-3: tensile from h ~ 1.3, most tensile at the program's
+    // end; lambda = 1: tensile only beyond h ~ 6, inside an 8-sigma program.
+    for (lambda, top) in [(1e-3, 2.0), (1e-3, 8.0), (1.0, 8.0)] {
         let m = model(lambda);
         let sigma = m.surface().sigma;
-        let (closest, start) = (0.0, 2.0 * sigma);
+        let (closest, start) = (0.0, top * sigma);
         let p = m.pull_off(closest, start, 64).unwrap().unwrap();
         assert!(p.separation >= closest && p.separation <= start, "{p:?}");
         let grid = retraction_loads(&m, closest, start, 201);
@@ -64,4 +66,9 @@ fn the_pull_off_lies_in_the_program_and_is_its_most_tensile_load() {
     }
     let m = model(1.0);
     assert!(m.pull_off(0.0, f64::NAN, 64).is_err());
+    // lambda = 1, 2-sigma program: every retraction load is compressive.
+    let sigma = m.surface().sigma;
+    let grid = retraction_loads(&m, 0.0, 2.0 * sigma, 41);
+    assert!(grid.iter().all(|&(_, p)| p > 0.0), "{grid:?}");
+    assert_eq!(m.pull_off(0.0, 2.0 * sigma, 64).unwrap(), None);
 }
