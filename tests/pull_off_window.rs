@@ -36,7 +36,7 @@ fn no_tensile_load_inside_the_program_means_no_pull_off() {
     // lambda = 1e-3 (DMT-like): a deep, short program stays compressive.
     let m = model(1e-3);
     let sigma = m.surface().sigma;
-    let (closest, start) = (-2.0 * sigma, -1.0 * sigma);
+    let (closest, start) = (-2.0 * sigma, -sigma);
     let loads = retraction_loads(&m, closest, start, 41);
     assert!(loads.iter().all(|&(_, p)| p > 0.0), "{loads:?}");
     // Up to the onset there is a tensile load (what the old search found).

@@ -25,7 +25,7 @@
 use crate::error::{Allowed, Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::law::{AsperityLaw, Branch};
+use crate::law::{AsperityLaw, Branch, LawCursor};
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
 use crate::numeric::quadrature::{integrate_pieces_n, kronrod21_n, QuadOptions};
 use rayon::prelude::*;
@@ -314,25 +314,26 @@ impl GwModel {
         let points = self.split_points(d, history, s_lo, s_hi);
         // Load alone needs no contact radius: cheaper for tabulated laws.
         let load_only = obs.load_only();
+        // Consecutive nodes lie in one quadrature panel: a tabulated law
+        // finds its own panel by a short walk from the previous one
+        // (`state_near`, the same values as `state`).
+        let mut cursor = LawCursor::default();
         let eval = |s: f64| -> [f64; SLOTS] {
             let delta = sigma * s - d;
             let w = match far {
                 Some(r) => dist.pdf_ratio(s, r),
                 None => dist.pdf(s),
             };
+            let delta_max = match history {
+                History::Approach => None,
+                History::Retract { closest } => Some(sigma * s - closest),
+            };
             if load_only {
-                let p = match history {
-                    History::Approach => law.load(delta, Branch::Approach),
-                    History::Retract { closest } => law.load_after(delta, sigma * s - closest),
-                };
                 let mut v = [0.0; SLOTS];
-                v[0] = p * w;
+                v[0] = law.load_near(delta, delta_max, &mut cursor) * w;
                 return v;
             }
-            let st = match history {
-                History::Approach => law.state(delta, Branch::Approach),
-                History::Retract { closest } => law.state_after(delta, sigma * s - closest),
-            };
+            let st = law.state_near(delta, delta_max, &mut cursor);
             obs.evaluate(&st).map(|x| x * w)
         };
         let opts = QuadOptions {

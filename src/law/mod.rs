@@ -27,6 +27,7 @@
 
 pub mod bradley;
 pub mod cos;
+mod cursor;
 pub mod dmt;
 pub mod errors;
 pub mod hertz;
@@ -41,6 +42,7 @@ pub mod tabulated;
 
 pub use bradley::Bradley;
 pub use cos::Cos;
+pub use cursor::LawCursor;
 pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
@@ -145,6 +147,36 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     /// that can skip the contact radius override it.
     fn load_after(&self, delta: f64, delta_max: f64) -> f64 {
         self.state_after(delta, delta_max).load
+    }
+
+    /// [`state`](AsperityLaw::state) on approach (`delta_max = None`) or
+    /// [`state_after`](AsperityLaw::state_after) on retraction from
+    /// `delta_max` (m), bit for bit, for a sequence of nearby interferences
+    /// (the nodes of one quadrature panel): tabulated laws start their
+    /// panel search at `cursor` (updated) instead of bisecting the whole
+    /// table. Default: ignores the cursor.
+    fn state_near(
+        &self,
+        delta: f64,
+        delta_max: Option<f64>,
+        cursor: &mut LawCursor,
+    ) -> ContactState {
+        let _ = cursor;
+        match delta_max {
+            None => self.state(delta, Branch::Approach),
+            Some(m) => self.state_after(delta, m),
+        }
+    }
+
+    /// Load only (N) of [`state_near`](AsperityLaw::state_near), as
+    /// [`load`](AsperityLaw::load) / [`load_after`](AsperityLaw::load_after)
+    /// bit for bit.
+    fn load_near(&self, delta: f64, delta_max: Option<f64>, cursor: &mut LawCursor) -> f64 {
+        let _ = cursor;
+        match delta_max {
+            None => self.load(delta, Branch::Approach),
+            Some(m) => self.load_after(delta, m),
+        }
     }
 
     /// Many asperities in one call (the Monte Carlo hot loop): for each `i`,
