@@ -237,29 +237,9 @@ impl MaugisCurve {
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `lambda`.
     pub fn new(lambda: f64) -> Result<Self> {
-        Allowed::closed(LAMBDA_MIN, LAMBDA_MAX).check("lambda", lambda)?;
-        let b = 8.0 * lambda / (3.0 * PI);
-        let qa = PI * lambda / 4.0;
-        let qb = 4.0 * lambda * lambda / 3.0 * (FRAC_PI_2 - 1.0);
-        let c0 = 2.0 / (qb + (qb * qb + 4.0 * qa).sqrt());
-        let mut curve = MaugisCurve {
-            lambda,
-            b,
-            d_cut: -2.0 / (PI * lambda),
-            junction: MaugisPoint {
-                radius_bar: 0.0,
-                outer_radius_bar: c0,
-                load_bar: -0.5 * PI * lambda * c0 * c0,
-                interference_bar: -4.0 / 3.0 * lambda * c0,
-            },
-            detach: MaugisPoint::ZERO,
-            jump_in: MaugisPoint::ZERO,
-            pull_off: MaugisPoint::ZERO,
-            zero_load: MaugisPoint::ZERO,
-            pull_angle: Angle::from_y(0.0),
-            non_contact_stable: b < c0,
-            nodes: Vec::new(),
-        };
+        let mut curve = Self::bare(lambda)?;
+        let b = curve.b;
+        let c0 = curve.junction.outer_radius_bar;
         let samples = curve.scan();
         // One scan: every sample's raw quantities computed once.
         let raws: Vec<Raw> = samples.iter().map(|&a| curve.raw(a)).collect();
@@ -291,6 +271,34 @@ impl MaugisCurve {
             curve.stable_point(curve.d_cut)
         };
         Ok(curve)
+    }
+
+    /// The closed-form parts of the curve at `lambda` (junction, constants);
+    /// the instabilities and the table are left empty.
+    fn bare(lambda: f64) -> Result<Self> {
+        Allowed::closed(LAMBDA_MIN, LAMBDA_MAX).check("lambda", lambda)?;
+        let b = 8.0 * lambda / (3.0 * PI);
+        let qa = PI * lambda / 4.0;
+        let qb = 4.0 * lambda * lambda / 3.0 * (FRAC_PI_2 - 1.0);
+        let c0 = 2.0 / (qb + (qb * qb + 4.0 * qa).sqrt());
+        Ok(MaugisCurve {
+            lambda,
+            b,
+            d_cut: -2.0 / (PI * lambda),
+            junction: MaugisPoint {
+                radius_bar: 0.0,
+                outer_radius_bar: c0,
+                load_bar: -0.5 * PI * lambda * c0 * c0,
+                interference_bar: -4.0 / 3.0 * lambda * c0,
+            },
+            detach: MaugisPoint::ZERO,
+            jump_in: MaugisPoint::ZERO,
+            pull_off: MaugisPoint::ZERO,
+            zero_load: MaugisPoint::ZERO,
+            pull_angle: Angle::from_y(0.0),
+            non_contact_stable: b < c0,
+            nodes: Vec::new(),
+        })
     }
 
     /// Maugis parameter `lambda`.
@@ -610,20 +618,10 @@ impl MaugisCurve {
             - 2.0 * lam * c * c * co * co
     }
 
-    /// Sample angles from near the junction to deep contact.
+    /// Sample angles from near the junction to deep contact: [`SCAN_LEN`]
+    /// of them, [`scan_angle`] in order.
     fn scan(&self) -> Vec<Angle> {
-        let mut v = Vec::new();
-        // y geometric from 1e-9 to pi/4, then t geometric from pi/4 to 1e-9.
-        let n = 200;
-        for k in 0..n {
-            let y = 1e-9 * (FRAC_PI_4 / 1e-9f64).powf(k as f64 / n as f64);
-            v.push(Angle::from_y(y));
-        }
-        for k in 0..=n {
-            let t = FRAC_PI_4 * (1e-9 / FRAC_PI_4).powf(k as f64 / n as f64);
-            v.push(Angle::from_t(t));
-        }
-        v
+        (0..SCAN_LEN).map(scan_angle).collect()
     }
 
     /// Angle minimising `value` over the samples (`raws` evaluated at
@@ -817,6 +815,31 @@ impl AsperityLaw for Maugis {
         Some(self.curve.zero_load.radius_bar * self.scales.radius)
     }
 }
+
+/// Samples per half of the scan (`y` near the junction, then `t`).
+const SCAN_HALF: usize = 200;
+/// Length of the scan: `SCAN_HALF` in `y`, `SCAN_HALF + 1` in `t`.
+const SCAN_LEN: usize = 2 * SCAN_HALF + 1;
+
+/// Sample `k` of the scan: `y` geometric from 1e-9 to pi/4 (`k <
+/// SCAN_HALF`), then `t` geometric from pi/4 down to 1e-9. Computed once
+/// per process (the `powf`s were a fifth of a pull-off).
+fn scan_angle(k: usize) -> Angle {
+    static ANGLES: std::sync::OnceLock<Vec<Angle>> = std::sync::OnceLock::new();
+    ANGLES.get_or_init(|| (0..SCAN_LEN).map(compute_scan_angle).collect())[k]
+}
+
+fn compute_scan_angle(k: usize) -> Angle {
+    let n = SCAN_HALF as f64;
+    if k < SCAN_HALF {
+        Angle::from_y(1e-9 * (FRAC_PI_4 / 1e-9f64).powf(k as f64 / n))
+    } else {
+        let k = k - SCAN_HALF;
+        Angle::from_t(FRAC_PI_4 * (1e-9 / FRAC_PI_4).powf(k as f64 / n))
+    }
+}
+
+mod pull_off;
 
 #[cfg(test)]
 mod tests;
