@@ -1,9 +1,9 @@
 //! The load-controlled pull-off alone (issue 12): the same point as
-//! [`MaugisCurve::new`]`(lambda).pull_off_bar()` (bit for bit for `lambda
-//! >= 1e-5`; below, where the load is flat to rounding at its minimum, the
-//! same load to a few ulp), without the
-//! displacement-controlled snap, the zero-load point, the jump-in or the
-//! inversion table, and with a sparse scan.
+//! [`MaugisCurve::new`]`(lambda).pull_off_bar()` (bit for bit for
+//! `lambda >= 1e-5`; below, where the load is flat to rounding at its
+//! minimum, the same load to a few ulp), without the displacement-controlled
+//! snap, the zero-load point, the jump-in or the inversion table, and with a
+//! sparse scan.
 
 use super::{scan_angle, Angle, MaugisCurve, MaugisPoint, Raw, SCAN_LEN};
 use crate::error::Result;
