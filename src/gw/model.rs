@@ -403,8 +403,8 @@ impl GwModel {
                 for b in law.history_breakpoints() {
                     add((closest + b) / sigma);
                 }
-                // Where the summit that just lost contact on retraction is.
-                if let Some(m) = law.contact_loss_peak(d - closest) {
+                // Where summits have just lost contact on retraction.
+                for m in law.contact_loss_peaks(d - closest) {
                     add((closest + m) / sigma);
                 }
             }

@@ -406,8 +406,8 @@ impl AsperityLaw for InterpolatedLaw {
         self.inner.history_breakpoints()
     }
 
-    fn contact_loss_peak(&self, recovery: f64) -> Option<f64> {
-        self.inner.contact_loss_peak(recovery)
+    fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
+        self.inner.contact_loss_peaks(recovery)
     }
 
     fn remembers_maximum(&self) -> bool {

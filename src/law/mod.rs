@@ -228,18 +228,18 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         vec![self.attach_interference()]
     }
 
-    /// History-dependent breakpoint: the maximum interference `delta_max`
-    /// (m) of the asperity whose retracting branch loses contact (or
-    /// otherwise changes character) after the flat has retracted by
-    /// `recovery` (m) from its closest approach, i.e. where `delta_max -
-    /// delta_loss(delta_max) = recovery`. Integrators retracting by
-    /// `recovery` split their quadrature at the summit with that maximum
-    /// interference. Default `None`: no such point (laws whose retraction
-    /// branches end at fixed interferences, given by
-    /// [`breakpoints`](AsperityLaw::breakpoints)). Elastic-plastic laws
-    /// return the peak whose residual interference is reached.
-    fn contact_loss_peak(&self, _recovery: f64) -> Option<f64> {
-        None
+    /// History-dependent breakpoints: the maximum interferences
+    /// `delta_max` (m, ascending) of the asperities whose retracting branch
+    /// loses contact (or otherwise changes character) after the flat has
+    /// retracted by `recovery` (m) from its closest approach, i.e. where
+    /// `delta_max - delta_loss(delta_max) = recovery`. Integrators
+    /// retracting by `recovery` split their quadrature at the summits with
+    /// those maximum interferences (the contact count jumps there). Default:
+    /// none (laws whose retraction branches end at fixed interferences,
+    /// given by [`breakpoints`](AsperityLaw::breakpoints)). Elastic-plastic
+    /// laws return the peaks whose residual interference is reached.
+    fn contact_loss_peaks(&self, _recovery: f64) -> Vec<f64> {
+        Vec::new()
     }
 
     /// Interference (m) at which an approaching asperity jumps onto the

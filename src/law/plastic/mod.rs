@@ -202,8 +202,8 @@ macro_rules! plastic_asperity_law {
                 $crate::law::plastic::PlasticLoading::breakpoint_interferences(self)
             }
 
-            fn contact_loss_peak(&self, recovery: f64) -> Option<f64> {
-                $crate::law::plastic::unloading::contact_loss_peak(self, recovery)
+            fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
+                $crate::law::plastic::unloading::contact_loss_peaks(self, recovery)
             }
 
             /// The flattening is permanent: unloading depends on `delta_max`.
