@@ -28,7 +28,7 @@ fn pull_off(theta: f64) -> f64 {
     model
         .clone()
         .with_accuracy(acc)
-        .pull_off(0.0, 200)
+        .pull_off(0.0, f64::INFINITY, 200)
         .unwrap()
         .unwrap()
         .load

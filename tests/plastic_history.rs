@@ -77,7 +77,7 @@ fn rough_surface_pull_off_grows_with_the_closest_approach() {
         let p = m
             .clone()
             .with_accuracy(acc)
-            .pull_off(hc * SIGMA, 120)
+            .pull_off(hc * SIGMA, f64::INFINITY, 120)
             .unwrap()
             .unwrap()
             .load;

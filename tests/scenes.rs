@@ -105,7 +105,7 @@ fn every_example_scene_runs_and_matches_library_calls() {
             let direct = model
                 .clone()
                 .with_accuracy(acc)
-                .pull_off(closest, 64)
+                .pull_off(closest, res.curve.program.start, 64)
                 .unwrap();
             match (res.pull_off, direct) {
                 (Some(p), Some(d)) => {

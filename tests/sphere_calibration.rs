@@ -46,7 +46,7 @@ fn calibrated_law_in_gw_model() {
         let pull = m
             .clone()
             .with_accuracy(acc)
-            .pull_off(0.5 * s.sigma, 40)
+            .pull_off(0.5 * s.sigma, f64::INFINITY, 40)
             .unwrap()
             .unwrap();
         assert!(pull.load < 0.0);

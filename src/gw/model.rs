@@ -25,9 +25,10 @@
 use crate::error::{Allowed, Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::law::{AsperityLaw, Branch};
+use crate::law::{AsperityLaw, Branch, LawCursor};
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
 use crate::numeric::quadrature::{integrate_pieces_n, kronrod21_n, QuadOptions};
+use rayon::prelude::*;
 use std::sync::Arc;
 
 /// How to integrate.
@@ -292,8 +293,17 @@ impl GwModel {
         let (sup_lo, sup_hi) = dist.numerical_support(SUPPORT_EPS);
         // Below the cutoff every branch gives exactly zero: skip.
         let s_lo = ((d + law.cutoff_interference()) / sigma).max(sup_lo);
+        // Far in the upper tail the density is factored out at `s_lo` (so
+        // neither it nor the integral underflows before the end of the
+        // result's own range) and the upper end is where the density has
+        // fallen by FAR_TAIL_DROP from there, not the fixed support.
+        let far = far_tail_reference(dist, s_lo);
+        let top = match far {
+            Some(_) => far_tail_end(dist, s_lo),
+            None => sup_hi,
+        };
         // A rigid law is bounded by its own divergence (checked in `new`).
-        let s_hi = sup_hi.min((d + law.max_interference()) / sigma);
+        let s_hi = top.min((d + law.max_interference()) / sigma);
         let mask = obs.mask();
         if !(s_hi > s_lo) {
             return Ok(State {
@@ -306,22 +316,26 @@ impl GwModel {
         let points = self.split_points(d, history, s_lo, s_hi);
         // Load alone needs no contact radius: cheaper for tabulated laws.
         let load_only = obs.load_only();
+        // Consecutive nodes lie in one quadrature panel: a tabulated law
+        // finds its own panel by a short walk from the previous one
+        // (`state_near`, the same values as `state`).
+        let mut cursor = LawCursor::default();
         let eval = |s: f64| -> [f64; SLOTS] {
             let delta = sigma * s - d;
-            let w = dist.pdf(s);
+            let w = match far {
+                Some(r) => dist.pdf_ratio(s, r),
+                None => dist.pdf(s),
+            };
+            let delta_max = match history {
+                History::Approach => None,
+                History::Retract { closest } => Some(sigma * s - closest),
+            };
             if load_only {
-                let p = match history {
-                    History::Approach => law.load(delta, Branch::Approach),
-                    History::Retract { closest } => law.load_after(delta, sigma * s - closest),
-                };
                 let mut v = [0.0; SLOTS];
-                v[0] = p * w;
+                v[0] = law.load_near(delta, delta_max, &mut cursor) * w;
                 return v;
             }
-            let st = match history {
-                History::Approach => law.state(delta, Branch::Approach),
-                History::Retract { closest } => law.state_after(delta, sigma * s - closest),
-            };
+            let st = law.state_near(delta, delta_max, &mut cursor);
             obs.evaluate(&st).map(|x| x * w)
         };
         let opts = QuadOptions {
@@ -330,7 +344,10 @@ impl GwModel {
             max_intervals: accuracy.max_intervals,
             relative_to_magnitude: true,
         };
-        let n_total = self.surface.summits();
+        let n_total = match far {
+            Some(r) => FarTailScale::new(self.surface.summits(), dist.log_pdf(r)),
+            None => FarTailScale::new(self.surface.summits(), 0.0),
+        };
         let (value, error, evaluations, method) = if let Method::Fixed { panels } = accuracy.method
         {
             let (v, e, n) = fixed_rule(eval, &points, panels.max(1));
@@ -351,7 +368,11 @@ impl GwModel {
         };
         Ok(State {
             separation: d,
-            totals: Totals::new(value.map(|x| n_total * x), error.map(|x| n_total * x), mask),
+            totals: Totals::new(
+                value.map(|x| n_total.apply(x)),
+                error.map(|x| n_total.apply(x)),
+                mask,
+            ),
             method,
             evaluations,
         })
@@ -384,6 +405,10 @@ impl GwModel {
                 for b in law.history_breakpoints() {
                     add((closest + b) / sigma);
                 }
+                // Where summits have just lost contact on retraction.
+                for m in law.contact_loss_peaks(d - closest) {
+                    add((closest + m) / sigma);
+                }
             }
         }
         for step in [0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0] {
@@ -392,6 +417,65 @@ impl GwModel {
         pts.sort_by(f64::total_cmp);
         pts.dedup();
         pts
+    }
+}
+
+/// Density below which quadrature factors the density out of the integrand
+/// ([`far_tail_reference`]): far above any value of the central range, so
+/// ordinary states are computed exactly as without the factoring.
+const FAR_TAIL_PDF: f64 = 1e-250;
+/// Fall of `ln phi` from the lower end at which a far-tail integral stops:
+/// `exp(-750)` is below the smallest subnormal relative to the first term.
+const FAR_TAIL_DROP: f64 = 750.0;
+
+/// `Some(s_lo)` when the density at the integral's lower end `s_lo` is
+/// below [`FAR_TAIL_PDF`] in the upper tail (so it is factored out there).
+fn far_tail_reference(dist: &dyn HeightDistribution, s_lo: f64) -> Option<f64> {
+    let (_, hi) = dist.support();
+    let far = s_lo.is_finite()
+        && s_lo > 0.0
+        && s_lo < hi
+        && dist.pdf(s_lo) < FAR_TAIL_PDF
+        && dist.log_pdf(s_lo).is_finite();
+    far.then_some(s_lo)
+}
+
+/// Height above `s_lo` where `ln phi` has fallen by [`FAR_TAIL_DROP`]
+/// (steps doubling from `1/(1 + s_lo)`), capped at the support's end.
+fn far_tail_end(dist: &dyn HeightDistribution, s_lo: f64) -> f64 {
+    let (_, hi) = dist.support();
+    let target = dist.log_pdf(s_lo) - FAR_TAIL_DROP;
+    let mut step = 1.0 / (1.0 + s_lo);
+    let mut s = s_lo + step;
+    for _ in 0..64 {
+        if s >= hi || !(dist.log_pdf(s) > target) {
+            break;
+        }
+        step *= 2.0;
+        s = s_lo + step;
+    }
+    s.min(hi)
+}
+
+/// Multiplies integrals by `N exp(log_scale)` without underflow of the
+/// factor before the product: `N x` when `log_scale = 0`.
+#[derive(Debug, Clone, Copy)]
+struct FarTailScale {
+    summits: f64,
+    log_scale: f64,
+}
+
+impl FarTailScale {
+    fn new(summits: f64, log_scale: f64) -> Self {
+        FarTailScale { summits, log_scale }
+    }
+
+    fn apply(&self, x: f64) -> f64 {
+        let nx = self.summits * x;
+        if self.log_scale == 0.0 || nx == 0.0 {
+            return nx;
+        }
+        nx.signum() * (nx.abs().ln() + self.log_scale).exp()
     }
 }
 
@@ -459,6 +543,21 @@ impl LoadingModel for GwModel {
             }
             _ => self.quadrature(separation, history, observables),
         }
+    }
+
+    /// The states of `steps` computed in parallel (rayon): each state is
+    /// independent of the others and computed by the same serial code, so
+    /// the results are bit-identical for any thread count, in step order.
+    ///
+    /// # Errors
+    /// As [`LoadingModel::state`] (the first failing step's error).
+    fn states(&self, steps: &[(f64, History)], observables: &Observables) -> Result<Vec<State>> {
+        let results: Vec<Result<State>> = steps
+            .par_iter()
+            .map(|&(d, h)| self.state(d, h, observables))
+            .collect();
+        // Collected in order first, so the reported error is deterministic.
+        results.into_iter().collect()
     }
 
     /// `sigma s_max - range`, `s_max` the end of the numerical support and

@@ -75,7 +75,7 @@ fn jkr_retraction_is_more_tensile_than_approach() {
     let pull = m
         .clone()
         .with_accuracy(acc)
-        .pull_off(0.5 * s.sigma, 60)
+        .pull_off(0.5 * s.sigma, 8.0 * s.sigma, 60)
         .unwrap()
         .unwrap();
     assert!(pull.load < 0.0);

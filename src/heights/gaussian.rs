@@ -4,6 +4,9 @@ use super::quad::power_moment;
 use super::HeightDistribution;
 use crate::special::{gaussian_fn, normal};
 
+/// `ln sqrt(2 pi)`.
+const LN_SQRT_2PI: f64 = 0.918_938_533_204_672_8;
+
 /// Gaussian summit heights (Greenwood & Williamson 1966): `s` standard
 /// normal, so the surface's `sigma` (m) is the summit-height standard
 /// deviation and `h = d/sigma` is measured from the mean summit height.
@@ -30,6 +33,17 @@ impl HeightDistribution for Gaussian {
 
     fn pdf(&self, s: f64) -> f64 {
         normal::pdf(s)
+    }
+
+    /// `-s^2/2 - ln sqrt(2 pi)`.
+    fn log_pdf(&self, s: f64) -> f64 {
+        -0.5 * s * s - LN_SQRT_2PI
+    }
+
+    /// `exp(-(s - r)(s + r)/2)`: no underflow of either density, and the
+    /// difference `s - r` is exact for nearby heights.
+    fn pdf_ratio(&self, s: f64, r: f64) -> f64 {
+        (-0.5 * (s - r) * (s + r)).exp()
     }
 
     fn tail(&self, s: f64) -> f64 {

@@ -28,6 +28,19 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     /// Probability density `phi(s)`.
     fn pdf(&self, s: f64) -> f64;
 
+    /// `ln phi(s)`, finite where `phi(s)` underflows (default: `ln` of
+    /// [`pdf`](HeightDistribution::pdf), `-inf` there).
+    fn log_pdf(&self, s: f64) -> f64 {
+        self.pdf(s).ln()
+    }
+
+    /// `phi(s)/phi(r)`, accurate where both densities underflow (default:
+    /// `exp(log_pdf(s) - log_pdf(r))`). Integrators factor `phi(r)` out of
+    /// far-tail integrals with it.
+    fn pdf_ratio(&self, s: f64, r: f64) -> f64 {
+        (self.log_pdf(s) - self.log_pdf(r)).exp()
+    }
+
     /// Tail probability `P(S > s) = F_0(s)`, accurate in relative terms far
     /// into the upper tail.
     fn tail(&self, s: f64) -> f64;

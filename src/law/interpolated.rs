@@ -21,7 +21,7 @@
 //! (`examples/md_curve_profile.rs`): short Clenshaw chains win over fewer
 //! panels.
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor};
 use crate::error::{Allowed, Error, Result};
 use crate::numeric::chebyshev::clenshaw;
 use std::f64::consts::PI;
@@ -363,6 +363,12 @@ impl BranchTable {
     }
 
     #[inline]
+    fn load_from(&self, delta: f64, hint: &mut usize) -> Option<f64> {
+        self.locate_from(delta, hint)
+            .map(|(i, t)| clenshaw(&self.load[i], t))
+    }
+
+    #[inline]
     fn eval(&self, delta: f64) -> Option<ContactState> {
         let (i, t) = self.locate(delta)?;
         Some(self.eval_at(i, t))
@@ -400,8 +406,38 @@ impl AsperityLaw for InterpolatedLaw {
         self.inner.history_breakpoints()
     }
 
+    fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
+        self.inner.contact_loss_peaks(recovery)
+    }
+
     fn remembers_maximum(&self) -> bool {
         self.inner.remembers_maximum()
+    }
+
+    /// The panel search walks from the cursor's panel (the same panel as
+    /// [`state`](AsperityLaw::state)'s binary search, so the same value).
+    #[inline]
+    fn state_near(
+        &self,
+        delta: f64,
+        delta_max: Option<f64>,
+        cursor: &mut LawCursor,
+    ) -> ContactState {
+        let branch = delta_max.map_or(Branch::Approach, |m| self.branch_after(m));
+        let k = usize::from(branch == Branch::Retract);
+        self.tables[k]
+            .eval_from(delta, &mut cursor.panels[k])
+            .unwrap_or_else(|| self.inner.state(delta, branch))
+    }
+
+    /// As [`state_near`](AsperityLaw::state_near), load only.
+    #[inline]
+    fn load_near(&self, delta: f64, delta_max: Option<f64>, cursor: &mut LawCursor) -> f64 {
+        let branch = delta_max.map_or(Branch::Approach, |m| self.branch_after(m));
+        let k = usize::from(branch == Branch::Retract);
+        self.tables[k]
+            .load_from(delta, &mut cursor.panels[k])
+            .unwrap_or_else(|| self.inner.load(delta, branch))
     }
 
     /// Sorted input (a population's heights) finds each panel by walking

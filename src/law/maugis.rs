@@ -237,12 +237,51 @@ impl MaugisCurve {
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `lambda`.
     pub fn new(lambda: f64) -> Result<Self> {
+        let mut curve = Self::bare(lambda)?;
+        let b = curve.b;
+        let c0 = curve.junction.outer_radius_bar;
+        let samples = curve.scan();
+        // One scan: every sample's raw quantities computed once.
+        let raws: Vec<Raw> = samples.iter().map(|&a| curve.raw(a)).collect();
+        // Displacement-controlled snap: the minimum of Dbar.
+        let top = if curve.non_contact_stable {
+            curve.detach = curve.non_contact_point(b);
+            Angle::from_y(0.0)
+        } else {
+            let a = curve.refine(
+                &samples,
+                &raws,
+                |r| r.interference,
+                |c, a| c.d_interference(a),
+            );
+            curve.detach = curve.point(a);
+            a
+        };
+        curve.build_table(top);
+        // Load-controlled pull-off: the minimum of Pbar (contact branch).
+        let ap = curve.refine(&samples, &raws, |r| r.load, |c, a| c.d_load(a));
+        curve.pull_off = curve.point(ap);
+        curve.pull_angle = ap;
+        // Zero load on the stable side of the pull-off (t below it).
+        curve.zero_load = curve.zero_load_point(ap);
+        // Jump-in landing at Dbar_cut.
+        curve.jump_in = if 2.0 * b <= c0 {
+            curve.non_contact_point(2.0 * b)
+        } else {
+            curve.stable_point(curve.d_cut)
+        };
+        Ok(curve)
+    }
+
+    /// The closed-form parts of the curve at `lambda` (junction, constants);
+    /// the instabilities and the table are left empty.
+    fn bare(lambda: f64) -> Result<Self> {
         Allowed::closed(LAMBDA_MIN, LAMBDA_MAX).check("lambda", lambda)?;
         let b = 8.0 * lambda / (3.0 * PI);
         let qa = PI * lambda / 4.0;
         let qb = 4.0 * lambda * lambda / 3.0 * (FRAC_PI_2 - 1.0);
         let c0 = 2.0 / (qb + (qb * qb + 4.0 * qa).sqrt());
-        let mut curve = MaugisCurve {
+        Ok(MaugisCurve {
             lambda,
             b,
             d_cut: -2.0 / (PI * lambda),
@@ -259,31 +298,7 @@ impl MaugisCurve {
             pull_angle: Angle::from_y(0.0),
             non_contact_stable: b < c0,
             nodes: Vec::new(),
-        };
-        let samples = curve.scan();
-        // Displacement-controlled snap: the minimum of Dbar.
-        let top = if curve.non_contact_stable {
-            curve.detach = curve.non_contact_point(b);
-            Angle::from_y(0.0)
-        } else {
-            let a = curve.refine(&samples, |r| r.interference, |c, a| c.d_interference(a));
-            curve.detach = curve.point(a);
-            a
-        };
-        curve.build_table(top);
-        // Load-controlled pull-off: the minimum of Pbar (contact branch).
-        let ap = curve.refine(&samples, |r| r.load, |c, a| c.d_load(a));
-        curve.pull_off = curve.point(ap);
-        curve.pull_angle = ap;
-        // Zero load on the stable side of the pull-off (t below it).
-        curve.zero_load = curve.zero_load_point(ap);
-        // Jump-in landing at Dbar_cut.
-        curve.jump_in = if 2.0 * b <= c0 {
-            curve.non_contact_point(2.0 * b)
-        } else {
-            curve.stable_point(curve.d_cut)
-        };
-        Ok(curve)
+        })
     }
 
     /// Maugis parameter `lambda`.
@@ -544,12 +559,10 @@ impl MaugisCurve {
                 acc = acc * u2 + k;
             }
             acc * u2 * u
-        } else if angle.uses_t() {
-            let (s2, c2) = (2.0 * t).sin_cos();
-            s2 - 2.0 * t * c2
         } else {
-            let (s2, c2) = (2.0 * angle.y).sin_cos();
-            s2 + 2.0 * t * c2
+            // Double angle: sin 2t = 2 sin cos, cos 2t = (cos - sin)(cos + sin)
+            // (absolute error a few ulp, as a second sin_cos of 2t or 2y).
+            2.0 * sin * cos - 2.0 * t * ((cos - sin) * (cos + sin))
         };
         let alpha = 0.25 * lam * f;
         // t sin t - (1 - cos t), with 1 - cos t = sin^2 t/(1 + cos t).
@@ -605,33 +618,24 @@ impl MaugisCurve {
             - 2.0 * lam * c * c * co * co
     }
 
-    /// Sample angles from near the junction to deep contact.
+    /// Sample angles from near the junction to deep contact: [`SCAN_LEN`]
+    /// of them, [`scan_angle`] in order.
     fn scan(&self) -> Vec<Angle> {
-        let mut v = Vec::new();
-        // y geometric from 1e-9 to pi/4, then t geometric from pi/4 to 1e-9.
-        let n = 200;
-        for k in 0..n {
-            let y = 1e-9 * (FRAC_PI_4 / 1e-9f64).powf(k as f64 / n as f64);
-            v.push(Angle::from_y(y));
-        }
-        for k in 0..=n {
-            let t = FRAC_PI_4 * (1e-9 / FRAC_PI_4).powf(k as f64 / n as f64);
-            v.push(Angle::from_t(t));
-        }
-        v
+        (0..SCAN_LEN).map(scan_angle).collect()
     }
 
-    /// Angle minimising `value` over the samples, refined as the root of
+    /// Angle minimising `value` over the samples (`raws` evaluated at
+    /// `samples`), refined as the root of
     /// its derivative `deriv` (a sign change around the sampled minimum).
     fn refine(
         &self,
         samples: &[Angle],
+        raws: &[Raw],
         value: impl Fn(&Raw) -> f64,
         deriv: impl Fn(&Self, Angle) -> f64,
     ) -> Angle {
-        let vals: Vec<f64> = samples.iter().map(|&a| value(&self.raw(a))).collect();
-        let k = (0..vals.len())
-            .min_by(|&i, &j| vals[i].total_cmp(&vals[j]))
+        let k = (0..raws.len())
+            .min_by(|&i, &j| value(&raws[i]).total_cmp(&value(&raws[j])))
             .unwrap_or(0);
         let lo = samples[k.saturating_sub(1)];
         let hi = samples[(k + 1).min(samples.len() - 1)];
@@ -811,6 +815,31 @@ impl AsperityLaw for Maugis {
         Some(self.curve.zero_load.radius_bar * self.scales.radius)
     }
 }
+
+/// Samples per half of the scan (`y` near the junction, then `t`).
+const SCAN_HALF: usize = 200;
+/// Length of the scan: `SCAN_HALF` in `y`, `SCAN_HALF + 1` in `t`.
+const SCAN_LEN: usize = 2 * SCAN_HALF + 1;
+
+/// Sample `k` of the scan: `y` geometric from 1e-9 to pi/4 (`k <
+/// SCAN_HALF`), then `t` geometric from pi/4 down to 1e-9. Computed once
+/// per process (the `powf`s were a fifth of a pull-off).
+fn scan_angle(k: usize) -> Angle {
+    static ANGLES: std::sync::OnceLock<Vec<Angle>> = std::sync::OnceLock::new();
+    ANGLES.get_or_init(|| (0..SCAN_LEN).map(compute_scan_angle).collect())[k]
+}
+
+fn compute_scan_angle(k: usize) -> Angle {
+    let n = SCAN_HALF as f64;
+    if k < SCAN_HALF {
+        Angle::from_y(1e-9 * (FRAC_PI_4 / 1e-9f64).powf(k as f64 / n))
+    } else {
+        let k = k - SCAN_HALF;
+        Angle::from_t(FRAC_PI_4 * (1e-9 / FRAC_PI_4).powf(k as f64 / n))
+    }
+}
+
+mod pull_off;
 
 #[cfg(test)]
 mod tests;

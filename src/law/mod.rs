@@ -27,6 +27,7 @@
 
 pub mod bradley;
 pub mod cos;
+mod cursor;
 pub mod dmt;
 pub mod errors;
 pub mod hertz;
@@ -41,6 +42,7 @@ pub mod tabulated;
 
 pub use bradley::Bradley;
 pub use cos::Cos;
+pub use cursor::LawCursor;
 pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
@@ -147,6 +149,36 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         self.state_after(delta, delta_max).load
     }
 
+    /// [`state`](AsperityLaw::state) on approach (`delta_max = None`) or
+    /// [`state_after`](AsperityLaw::state_after) on retraction from
+    /// `delta_max` (m), bit for bit, for a sequence of nearby interferences
+    /// (the nodes of one quadrature panel): tabulated laws start their
+    /// panel search at `cursor` (updated) instead of bisecting the whole
+    /// table. Default: ignores the cursor.
+    fn state_near(
+        &self,
+        delta: f64,
+        delta_max: Option<f64>,
+        cursor: &mut LawCursor,
+    ) -> ContactState {
+        let _ = cursor;
+        match delta_max {
+            None => self.state(delta, Branch::Approach),
+            Some(m) => self.state_after(delta, m),
+        }
+    }
+
+    /// Load only (N) of [`state_near`](AsperityLaw::state_near), as
+    /// [`load`](AsperityLaw::load) / [`load_after`](AsperityLaw::load_after)
+    /// bit for bit.
+    fn load_near(&self, delta: f64, delta_max: Option<f64>, cursor: &mut LawCursor) -> f64 {
+        let _ = cursor;
+        match delta_max {
+            None => self.load(delta, Branch::Approach),
+            Some(m) => self.load_after(delta, m),
+        }
+    }
+
     /// Many asperities in one call (the Monte Carlo hot loop): for each `i`,
     /// `(load[i], radius[i])` (N, m) is `state(delta[i], Approach)` when
     /// `delta_max` is `None` and `state_after(delta[i], delta_max[i])`
@@ -194,6 +226,20 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     /// split their quadrature there.
     fn history_breakpoints(&self) -> Vec<f64> {
         vec![self.attach_interference()]
+    }
+
+    /// History-dependent breakpoints: the maximum interferences
+    /// `delta_max` (m, ascending) of the asperities whose retracting branch
+    /// loses contact (or otherwise changes character) after the flat has
+    /// retracted by `recovery` (m) from its closest approach, i.e. where
+    /// `delta_max - delta_loss(delta_max) = recovery`. Integrators
+    /// retracting by `recovery` split their quadrature at the summits with
+    /// those maximum interferences (the contact count jumps there). Default:
+    /// none (laws whose retraction branches end at fixed interferences,
+    /// given by [`breakpoints`](AsperityLaw::breakpoints)). Elastic-plastic
+    /// laws return the peaks whose residual interference is reached.
+    fn contact_loss_peaks(&self, _recovery: f64) -> Vec<f64> {
+        Vec::new()
     }
 
     /// Interference (m) at which an approaching asperity jumps onto the

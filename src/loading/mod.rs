@@ -5,12 +5,14 @@
 //! ([`crate::montecarlo`]).
 
 mod curve;
+mod hysteresis;
 mod model;
 mod observable;
 mod program;
 mod state;
 
 pub use curve::{hysteresis_energy, most_tensile, Curve, PullOff};
+pub use hysteresis::hysteresis_energy_to;
 pub use model::LoadingModel;
 pub use observable::{Observable, Observables, PerAsperity, Totals, EXTRA_SLOTS, SLOTS};
 pub use program::{History, LoadingProgram};

@@ -9,7 +9,7 @@ use super::curve::{Curve, PullOff};
 use super::observable::Observables;
 use super::program::{History, LoadingProgram};
 use super::state::State;
-use crate::error::{positive, Error, Result};
+use crate::error::{positive, Allowed, Error, Result};
 use crate::numeric::roots::{brent, golden_min};
 
 /// How far below its start the separation-at-a-load search looks, in
@@ -70,16 +70,28 @@ pub trait LoadingModel: Sync {
         })
     }
 
-    /// Pull-off on retraction after approaching to `closest` (m): the most
-    /// tensile total load, located by sampling `samples` separations between
-    /// `closest` and the interaction onset, then refined by golden-section
-    /// search to [`separation_tolerance`](LoadingModel::separation_tolerance).
-    /// `None` when no retraction load is tensile.
+    /// Pull-off on retraction after approaching to `closest` (m) in a
+    /// program that starts (and ends) at `start` (m): the most tensile total
+    /// load within the program, located by sampling `samples` separations
+    /// between `closest` and `min(start, interaction onset)`, then refined by
+    /// golden-section search to
+    /// [`separation_tolerance`](LoadingModel::separation_tolerance). `None`
+    /// when no retraction load within the program is tensile (the flat
+    /// never goes beyond `start`, so a tensile load above it is never
+    /// felt). `start = f64::INFINITY` searches up to the interaction onset.
     ///
     /// # Errors
-    /// As [`LoadingModel::state`].
-    fn pull_off(&self, closest: f64, samples: usize) -> Result<Option<PullOff>> {
-        let top = self.interaction_onset();
+    /// [`Error::OutOfRange`] naming `start_separation` when `start` is NaN;
+    /// as [`LoadingModel::state`].
+    fn pull_off(&self, closest: f64, start: f64, samples: usize) -> Result<Option<PullOff>> {
+        if start.is_nan() {
+            return Err(Error::OutOfRange {
+                name: "start_separation".into(),
+                value: start,
+                allowed: Allowed::closed_open(closest, f64::INFINITY),
+            });
+        }
+        let top = self.interaction_onset().min(start);
         if !(top > closest) {
             return Ok(None);
         }
@@ -92,7 +104,12 @@ pub trait LoadingModel: Sync {
                 .load()
                 .unwrap_or(0.0))
         };
-        let loads = seps.iter().map(|&d| load(d)).collect::<Result<Vec<_>>>()?;
+        let steps: Vec<(f64, History)> = seps.iter().map(|&d| (d, back)).collect();
+        let loads: Vec<f64> = self
+            .states(&steps, &Observables::LOAD)?
+            .iter()
+            .map(|s| s.load().unwrap_or(0.0))
+            .collect();
         let Some((imin, &pmin)) = loads.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1)) else {
             return Ok(None);
         };

@@ -174,7 +174,7 @@ fn headline<M: LoadingModel>(
     let program = LoadingProgram::new(start, closest, plan.points)?;
     let curve = model.curve(&program, &plan.curve_outputs)?;
     let pull_off = if plan.pull_off {
-        model.pull_off(closest, PULL_OFF_SAMPLES)?
+        model.pull_off(closest, start, PULL_OFF_SAMPLES)?
     } else {
         None
     };

@@ -8,7 +8,8 @@ use crate::error::Result;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
 use crate::law::{AsperityLaw, LawKind};
 use crate::loading::{
-    Curve, History, LoadingModel, LoadingProgram, Observable, Observables, PullOff, State, SLOTS,
+    hysteresis_energy_to, Curve, History, LoadingModel, LoadingProgram, Observable, Observables,
+    PullOff, State, SLOTS,
 };
 use crate::material::plastic::{RegimeLimits, Variant};
 use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
@@ -304,15 +305,26 @@ impl Plan {
             }
         };
         let pull_off = if self.pull_off {
-            model.pull_off(closest, PULL_OFF_SAMPLES)?
+            model.pull_off(closest, self.start, PULL_OFF_SAMPLES)?
         } else {
             None
         };
-        let mut hysteresis_energy = if self.hysteresis_energy {
-            curve.hysteresis_energy()
-        } else {
-            None
-        };
+        // A continuous model's energy is integrated to the scene's
+        // tolerance; a discrete one (a finite sample of summits) has step
+        // loads, and its trapezoid on the program is the honest estimate.
+        let continuous = !model.is_discrete() && self.distribution.sample_points().is_none();
+        let mut hysteresis_energy =
+            if self.hysteresis_energy && self.compute_retraction && continuous {
+                Some(hysteresis_energy_to(
+                    model,
+                    &program,
+                    self.accuracy.rel_tol,
+                )?)
+            } else if self.hysteresis_energy {
+                curve.hysteresis_energy()
+            } else {
+                None
+            };
         // A copied retraction leg cost nothing.
         let legs: &[&[State]] = if self.compute_retraction {
             &[&curve.approach, &curve.retract]

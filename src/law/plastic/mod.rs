@@ -202,6 +202,10 @@ macro_rules! plastic_asperity_law {
                 $crate::law::plastic::PlasticLoading::breakpoint_interferences(self)
             }
 
+            fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
+                $crate::law::plastic::unloading::contact_loss_peaks(self, recovery)
+            }
+
             /// The flattening is permanent: unloading depends on `delta_max`.
             fn remembers_maximum(&self) -> bool {
                 true

@@ -133,3 +133,45 @@ fn constructors_name_bad_fields() {
         Some("contact_modulus")
     );
 }
+
+#[test]
+fn contact_loss_peaks_are_where_the_unloading_curves_end() {
+    let span = |law: &dyn PlasticLaw, dm: f64| {
+        unloading::Unloading::from_peak(dm, law.state(dm, Branch::Approach), E).span
+    };
+    for law in laws() {
+        let lim = law.elastic_limit();
+        // Elastic peaks: no history-dependent point.
+        assert!(law.contact_loss_peaks(0.5 * lim).is_empty());
+        assert!(law.contact_loss_peaks(f64::NAN).is_empty());
+        for k in [3.0, 30.0, 300.0] {
+            let dm = k * law.critical_interference();
+            let recovery = span(law.as_ref(), dm);
+            if recovery <= lim {
+                continue;
+            }
+            let got = law.contact_loss_peaks(recovery);
+            // Every root has the span, and `dm` is one of them.
+            for &g in &got {
+                let s = span(law.as_ref(), g);
+                assert!(
+                    (s / recovery - 1.0).abs() < 1e-12,
+                    "{:?} {k}: span {s} at {g}",
+                    law.variant()
+                );
+            }
+            assert!(
+                got.iter().any(|&g| (g / dm - 1.0).abs() < 1e-9),
+                "{:?} {k}: {got:?} vs {dm}",
+                law.variant()
+            );
+            // Between roots contact is unchanged: the peak just above the
+            // first root is touching (span > recovery) at `peak - recovery`.
+            let g = got[0];
+            let x = g * (1.0 + 1e-6);
+            assert!(law.state_after(x - recovery, x).load > 0.0);
+            let x = g * (1.0 - 1e-6);
+            assert_eq!(law.state_after(x - recovery, x).load, 0.0);
+        }
+    }
+}

@@ -104,6 +104,67 @@ pub fn state_after<L: PlasticLoading + ?Sized>(
     .plastic_state(delta)
 }
 
+/// The peak interferences `delta_max` (m, ascending) whose unloading
+/// curves lose contact after the flat retracted by `recovery` (m) from the
+/// closest approach: the roots of `span(delta_max) = recovery` (`span =
+/// delta_max - delta_res`). `span` is continuous between the law's
+/// breakpoints but may jump at them (the Kogut–Etsion fit does), so the
+/// summits still touching need not be a suffix of the heights: each piece
+/// between consecutive breakpoints (and the last, open-ended one) is
+/// searched for its own sign change, each root found by bisection to a few
+/// ulp. Empty when `recovery` is not finite or no plastic peak has that
+/// span (elastic peaks lose contact at `delta = 0`, a fixed breakpoint).
+/// The GW integral splits its retraction quadrature at each: the count
+/// jumps there, and load (`~ x^(3/2)`) and radius (`~ x^(1/2)`) kink.
+pub fn contact_loss_peaks<L: PlasticLoading + ?Sized>(law: &L, recovery: f64) -> Vec<f64> {
+    let e = law.asperity().contact_modulus;
+    let span = |dm: f64| Unloading::from_peak(dm, law.loading(dm), e).span;
+    let lim = law.elastic_limit();
+    let mut roots = Vec::new();
+    if !(recovery.is_finite() && recovery > 0.0 && lim > 0.0) {
+        return roots;
+    }
+    let mut ends = vec![lim];
+    ends.extend(
+        law.breakpoint_interferences()
+            .into_iter()
+            .filter(|&b| b > lim),
+    );
+    ends.sort_by(f64::total_cmp);
+    ends.dedup();
+    // The open-ended last piece: grown until its span reaches `recovery`.
+    let last = *ends.last().unwrap_or(&lim);
+    let mut hi = 2.0 * last.max(recovery);
+    for _ in 0..200 {
+        if span(hi) >= recovery {
+            break;
+        }
+        hi *= 2.0;
+    }
+    ends.push(hi);
+    for w in ends.windows(2) {
+        let (mut lo, mut hi) = (w[0], w[1]);
+        let below = |x: f64| span(x) < recovery;
+        if below(lo) == below(hi) {
+            continue;
+        }
+        let rising = below(lo);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if !(mid > lo && mid < hi) {
+                break;
+            }
+            if below(mid) == rising {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        roots.push(hi);
+    }
+    roots
+}
+
 /// One asperity's memory for any interference path (approach, retract,
 /// reload, ...): its largest interference so far.
 #[derive(Debug, Clone, Copy, PartialEq)]

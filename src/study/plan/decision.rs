@@ -240,7 +240,7 @@ impl Decision {
                 if *searched { "searched" } else { "skipped" }.into()
             }
             Decision::HysteresisEnergy { computed } => if *computed {
-                "trapezoid on the program"
+                "adaptive to rtol"
             } else {
                 "skipped"
             }
@@ -309,7 +309,8 @@ impl Decision {
                 }
             }
             Decision::HysteresisEnergy { computed } => if *computed {
-                "int (P_approach - P_retract) dd over the program's separations"
+                "int (P_approach - P_retract) dd over the program by adaptive Gauss-Kronrod; a \
+                 trapezoid on the program's separations for a finite sample of summits"
             } else {
                 "not asked for in [outputs]"
             }
