@@ -45,7 +45,7 @@ use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
 
 /// Bump when a change alters solver results: calibrations cached on disk are
 /// keyed by it.
-pub const SOLVER_VERSION: u32 = 2;
+pub const SOLVER_VERSION: u32 = 3;
 
 /// Smallest Tabor parameter accepted (the rigid Bradley limit is within
 /// 0.01% there).
@@ -59,6 +59,21 @@ pub const MAX_TABOR: f64 = 10.0;
 
 /// Smallest size ratio `rho = R/z0` accepted for the true sphere.
 pub const MIN_SIZE_RATIO: f64 = 10.0;
+
+/// Coarsest mesh resolution accepted. Coarser meshes do not resolve the
+/// contact edge: at 0.2 the mu = 1 jump-out load is 72% off and at 0.05 the
+/// pull-off is -3.23 (beyond Bradley's -2); at 0.5 (`SolverOptions::coarse`)
+/// the pull-off is within 1.5e-3 of the converged value for mu in
+/// [0.1, 5] (docs/performance.md, mesh convergence).
+pub const MIN_RESOLUTION: f64 = 0.5;
+
+/// Finest mesh resolution accepted (spacings 1/64 of the default).
+pub const MAX_RESOLUTION: f64 = 64.0;
+
+/// Largest mesh accepted, checked before anything is allocated: one
+/// compliance matrix is `8 n^2` bytes (128 MiB here) and each Newton
+/// factorisation `O(n^3)`.
+pub const MAX_NODES: usize = 4096;
 
 /// The undeformed shape of the rigid body.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -127,6 +142,7 @@ impl SolverOptions {
 
     fn validate(&self) -> Result<()> {
         positive("resolution", self.resolution)?;
+        Allowed::closed(MIN_RESOLUTION, MAX_RESOLUTION).check("resolution", self.resolution)?;
         Allowed::open(2.0, 1e6).check("far_gap", self.far_gap)?;
         Allowed::open(1.3, 1e3).check("start_gap", self.start_gap)?;
         positive("max_load_bar", self.max_load_bar)?;
@@ -211,6 +227,17 @@ pub struct Profile {
     pub point: SpherePoint,
 }
 
+/// Estimated size and cost of one solve ([`SphereProblem::cost`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CostEstimate {
+    /// Mesh nodes.
+    pub nodes: usize,
+    /// Peak memory, bytes.
+    pub memory_bytes: f64,
+    /// Wall-clock time of `facts()` in an optimised build, seconds.
+    pub seconds: f64,
+}
+
 /// A single-sphere problem: Tabor parameter, shape and numerical options.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SphereProblem {
@@ -232,7 +259,44 @@ impl SphereProblem {
             Allowed::closed(MIN_SIZE_RATIO, 1e12).check("rho", rho)?;
         }
         options.validate()?;
-        Ok(SphereProblem { mu, shape, options })
+        let p = SphereProblem { mu, shape, options };
+        let cost = p.cost();
+        if cost.nodes > MAX_NODES {
+            return Err(Error::invalid(
+                "resolution",
+                format!(
+                    "{} gives a mesh of about {} nodes at mu = {mu} (~{:.0} MiB, ~{:.0} s); \
+                     at most {MAX_NODES} nodes are allowed",
+                    options.resolution,
+                    cost.nodes,
+                    cost.memory_bytes / 1048576.0,
+                    cost.seconds
+                ),
+            ));
+        }
+        Ok(p)
+    }
+
+    /// Estimated size and cost of [`facts`](Self::facts), computed without
+    /// building anything: the node count of the mesh at a contact edge of
+    /// JKR's zero-load radius (or at the axis, whichever is larger), memory
+    /// `8 n^2 (2 + 24)` bytes (the Jacobian, its LU and up to 24 live
+    /// compliance matrices), and time `1.4e-7 n^3 (1 + mu)` s in an
+    /// optimised build on one core (fitted to the measured 0.04 s, 1.1 s,
+    /// 6.2 s at mu = 1, 5, 10, default resolution; docs/performance.md).
+    /// Debug builds are 10-30x slower.
+    pub fn cost(&self) -> CostEstimate {
+        let edge = 1.82 * MAUGIS_RADIUS;
+        let n = self
+            .mesh_spec(edge)
+            .node_count()
+            .max(self.mesh_spec(0.0).node_count());
+        let nf = n as f64;
+        CostEstimate {
+            nodes: n,
+            memory_bytes: 8.0 * nf * nf * 26.0,
+            seconds: 1.4e-7 * nf.powi(3) * (1.0 + self.mu),
+        }
     }
 
     /// Tabor parameter.
@@ -257,9 +321,25 @@ impl SphereProblem {
         (0.75 / (self.mu * self.mu)).min((2.0 / self.mu).sqrt())
     }
 
+    /// Node density multiplier on top of `resolution`: 2 where the zone is
+    /// the rigid scale `sqrt(2/mu)` (mu < ~0.83), 1 otherwise. At resolution
+    /// 1 with density 1 the mu = 0.005 pull-off was -2.000034, beyond
+    /// Bradley's -2 (converged -1.99964), and the mu = 0.5 zero-load radius
+    /// 0.56% small; the error falls as the spacing squared, so density 2 gives
+    /// 6e-5 and 0.13% (tests/sphere_convergence.rs) for 2x the nodes, which
+    /// costs little at small mu.
+    pub(crate) fn density(&self) -> f64 {
+        let mu = self.mu;
+        if 0.75 / (mu * mu) > (2.0 / mu).sqrt() {
+            2.0
+        } else {
+            1.0
+        }
+    }
+
     pub(crate) fn mesh_spec(&self, edge: f64) -> MeshSpec {
         let zone = self.zone();
-        let res = self.options.resolution;
+        let res = self.options.resolution * self.density();
         let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
         let r_max = r_far
             .max(1.5 * edge + 4.0 * zone)
