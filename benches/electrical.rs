@@ -58,5 +58,35 @@ fn exact(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, curve, exact);
+/// The same curve through a scene (`examples/scenes/rf-mems-switch.toml`,
+/// 10^2 summits), the general path every law takes: the spot conductance and
+/// its square as observables of the GW integral. The whole run: a 1000-point
+/// approach leg (and for JKR and Kogut–Etsion the 1000-point retraction
+/// leg), the six listed loads solved for; no pull-off search.
+fn scene_curve(c: &mut Criterion) {
+    use asperity::study::{Plan, PlanMode, Scene};
+    let base = include_str!("../examples/scenes/rf-mems-switch.toml")
+        .replace("points = 200 ", "points = 1000 ")
+        .replace("pull_off = true", "pull_off = false");
+    let mut group = c.benchmark_group("electrical");
+    group.sample_size(10);
+    for (name, law, w) in [
+        ("hertz", "hertz", "0.0"),
+        ("jkr", "jkr", "0.5"),
+        ("kogut-etsion", "kogut-etsion", "0.5"),
+    ] {
+        let text = base
+            .replace("kind = \"kogut-etsion\"", &format!("kind = \"{law}\""))
+            .replace("w = 0.5 ", &format!("w = {w} "));
+        let scene = Scene::from_toml(&text).unwrap();
+        let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
+        group.bench_function(
+            format!("scene curve 1000 points wexler+greenwood {name}"),
+            |b| b.iter(|| plan.run().unwrap().curve.approach.len()),
+        );
+    }
+    group.finish();
+}
+
+criterion_group!(benches, curve, exact, scene_curve);
 criterion_main!(benches);

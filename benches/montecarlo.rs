@@ -6,9 +6,21 @@
 //! - `mc_curve/*`: a 1e6-summit approach-retract program of 1000 states
 //!   (500 separations per leg).
 //! - `mc_sample/*`: drawing the population.
+//! - `mc_state/{tabulated-md,kogut-etsion}/fixed/*`: exact Maugis–Dugdale
+//!   (`lambda = 0.5`) tabulated automatically by `SummitLaw::from_kind`,
+//!   and the Kogut–Etsion plastic law (gold), one radius.
+//! - `mc_small/hertz/*`: Hertz, 1e3 .. 1e5 summits, one state (the serial
+//!   path below `SERIAL_BELOW` evaluations); `mc_small/hertz_x8/*`: eight
+//!   states per call (parallel once `8 n >= SERIAL_BELOW`).
+//!
+//! The numpy peer of `mc_state/*/fixed/approach` is
+//! `benches/peers/montecarlo_numpy.py`.
 use asperity::heights::Exponential;
-use asperity::law::{Hertz, Jkr, RadiusScaling};
+use asperity::law::plastic::build;
+use asperity::law::{Hertz, Jkr, LawKind, RadiusScaling};
 use asperity::loading::{History, LoadingModel, LoadingProgram, Observables};
+use asperity::material::plastic::{Plasticity, Variant};
+use asperity::material::{Adhesion, AsperityContact};
 use asperity::montecarlo::*;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::hint::black_box;
@@ -35,6 +47,28 @@ fn laws() -> Vec<(&'static str, SummitLaw)> {
                 Arc::new(Jkr::new(R, 4.8e10, 0.5).unwrap()),
                 R,
                 RadiusScaling::MAUGIS,
+            )
+            .unwrap(),
+        ),
+    ]
+}
+
+/// Laws for one radius only (no radius scaling used).
+fn fixed_laws() -> Vec<(&'static str, SummitLaw)> {
+    // z0 = 0.3 nm: lambda = 1.157 mu ~ 0.6 (transition regime).
+    let contact = AsperityContact::new(R, 4.8e10, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
+    vec![
+        (
+            "tabulated-md",
+            SummitLaw::from_kind(LawKind::Maugis, &contact).unwrap(),
+        ),
+        (
+            "kogut-etsion",
+            SummitLaw::fixed(
+                build(Variant::KogutEtsion, R, 4.8e10, Plasticity::gold())
+                    .unwrap()
+                    .as_law(),
+                R,
             )
             .unwrap(),
         ),
@@ -89,6 +123,46 @@ fn bench_state(c: &mut Criterion) {
             }
         }
     }
+    let pop = populations().remove(0).1;
+    for (lname, law) in fixed_laws() {
+        let mc = MonteCarlo::new(pop.clone(), law).unwrap();
+        let d = -SIGMA;
+        for (hname, history) in [
+            ("approach", History::Approach),
+            ("retract", History::Retract { closest: 2.0 * d }),
+        ] {
+            group.bench_function(BenchmarkId::new(format!("{lname}/fixed"), hname), |b| {
+                b.iter(|| black_box(mc.state(black_box(d), history, &Observables::ALL).unwrap()))
+            });
+        }
+    }
+    group.finish();
+}
+
+fn bench_small(c: &mut Criterion) {
+    let mut group = c.benchmark_group("mc_small");
+    let law = laws().remove(0).1;
+    for n in [1_000usize, 10_000, 30_000, 100_000] {
+        let spec = PopulationSpec::new(n, SIGMA, RadiusSpec::Fixed(R), 1).unwrap();
+        let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
+        let mc = MonteCarlo::new(pop, law.clone()).unwrap();
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_function(BenchmarkId::new("hertz", n), |b| {
+            b.iter(|| {
+                black_box(
+                    mc.state(black_box(-SIGMA), History::Approach, &Observables::ALL)
+                        .unwrap(),
+                )
+            })
+        });
+        // Eight states in one call: 8 n evaluations, parallel from n = 8192
+        // (per-element throughput comparable with the serial single state).
+        let steps = [(-SIGMA, History::Approach); 8];
+        group.throughput(Throughput::Elements(8 * n as u64));
+        group.bench_function(BenchmarkId::new("hertz_x8", n), |b| {
+            b.iter(|| black_box(mc.states(black_box(&steps), &Observables::ALL).unwrap()))
+        });
+    }
     group.finish();
 }
 
@@ -131,5 +205,5 @@ fn bench_sample(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_state, bench_curve, bench_sample);
+criterion_group!(benches, bench_state, bench_small, bench_curve, bench_sample);
 criterion_main!(benches);

@@ -1,7 +1,7 @@
 //! Cost of one shaped-asperity law evaluation (criterion), against today's
 //! JKR: `cargo bench --bench shaped -- --warm-up-time 1 --measurement-time 3`.
-use asperity::axisym::Profile;
-use asperity::law::shaped::ShapedExact;
+use asperity::axisym::{AxisymMd, Profile};
+use asperity::law::shaped::{ShapedExact, ShapedMd, ShapedMdExact};
 use asperity::law::{AsperityLaw, Branch, Jkr, Shaped};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::hint::black_box;
@@ -43,6 +43,26 @@ fn laws() -> Vec<(&'static str, Box<dyn AsperityLaw>)> {
             Box::new(Shaped::new(table(), 1e8, 1.0).unwrap()),
         ),
         (
+            "md_paraboloid_lambda_1",
+            Box::new(
+                ShapedMd::new(
+                    Profile::paraboloid(1e-6).unwrap(),
+                    e,
+                    w,
+                    AxisymMd::stress_from_lambda(1.0, 1e-6, e, w),
+                )
+                .unwrap(),
+            ),
+        ),
+        (
+            "md_cone",
+            Box::new(ShapedMd::new(Profile::cone(0.2).unwrap(), e, w, 3.0 * e * 0.2).unwrap()),
+        ),
+        (
+            "md_cone_exact_untabulated",
+            Box::new(ShapedMdExact::new(Profile::cone(0.2).unwrap(), e, w, 3.0 * e * 0.2).unwrap()),
+        ),
+        (
             "cone_exact_untabulated",
             Box::new(ShapedExact::new(Profile::cone(0.2).unwrap(), e, w).unwrap()),
         ),
@@ -73,6 +93,9 @@ fn bench_build(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("cone", |b| {
         b.iter(|| black_box(Shaped::new(Profile::cone(0.2).unwrap(), 1e9, 0.05).unwrap()))
+    });
+    group.bench_function("md_cone", |b| {
+        b.iter(|| black_box(ShapedMd::new(Profile::cone(0.2).unwrap(), 1e9, 0.05, 6e8).unwrap()))
     });
     group.finish();
 }

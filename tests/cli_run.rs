@@ -135,3 +135,142 @@ fn map_writes_svg_and_csv_and_checks_tolerance() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Issue 11: scenes outside GW's validity range or with impossible results
+/// are refused naming the field (exit 2), or run with warnings in the text
+/// summary, on stderr and in summary.json `"warnings"`.
+#[test]
+fn scenes_outside_the_model_are_refused_or_warned() {
+    let dir = tmp("validity");
+    let good = std::fs::read_to_string(scene_path("mems-gold.toml")).unwrap();
+    let refused = [
+        ("sigma = 5e-9 ", "sigma = 1e-3 ", "surface.sigma"),
+        ("sigma = 5e-9 ", "sigma = 1e300 ", "surface.sigma"),
+        ("e1 = 79e9", "e1 = 1e-300", "materials.e1"),
+        (
+            "closest_separation = 5e-9",
+            "closest_separation = -1e-6",
+            "program.closest_separation",
+        ),
+        ("points = 200", "points = 1000000000", "program.points"),
+        (
+            "nominal_area = 1e-8",
+            "nominal_area = 1e-8\nheights = [1e-9, 2e-9]",
+            "surface.heights",
+        ),
+        (
+            "nominal_area = 1e-8",
+            "nominal_area = 1e-8\nweibull_shape = 2.0",
+            "surface.weibull_shape",
+        ),
+    ];
+    for (old, new, field) in refused {
+        std::fs::write(dir.join("bad.toml"), good.replacen(old, new, 1)).unwrap();
+        let (code, out, err) = asperity(&["run", "bad.toml"], &dir);
+        assert_eq!(code, 2, "{field}: {out} {err}");
+        assert!(
+            err.starts_with(&format!("error: {field}")),
+            "{field}: {err}"
+        );
+    }
+    // Large populations are refused with the estimate and the bound.
+    for (extra, field) in [
+        ("summits = 1000000000", "montecarlo.summits"),
+        ("", "surface.nominal_area"),
+    ] {
+        let text = good.replacen(
+            "nominal_area = 1e-8",
+            "nominal_area = 1e2",
+            extra.is_empty() as usize,
+        ) + &format!("\n[montecarlo]\n{extra}\n");
+        std::fs::write(dir.join("bad.toml"), text).unwrap();
+        let (code, _, err) = asperity(&["run", "bad.toml"], &dir);
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains(field) && err.contains("GB"), "{err}");
+    }
+    // The default scene is inside the model: an empty warnings list, and the
+    // model error of the law beside the tolerance.
+    let (code, out, err) = asperity(&["run", &scene_path("mems-gold.toml"), "--json"], &dir);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["warnings"], serde_json::json!([]));
+    let e = v["law_model_error"].as_f64().unwrap();
+    assert!(e > 0.01 && e < 0.1, "{e}");
+    let (_, text, _) = asperity(&["run", &scene_path("mems-gold.toml")], &dir);
+    assert!(
+        text.contains("differs from the full Lennard-Jones solution by 4."),
+        "{text}"
+    );
+    // Outside the model but possible: exit 0 with warnings.
+    for (old, new, needle) in [
+        ("sigma = 5e-9 ", "sigma = 1e-7 ", "A_r/A_n"),
+        (
+            "# start_separation = 40e-9",
+            "start_separation = 1.0",
+            "resolution",
+        ),
+    ] {
+        std::fs::write(dir.join("warn.toml"), good.replacen(old, new, 1)).unwrap();
+        let (code, out, err) = asperity(&["run", "warn.toml", "--json"], &dir);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let w = v["warnings"].as_array().unwrap();
+        assert!(
+            w.iter().any(|s| s.as_str().unwrap().contains(needle)),
+            "{needle}: {w:?}"
+        );
+        assert!(err.contains("warning:"), "{err}");
+        assert!(v["hysteresis_energy"].as_f64().unwrap() >= 0.0);
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Issue 11: Monte Carlo outputs say what each number is; no standard
+/// errors where fewer than 20 summits are in contact; no NaN cells.
+#[test]
+fn montecarlo_outputs_are_honest() {
+    let dir = tmp("mc-honest");
+    let gold = std::fs::read_to_string(scene_path("montecarlo-gold.toml")).unwrap();
+    let (code, out, err) = asperity(
+        &["run", &scene_path("montecarlo-gold.toml"), "--out", "o"],
+        &dir,
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("minimum of the mean load"), "{out}");
+    assert!(out.contains("seeds: mean"), "{out}");
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("o/summary.json")).unwrap())
+            .unwrap();
+    let m = &v["montecarlo"];
+    assert_eq!(m["pull_off_other_seeds"].as_array().unwrap().len(), 4);
+    assert!(m["pull_off_seed_std"].as_f64().unwrap() > 0.0);
+    let csv = std::fs::read_to_string(dir.join("o/montecarlo.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let (se, contacts) = (
+        header.iter().position(|h| *h == "load_se_N").unwrap(),
+        header.iter().position(|h| *h == "contacts").unwrap(),
+    );
+    let mut blank = 0;
+    for line in csv.lines().skip(1) {
+        let cells: Vec<&str> = line.split(',').collect();
+        if cells[contacts].parse::<f64>().unwrap() < 20.0 {
+            assert_eq!(cells[se], "", "{line}");
+            assert!(line.contains("fewer than 20"), "{line}");
+            blank += 1;
+        } else {
+            assert!(!cells[se].is_empty(), "{line}");
+        }
+    }
+    assert!(blank > 0);
+    // One summit: no NaN anywhere.
+    let one = gold.replacen("# summits = 10000", "summits = 1", 1);
+    assert_ne!(one, gold);
+    std::fs::write(dir.join("one.toml"), one).unwrap();
+    let (code, _, err) = asperity(&["run", "one.toml", "--out", "p"], &dir);
+    assert_eq!(code, 0, "{err}");
+    for f in ["montecarlo.csv", "summary.json", "curve.csv"] {
+        let t = std::fs::read_to_string(dir.join("p").join(f)).unwrap();
+        assert!(!t.to_lowercase().contains("nan"), "{f}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

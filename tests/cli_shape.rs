@@ -330,3 +330,61 @@ fn bad_input_exits_2_with_one_line_naming_the_argument() {
     ]);
     assert_eq!(num(&v["pull_off_load_control"], "load_N"), 0.0);
 }
+
+/// `--stress`: Maugis–Dugdale for the profile, same keys; the paraboloid
+/// gives `law::Maugis` (Maugis 1992) through the binary.
+#[test]
+fn stress_switches_to_maugis_dugdale() {
+    use asperity::axisym::AxisymMd;
+    use asperity::law::{AsperityLaw, Control, Maugis};
+    let (r, e, w) = (1e-6, 1e9, 0.05);
+    for lambda in [0.5, 2.0] {
+        let sigma = AxisymMd::stress_from_lambda(lambda, r, e, w).to_string();
+        let (v, _) = json(&[
+            "--profile",
+            "paraboloid",
+            "--radius",
+            "1e-6",
+            "--estar",
+            "1e9",
+            "--w",
+            "0.05",
+            "--stress",
+            &sigma,
+            "--json",
+        ]);
+        let law = Maugis::new(r, e, w, lambda).unwrap();
+        for (k, c) in [
+            ("pull_off_load_control", Control::Load),
+            ("jump_out_displacement_control", Control::Displacement),
+        ] {
+            assert_eq!(keys(&v[k]), ["interference_m", "load_N", "radius_m"]);
+            let want = law.pull_off(c).unwrap().load;
+            // The decimal sigma0 round-trips: 1e-10 holds.
+            assert!(
+                (num(&v[k], "load_N") / want - 1.0).abs() < 1e-10,
+                "{lambda} {k}: {v}"
+            );
+        }
+    }
+    // The flat punch has no Maugis-Dugdale form; the stress must be > 0.
+    for (args, name) in [
+        (
+            ["--profile", "flat", "--radius", "1e-6", "--stress", "1e7"],
+            "--profile",
+        ),
+        (
+            ["--profile", "cone", "--tan-angle", "0.2", "--stress", "-1"],
+            "--stress",
+        ),
+    ] {
+        let all: Vec<&str> = args
+            .iter()
+            .chain(["--estar", "1e9", "--w", "0.05"].iter())
+            .copied()
+            .collect();
+        let (code, _, err) = run(&all);
+        assert_eq!(code, 2, "{all:?}");
+        assert!(err.contains(name), "{err}");
+    }
+}

@@ -247,3 +247,89 @@ fn bad_flags_exit_2_naming_the_flag() {
     let err = one_line_error(&[&f]);
     assert!(err.contains("--pixel-size"), "{err}");
 }
+
+fn run_scene(scene: &str, out: &std::path::Path) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(["run", scene, "--json", "--out"])
+        .arg(out)
+        .output()
+        .expect("run asperity");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn run_on_the_measured_topography_scene_reports_both_models() {
+    let scene = format!(
+        "{}/examples/scenes/measured-topography.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let dir = std::env::temp_dir().join(format!("asperity-measured-{}", std::process::id()));
+    let (code, out, err) = run_scene(&scene, &dir);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).expect("one JSON object");
+    let t = &v["topography"];
+    assert_eq!(
+        keys(t),
+        [
+            "bandwidth_alpha",
+            "cols",
+            "file",
+            "gw_from_moments",
+            "m0",
+            "m2",
+            "m4",
+            "model",
+            "other",
+            "periodic",
+            "pixel_size_m",
+            "rms_height_m",
+            "rows",
+            "summits"
+        ]
+    );
+    assert_eq!(t["model"], "measured");
+    assert_eq!(t["summits"]["count"], 525);
+    assert_eq!(
+        (t["rows"].as_u64(), t["cols"].as_u64()),
+        (Some(160), Some(160))
+    );
+    let other = &t["other"];
+    assert_eq!(other["model"], "moments");
+    for k in ["max_load", "max_area", "max_count", "pull_off_load"] {
+        assert!(other[k].is_number(), "{k}: {other}");
+    }
+    assert!(v["plan"].as_array().unwrap().iter().any(|d| d
+        .as_str()
+        .unwrap()
+        .starts_with("topography: measured summits")));
+    for f in ["summit_heights.svg", "summit_map.svg", "curve.csv"] {
+        let text = std::fs::read_to_string(dir.join(f)).unwrap();
+        assert!(!text.is_empty(), "{f}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn measured_scene_with_summit_statistics_exits_2_naming_the_key() {
+    let src = format!(
+        "{}/examples/scenes/measured-topography.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(src).unwrap().replacen(
+        "pixel_size = 50e-9",
+        "pixel_size = 50e-9\nsigma = 5e-9",
+        1,
+    );
+    let dir = std::env::temp_dir().join(format!("asperity-measured-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("bad.toml");
+    std::fs::write(&scene, text).unwrap();
+    let (code, _, err) = run_scene(scene.to_str().unwrap(), &dir);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("surface.sigma"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -219,6 +219,8 @@ fn bad_sweep_arguments_exit_2() {
     for (args, field) in [
         (vec!["--vary", "surface.sigma"], "--vary"),
         (vec!["--vary", "surface.sigma=1:2:0"], "--vary"),
+        // A grid without N used to run one point silently.
+        (vec!["--vary", "surface.sigma=1e-7:2e-7"], "has no N"),
         (vec!["--vary", "nosuch.x=1:2:3"], "nosuch.x"),
         (vec!["--vary", "title=1:2:3"], "title"),
         (vec!["--vary", "surface.sigma=-1:2:3", "--log"], "--log"),
@@ -242,5 +244,121 @@ fn bad_sweep_arguments_exit_2() {
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
         assert!(err.contains(field), "{args:?}: {err}");
     }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_second_sweep_into_a_busy_directory_is_refused() {
+    let dir = tmp("lock");
+    let scene = slow_scene(&dir);
+    let out = dir.join("out");
+    let first = bin()
+        .arg("sweep")
+        .arg(&scene)
+        .args(VARY)
+        .args(["--threads", "1", "--out"])
+        .arg(&out)
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let csv = out.join("results.csv");
+    let t0 = Instant::now();
+    while rows(&csv) < 1 && t0.elapsed() < Duration::from_secs(60) {
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    // The same sweep (and a different one) started meanwhile must not
+    // write into the directory nor exit 0.
+    let (code, err) = sweep(&scene, &out, &[]);
+    let o = first.wait_with_output().unwrap();
+    let first_err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        rows(&csv) < 48 || code != 0,
+        "the first sweep ended too soon"
+    );
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("another asperity sweep"), "{err}");
+    assert!(err.contains(&out.display().to_string()), "{err}");
+    assert_eq!(o.status.code(), Some(0), "{first_err}");
+    assert!(
+        first_err.contains("0 already done, 48 computed"),
+        "{first_err}"
+    );
+    // Non-terminal stderr gets plain progress lines, ending at 48/48.
+    assert!(
+        first_err.contains("sweep: 48/48 points (100 %)"),
+        "{first_err}"
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(text.lines().count(), 1 + 48);
+    // The lock dies with its process: after the first sweep a rerun works.
+    let (code, err) = sweep(&scene, &out, &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("48 already done"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn merge_refuses_rows_outside_the_sweep_naming_the_shard() {
+    let dir = tmp("mergebad");
+    let scene = format!(
+        "{}/examples/scenes/soft-jkr.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let shards: Vec<PathBuf> = (1..=2).map(|k| dir.join(format!("s{k}"))).collect();
+    for (k, s) in shards.iter().enumerate() {
+        let o = bin()
+            .args(["sweep", &scene, "--vary", "adhesion.w=0.01:0.1:4"])
+            .args(["--shard", &format!("{}/2", k + 1), "--out"])
+            .arg(s)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0));
+    }
+    let csv = shards[1].join("results.csv");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let last = text.lines().last().unwrap();
+    let foreign = format!("99{}", &last[last.find(',').unwrap()..]);
+    std::fs::write(&csv, format!("{text}{foreign}\n")).unwrap();
+    let o = bin()
+        .arg("merge")
+        .args(&shards)
+        .arg("--out")
+        .arg(dir.join("m"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("point 99 lies outside the sweep"), "{err}");
+    assert!(err.contains(&shards[1].display().to_string()), "{err}");
+    assert!(!err.contains("--out"), "{err}");
+    assert!(!dir.join("m/results.csv").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_sweep_where_every_point_fails_exits_1() {
+    let dir = tmp("allfail");
+    let scene = format!(
+        "{}/examples/scenes/soft-jkr.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let o = bin()
+        .args(["sweep", &scene, "--vary", "materials.nu1=0.6:0.7:2"])
+        .args(["--out", "o"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("every one of the 2 points failed"), "{err}");
+    assert!(err.contains("materials.nu1"), "{err}");
+    // Rerunning (nothing left to compute) still does not report success.
+    let o = bin()
+        .args(["sweep", &scene, "--vary", "materials.nu1=0.6:0.7:2"])
+        .args(["--out", "o"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(1));
     std::fs::remove_dir_all(&dir).ok();
 }

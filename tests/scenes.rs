@@ -30,6 +30,11 @@ fn every_example_scene_runs_and_matches_library_calls() {
     assert!(names.len() >= 5, "{names:?}");
     for name in names {
         let scene = example(&name);
+        if scene.surface.topography.is_some() {
+            // A measured map: tests/surface_scene.rs checks it against a
+            // direct sum over its summits.
+            continue;
+        }
         let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
         let res = plan.run().unwrap();
         // The same numbers straight from the library.

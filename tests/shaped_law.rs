@@ -25,6 +25,10 @@ proptest! {
         let (e, w) = (10f64.powf(le), 10f64.powf(lw));
         let prof = profile(kind, p, n);
         let fast = Shaped::new(prof.clone(), e, w).unwrap();
+        // Cost bound: every corner of this box builds in < 8000 exact
+        // evaluations (< 20 ms); a sphere table that ran into the noise near
+        // a = R once took 17 CPU-minutes.
+        prop_assert!(fast.table().build_evaluations() < 20_000, "{}", fast.table().build_evaluations());
         let exact = ShapedExact::new(prof, e, w).unwrap();
         let scale = exact.pull_off(Control::Load).unwrap().load.abs();
         let dc = exact.detach_interference();
@@ -46,6 +50,30 @@ proptest! {
         // The most tensile attached load is the load-controlled pull-off.
         let po = fast.pull_off(Control::Load).unwrap();
         prop_assert!(fast.state(d, Branch::Retract).load >= po.load * (1.0 + 1e-9));
+    }
+}
+
+/// The case that once ran for 17 CPU-minutes: a sphere whose JKR contact
+/// reaches a/R = 0.67 at pull-off (w/(E* R) = 0.2). The tables stop at
+/// 0.95 R, where the load still has its digits.
+#[test]
+fn a_strongly_adhering_sphere_builds_in_bounded_cost() {
+    let (r, e, w) = (5e-8, 1e8, 1.0);
+    let fast = Shaped::new(Profile::sphere(r).unwrap(), e, w).unwrap();
+    assert!(fast.table().build_evaluations() < 20_000);
+    let exact = ShapedExact::new(Profile::sphere(r).unwrap(), e, w).unwrap();
+    let dc = exact.detach_interference();
+    let scale = exact.pull_off(Control::Load).unwrap().load.abs();
+    for i in 0..20 {
+        let d = dc + 2.0 * dc.abs() * i as f64 / 19.0;
+        let (f, g) = (
+            fast.state(d, Branch::Retract),
+            exact.state(d, Branch::Retract),
+        );
+        assert!(
+            (f.load - g.load).abs() <= 1e-9 * (g.load.abs() + scale),
+            "{d}"
+        );
     }
 }
 

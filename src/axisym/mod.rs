@@ -9,6 +9,7 @@
 //! - [`sphere_exact`]: Maugis' exact-sphere closed forms and the `a/R > 0.3`
 //!   warning.
 //! - [`dmt`]: DMT where it is valid (finite apex curvature).
+//! - [`md`]: Maugis–Dugdale for any profile (Barthel's cohesive-zone form).
 //!
 //! Conventions as the rest of the crate: SI units, `delta > 0` overlap,
 //! load `< 0` tensile; Barthel's `calK = E*/2`. The rough-surface law built
@@ -16,11 +17,13 @@
 
 pub mod dmt;
 pub mod jkr;
+pub mod md;
 pub mod profile;
 pub mod sphere_exact;
 pub mod tabulated;
 
 pub use dmt::AxisymDmt;
 pub use jkr::AxisymJkr;
+pub use md::{AxisymMd, MdPoint};
 pub use profile::Profile;
 pub use tabulated::TabulatedProfile;

@@ -224,6 +224,23 @@ impl Profile {
         }
     }
 
+    /// Slope `f'(r)` (dimensionless) of the profile; `0` on the flat punch
+    /// (its wall beyond `a0` has no slope).
+    pub fn slope(&self, r: f64) -> f64 {
+        match self {
+            Profile::Paraboloid { radius } => r / radius,
+            Profile::Sphere { radius } => r / (radius * radius - r * r).max(0.0).sqrt(),
+            Profile::Cone { tan_angle } => *tan_angle,
+            Profile::Flat { .. } => 0.0,
+            Profile::Power {
+                coefficient,
+                exponent,
+                ..
+            } => coefficient * exponent * r.powf(exponent - 1.0),
+            Profile::Tabulated(t) => t.derivatives(r).0,
+        }
+    }
+
     /// Non-adhesive interference `delta_0(a)` (m) at contact radius `a` (m).
     pub fn delta0(&self, a: f64) -> f64 {
         match self {

@@ -21,12 +21,16 @@
 
 pub mod gw;
 pub mod heating;
+pub mod observable;
+pub mod sample;
 pub mod spot;
 pub mod spots;
 pub mod switch;
 
 pub use gw::{ContactResistance, ElectricalState, GwSpots, Interaction, SpotSums, C_SQ};
 pub use heating::Heating;
+pub use observable::{ResistanceObservables, SpotConductance};
+pub use sample::{population_spots, SampleResistance, EXACT_MAX_SPOTS};
 pub use spot::{Conductor, SpotResistance, Spreading};
 pub use spots::Spots;
 pub use switch::{Stiction, Switch};

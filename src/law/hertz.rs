@@ -68,6 +68,30 @@ impl AsperityLaw for Hertz {
         self.load_at(delta)
     }
 
+    /// Branch-free (`delta <= 0` clamped to 0, which gives exactly the
+    /// free state), so the loop vectorises; SIMD width picked at run time
+    /// ([`pulp::Arch`]). No history: `delta_max` is ignored. Bit for bit
+    /// equal to [`Hertz::load_at`] and [`Hertz::radius_at`].
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        _delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        let (k, r) = (self.stiffness, self.radius);
+        pulp::Arch::new().dispatch(
+            #[inline(always)]
+            || {
+                for ((&d, l), a) in delta.iter().zip(load.iter_mut()).zip(radius.iter_mut()) {
+                    let d = if d > 0.0 { d } else { 0.0 };
+                    *l = k * d * d.sqrt();
+                    *a = (r * d).sqrt();
+                }
+            },
+        );
+    }
+
     fn attach_interference(&self) -> f64 {
         0.0
     }

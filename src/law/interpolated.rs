@@ -318,6 +318,45 @@ impl BranchTable {
         Some((i, ((2.0 * delta - l - r) / (r - l)).clamp(-1.0, 1.0)))
     }
 
+    /// As [`locate`](Self::locate), walking from panel `*hint` (updated):
+    /// the same panel, found in O(1) when consecutive calls are close.
+    #[inline]
+    fn locate_from(&self, delta: f64, hint: &mut usize) -> Option<(usize, f64)> {
+        let n = self.load.len();
+        if n == 0 || !(delta >= self.edges[0] && delta <= self.edges[n]) {
+            return None;
+        }
+        // The last panel i with edges[i] <= delta (i <= n - 1), as the
+        // binary search in `locate` finds it.
+        let mut i = (*hint).min(n - 1);
+        while i + 1 < n && self.edges[i + 1] <= delta {
+            i += 1;
+        }
+        while i > 0 && self.edges[i] > delta {
+            i -= 1;
+        }
+        *hint = i;
+        let (l, r) = (self.edges[i], self.edges[i + 1]);
+        Some((i, ((2.0 * delta - l - r) / (r - l)).clamp(-1.0, 1.0)))
+    }
+
+    #[inline]
+    fn eval_from(&self, delta: f64, hint: &mut usize) -> Option<ContactState> {
+        let (i, t) = self.locate_from(delta, hint)?;
+        Some(self.eval_at(i, t))
+    }
+
+    #[inline]
+    fn eval_at(&self, i: usize, t: f64) -> ContactState {
+        let load = clenshaw(&self.load[i], t);
+        let radius = if self.contact[i] {
+            clenshaw(&self.r2[i], t).max(0.0).sqrt()
+        } else {
+            0.0
+        };
+        ContactState { load, radius }
+    }
+
     #[inline]
     fn load(&self, delta: f64) -> Option<f64> {
         self.locate(delta).map(|(i, t)| clenshaw(&self.load[i], t))
@@ -326,13 +365,7 @@ impl BranchTable {
     #[inline]
     fn eval(&self, delta: f64) -> Option<ContactState> {
         let (i, t) = self.locate(delta)?;
-        let load = clenshaw(&self.load[i], t);
-        let radius = if self.contact[i] {
-            clenshaw(&self.r2[i], t).max(0.0).sqrt()
-        } else {
-            0.0
-        };
-        Some(ContactState { load, radius })
+        Some(self.eval_at(i, t))
     }
 }
 
@@ -365,6 +398,45 @@ impl AsperityLaw for InterpolatedLaw {
 
     fn history_breakpoints(&self) -> Vec<f64> {
         self.inner.history_breakpoints()
+    }
+
+    fn remembers_maximum(&self) -> bool {
+        self.inner.remembers_maximum()
+    }
+
+    /// Sorted input (a population's heights) finds each panel by walking
+    /// from the previous one (amortised O(1)) instead of a binary search;
+    /// the panel found, and so every value, is the one
+    /// [`state`](AsperityLaw::state) finds (bit for bit).
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        let mut hint = [0usize; 2];
+        let out = load.iter_mut().zip(radius.iter_mut());
+        let mut one = |d: f64, branch: Branch| {
+            let k = usize::from(branch == Branch::Retract);
+            self.tables[k]
+                .eval_from(d, &mut hint[k])
+                .unwrap_or_else(|| self.inner.state(d, branch))
+        };
+        match delta_max {
+            None => {
+                for (&d, (l, r)) in delta.iter().zip(out) {
+                    let s = one(d, Branch::Approach);
+                    (*l, *r) = (s.load, s.radius);
+                }
+            }
+            Some(m) => {
+                for ((&d, &m), (l, r)) in delta.iter().zip(m).zip(out) {
+                    let s = one(d, self.branch_after(m));
+                    (*l, *r) = (s.load, s.radius);
+                }
+            }
+        }
     }
 
     fn attach_interference(&self) -> f64 {

@@ -147,6 +147,48 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         self.state_after(delta, delta_max).load
     }
 
+    /// Many asperities in one call (the Monte Carlo hot loop): for each `i`,
+    /// `(load[i], radius[i])` (N, m) is `state(delta[i], Approach)` when
+    /// `delta_max` is `None` and `state_after(delta[i], delta_max[i])`
+    /// otherwise, bit for bit. The law is dispatched once per block instead
+    /// of once per asperity; the default loop calls the law's own `state`
+    /// statically (inlined), and laws override it with loops the compiler
+    /// vectorises ([`Hertz`]) or searches that exploit sorted input
+    /// ([`interpolated::InterpolatedLaw`]). All slices have the same length
+    /// (the shortest bounds the work).
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        let out = load.iter_mut().zip(radius.iter_mut());
+        match delta_max {
+            None => {
+                for (&d, (l, r)) in delta.iter().zip(out) {
+                    let s = self.state(d, Branch::Approach);
+                    (*l, *r) = (s.load, s.radius);
+                }
+            }
+            Some(m) => {
+                for ((&d, &m), (l, r)) in delta.iter().zip(m).zip(out) {
+                    let s = self.state_after(d, m);
+                    (*l, *r) = (s.load, s.radius);
+                }
+            }
+        }
+    }
+
+    /// Whether [`state_after`](AsperityLaw::state_after) depends on the
+    /// value of `delta_max` beyond crossing the attach interference (plastic
+    /// laws: the permanent flattening). Path-following sums
+    /// ([`crate::montecarlo::MonteCarlo::sequence`]) then keep each
+    /// asperity's maximum interference. Default `false`.
+    fn remembers_maximum(&self) -> bool {
+        false
+    }
+
     /// Values of `delta_max` at which [`state_after`](AsperityLaw::state_after)
     /// changes character (default: the attach interference). Integrators
     /// split their quadrature there.

@@ -33,6 +33,15 @@ impl RadiusScaling {
         contact_radius: 0.0,
     };
 
+    /// Elastic-plastic sphere on a flat without adhesion: `(1, 2, 1)` at
+    /// fixed `E*`, `Y`, `H` (the fits are in `delta/omega_c` with
+    /// `omega_c ~ R` and `P_c ~ R^2`; see `law::plastic`).
+    pub const PLASTIC: RadiusScaling = RadiusScaling {
+        interference: 1.0,
+        load: 2.0,
+        contact_radius: 1.0,
+    };
+
     /// Factors `[rho^-alpha, rho^beta, rho^gamma]` for radius ratio `rho`.
     pub fn factors(&self, rho: f64) -> [f64; 3] {
         if rho == 1.0 {

@@ -14,10 +14,13 @@
 //! evaluation is a binary search and two Clenshaw sums. Beyond a profile
 //! that ends (flat punch, a table), the contact radius stays at the end and
 //! the load grows with the punch stiffness `2 E* a_max`.
+//!
+//! [`ShapedMd`] / [`ShapedMdExact`] are the same for Maugis–Dugdale
+//! adhesion of the profile ([`crate::axisym::md`], Dugdale stress `sigma0`).
 
 use super::interpolated::InterpolatedLaw;
 use super::{AsperityLaw, Branch, ContactState, Control, Instability};
-use crate::axisym::{AxisymJkr, Profile};
+use crate::axisym::{AxisymJkr, AxisymMd, MdPoint, Profile};
 use crate::error::Result;
 use std::sync::Arc;
 
@@ -146,7 +149,22 @@ impl Shaped {
             Profile::Sphere { radius } => 0.95 * radius,
             _ => (50.0 * exact.zero_load_radius).min(max),
         };
-        let hi = jkr.interference(a_hi).max(lo + 100.0 * lo.abs());
+        let hi = match jkr.profile() {
+            // Not past 0.95 R: as a -> R the load loses all its digits
+            // (atanh), and the tables would refine on that noise for ever.
+            Profile::Sphere { .. } => jkr.interference(a_hi),
+            _ => jkr.interference(a_hi).max(lo + 100.0 * lo.abs()),
+        };
+        if !(hi > lo) {
+            return Err(crate::Error::invalid(
+                "work_of_adhesion",
+                format!(
+                    "the jump-out radius {} m of this sphere is beyond 0.95 R: adhesion too \
+                     strong for the small-strain exact sphere",
+                    jkr.jump_out_displacement_control().radius
+                ),
+            ));
+        }
         let table = InterpolatedLaw::new(exact.clone(), lo, hi, tol)?;
         Ok(Shaped { exact, table })
     }
@@ -205,6 +223,219 @@ impl AsperityLaw for Shaped {
     }
 }
 
+/// Maugis–Dugdale for an axisymmetric profile ([`crate::axisym::AxisymMd`]),
+/// solved exactly at every call (nested root solves: about 0.1-1 ms; use
+/// [`ShapedMd`]).
+///
+/// History as [`super::Maugis`]: an approaching summit is free until the
+/// gap at its apex equals the Dugdale range (`delta = -h0`, `h0 = w/sigma0`),
+/// then jumps onto the stable branch; a retracting one stays on it down to
+/// the displacement-controlled snap.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapedMdExact {
+    md: AxisymMd,
+}
+
+impl ShapedMdExact {
+    /// Builds the law of `profile` for `E*` (Pa), `w` (J/m^2) and Dugdale
+    /// stress `sigma0` (Pa).
+    ///
+    /// # Errors
+    /// As [`AxisymMd::new`].
+    pub fn new(profile: Profile, contact_modulus: f64, work: f64, stress: f64) -> Result<Self> {
+        Ok(ShapedMdExact {
+            md: AxisymMd::new(profile, contact_modulus, work, stress)?,
+        })
+    }
+
+    /// The underlying contact.
+    pub fn contact(&self) -> &AxisymMd {
+        &self.md
+    }
+
+    fn on_disc_snap(&self) -> bool {
+        self.md.jump_out_displacement_control().radius == 0.0
+    }
+}
+
+fn instability(p: MdPoint) -> Instability {
+    Instability {
+        load: p.load,
+        interference: p.interference,
+        radius: p.radius,
+    }
+}
+
+impl AsperityLaw for ShapedMdExact {
+    fn name(&self) -> &'static str {
+        "shaped_md"
+    }
+
+    fn state(&self, delta: f64, branch: Branch) -> ContactState {
+        if branch == Branch::Approach && delta < self.attach_interference() {
+            return ContactState::FREE;
+        }
+        match self.md.stable_point(delta) {
+            Some(p) => ContactState {
+                load: p.load,
+                radius: p.radius,
+            },
+            None => ContactState::FREE,
+        }
+    }
+
+    /// `-h0`: the gap at the apex equals the Dugdale range.
+    fn attach_interference(&self) -> f64 {
+        -self.md.range()
+    }
+
+    fn detach_interference(&self) -> f64 {
+        self.md.jump_out_displacement_control().interference
+    }
+
+    fn cutoff_interference(&self) -> f64 {
+        self.detach_interference()
+    }
+
+    /// The branch threshold, and the junction (contact starts) when the
+    /// stable branch passes through the non-contact disc.
+    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+        let lo = match branch {
+            Branch::Approach => self.attach_interference(),
+            Branch::Retract => self.detach_interference(),
+        };
+        let mut v = vec![lo];
+        let j = self.md.junction().interference;
+        if self.on_disc_snap() && j > lo {
+            v.push(j);
+        }
+        v
+    }
+
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        Some(instability(match control {
+            Control::Load => self.md.pull_off_load_control(),
+            Control::Displacement => self.md.jump_out_displacement_control(),
+        }))
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        Some(self.md.zero_load().radius)
+    }
+}
+
+/// Maugis–Dugdale for an axisymmetric profile, tabulated for speed by
+/// [`InterpolatedLaw`] (degree-6 Chebyshev panels) from the snap to the
+/// interference of 50 zero-load radii.
+#[derive(Debug, Clone)]
+pub struct ShapedMd {
+    exact: Arc<ShapedMdExact>,
+    table: InterpolatedLaw,
+}
+
+impl ShapedMd {
+    /// [`ShapedMdExact`] tabulated to [`DEFAULT_TOLERANCE`] (relative to the
+    /// load plus the pull-off scale).
+    ///
+    /// # Errors
+    /// As [`AxisymMd::new`].
+    pub fn new(profile: Profile, contact_modulus: f64, work: f64, stress: f64) -> Result<Self> {
+        ShapedMd::with_tolerance(profile, contact_modulus, work, stress, DEFAULT_TOLERANCE)
+    }
+
+    /// [`ShapedMdExact`] tabulated to relative tolerance `tol` (`[1e-13, 1e-2]`).
+    ///
+    /// # Errors
+    /// As [`AxisymMd::new`]; [`crate::Error::OutOfRange`] naming `tol`.
+    pub fn with_tolerance(
+        profile: Profile,
+        contact_modulus: f64,
+        work: f64,
+        stress: f64,
+        tol: f64,
+    ) -> Result<Self> {
+        let exact = Arc::new(ShapedMdExact::new(profile, contact_modulus, work, stress)?);
+        let md = exact.contact();
+        let lo = exact.detach_interference();
+        let a_hi = (50.0 * md.zero_load().radius).min(0.5 * md.profile().max_radius());
+        let hi = md.point(a_hi).interference.max(lo + 100.0 * lo.abs());
+        let table = InterpolatedLaw::new(exact.clone(), lo, hi, tol)?;
+        Ok(ShapedMd { exact, table })
+    }
+
+    /// The exact law the tables stand in for.
+    pub fn exact(&self) -> &ShapedMdExact {
+        &self.exact
+    }
+
+    /// The tables.
+    pub fn table(&self) -> &InterpolatedLaw {
+        &self.table
+    }
+}
+
+impl AsperityLaw for ShapedMd {
+    fn name(&self) -> &'static str {
+        "shaped_md"
+    }
+
+    #[inline]
+    fn state(&self, delta: f64, branch: Branch) -> ContactState {
+        self.table.state(delta, branch)
+    }
+
+    fn state_after(&self, delta: f64, delta_max: f64) -> ContactState {
+        self.table.state_after(delta, delta_max)
+    }
+
+    fn load_after(&self, delta: f64, delta_max: f64) -> f64 {
+        self.table.load_after(delta, delta_max)
+    }
+
+    fn attach_interference(&self) -> f64 {
+        self.exact.attach_interference()
+    }
+
+    fn detach_interference(&self) -> f64 {
+        self.exact.detach_interference()
+    }
+
+    fn cutoff_interference(&self) -> f64 {
+        self.exact.cutoff_interference()
+    }
+
+    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+        self.exact.breakpoints(branch)
+    }
+
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        self.exact.pull_off(control)
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        self.exact.zero_load_radius()
+    }
+}
+
+/// The shaped law of a profile for scenes and populations: JKR
+/// ([`Shaped`]) when `stress` is `None`, Maugis–Dugdale ([`ShapedMd`]) with
+/// Dugdale stress `sigma0 = stress` (Pa) otherwise; `E*` (Pa), `w` (J/m^2).
+///
+/// # Errors
+/// As [`Shaped::new`] or [`ShapedMd::new`] (fields `contact_modulus`,
+/// `work_of_adhesion`, `stress`, `exponent`, `profile`).
+pub fn build(
+    profile: Profile,
+    contact_modulus: f64,
+    work: f64,
+    stress: Option<f64>,
+) -> Result<Arc<dyn AsperityLaw>> {
+    Ok(match stress {
+        None => Arc::new(Shaped::new(profile, contact_modulus, work)?),
+        Some(s) => Arc::new(ShapedMd::new(profile, contact_modulus, work, s)?),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -234,6 +465,17 @@ mod tests {
         assert!((s.detach_interference() / dc - 1.0).abs() < 1e-14);
         let z = j.zero_load_radius().unwrap();
         assert!((s.zero_load_radius().unwrap() / z - 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn build_picks_jkr_or_maugis_dugdale() {
+        let p = Profile::cone(0.2).unwrap();
+        let j = build(p.clone(), 1e9, 0.05, None).unwrap();
+        assert_eq!(j.attach_interference(), 0.0);
+        let m = build(p.clone(), 1e9, 0.05, Some(6e8)).unwrap();
+        assert!((m.attach_interference() + 0.05 / 6e8).abs() < 1e-24);
+        let e = build(p, 1e9, 0.05, Some(-1.0)).unwrap_err();
+        assert_eq!(e.field(), Some("stress"));
     }
 
     #[test]

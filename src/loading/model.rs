@@ -143,7 +143,19 @@ pub trait LoadingModel: Sync {
                 .unwrap_or(0.0))
         };
         let (mut lo, mut hi) = (start - scale, start);
-        while load(lo)? < target {
+        loop {
+            let p = load(lo)?;
+            if p.is_nan() {
+                // Not the target's fault: the model broke down (a derived
+                // quantity out of floating-point range).
+                return Err(Error::invalid(
+                    "law",
+                    format!("the total load is NaN at separation {lo:e} m"),
+                ));
+            }
+            if p >= target {
+                break;
+            }
             hi = lo;
             lo -= scale;
             if lo < start - LOAD_SEARCH_DEPTH * scale {

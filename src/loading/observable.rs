@@ -214,9 +214,12 @@ impl Totals {
         (slot < SLOTS && self.present[slot]).then(|| self.values[slot])
     }
 
-    /// The uncertainty of `slot`, if computed.
+    /// The uncertainty of `slot`, if computed and defined (`None` for an
+    /// undefined one, stored as NaN: e.g. the standard error of a
+    /// one-summit population).
     pub fn error(&self, slot: usize) -> Option<f64> {
-        (slot < SLOTS && self.present[slot]).then(|| self.errors[slot])
+        (slot < SLOTS && self.present[slot] && !self.errors[slot].is_nan())
+            .then(|| self.errors[slot])
     }
 
     /// Total load (N).

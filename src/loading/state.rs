@@ -61,10 +61,20 @@ impl State {
     /// Deviation of this state from `expected` in combined uncertainties,
     /// per slot: `(x - x_e) / sqrt(u^2 + u_e^2)`. For a population against
     /// the integral it is about N(0, 1) (`|z| > 5` is significant). `None`
-    /// for slots missing on either side or with zero combined uncertainty.
+    /// for slots missing on either side, with an undefined or zero combined
+    /// uncertainty, or where a population's standard error is 0: then every
+    /// summit contributed the same value (typically none is in range) and
+    /// the sample says nothing about the spread, so a z-score against a
+    /// tiny integration error would be meaningless (it read ~1e6).
     pub fn deviation_from(&self, expected: &State) -> [Option<f64>; SLOTS] {
+        let degenerate = |s: &State, i: usize| {
+            s.method == MethodUsed::Population && s.totals.error(i) == Some(0.0)
+        };
         std::array::from_fn(|i| {
             let (m, e) = (self.totals.get(i)?, expected.totals.get(i)?);
+            if degenerate(self, i) || degenerate(expected, i) {
+                return None;
+            }
             let u = self.totals.error(i)?.hypot(expected.totals.error(i)?);
             (u > 0.0).then(|| (m - e) / u)
         })

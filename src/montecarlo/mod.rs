@@ -44,13 +44,17 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
+mod measured;
 mod population;
 mod scaling;
 mod summation;
 
+pub use measured::MeasuredSummits;
 pub use population::{Population, PopulationSpec, Radii, RadiusSpec, MAX_SUMMITS, SAMPLING_BLOCK};
-pub use scaling::SummitLaw;
-pub use summation::{MonteCarlo, SUM_BLOCK};
+pub use scaling::{SummitLaw, TABLE_TOLERANCE_FRACTION};
+pub use summation::{MonteCarlo, CHUNK, LANES, SERIAL_BELOW, SUM_BLOCK};
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_batch;

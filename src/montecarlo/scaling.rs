@@ -22,8 +22,22 @@
 //! Cost: three multiplications per summit evaluation and 24 bytes of
 //! precomputed factors per summit (`rho^-alpha, rho^beta, rho^gamma`),
 //! against one law build per summit otherwise.
+//!
+//! **Tabulation.** An expensive law ([`LawKind::worth_tabulating`]: exact
+//! Maugis–Dugdale, about 0.2-0.5 us per call) built by
+//! [`SummitLaw::from_kind`] is replaced, when a [`MonteCarlo`](super::MonteCarlo)
+//! binds it to a population, by an [`InterpolatedLaw`] over the
+//! interferences the population can reach (from the law's cutoff to the
+//! height range, in reference-radius units; summits beyond it fall back to
+//! the exact law). Tolerance: [`TABLE_TOLERANCE_FRACTION`] of the requested
+//! relative accuracy ([`SummitLaw::with_accuracy`]; default
+//! [`Accuracy::DEFAULT`]'s `1e-8`, so `1e-9` relative to `|P| + P_s`), the
+//! rule the study planner uses for GW curves. [`SummitLaw::exact`] turns it
+//! off.
 
 use crate::error::{positive, Error, Result};
+use crate::gw::Accuracy;
+use crate::law::interpolated::InterpolatedLaw;
 use crate::law::{AsperityLaw, LawKind, RadiusScaling};
 use crate::material::AsperityContact;
 use std::sync::Arc;
@@ -35,7 +49,13 @@ pub struct SummitLaw {
     law: Arc<dyn AsperityLaw>,
     reference_radius: f64,
     scaling: Option<RadiusScaling>,
+    /// Chebyshev-table tolerance when the law is to be tabulated.
+    table_tolerance: Option<f64>,
 }
+
+/// Table tolerance as a fraction of the requested relative accuracy (the
+/// study planner's rule for GW curves).
+pub const TABLE_TOLERANCE_FRACTION: f64 = 0.1;
 
 impl SummitLaw {
     /// A law valid only for summits of exactly `radius` (m).
@@ -48,6 +68,7 @@ impl SummitLaw {
             law,
             reference_radius: radius,
             scaling: None,
+            table_tolerance: None,
         })
     }
 
@@ -69,20 +90,68 @@ impl SummitLaw {
             law,
             reference_radius,
             scaling: Some(scaling),
+            table_tolerance: None,
         })
     }
 
     /// The law of `kind` for `contact` (at `contact.radius`), with the radius
     /// scaling the kind obeys ([`LawKind::radius_scaling`]); kinds without
     /// one (Maugis–Dugdale) serve only populations of that one radius.
+    /// Expensive kinds are tabulated when bound to a population (see the
+    /// module notes), to the default accuracy.
     ///
     /// # Errors
     /// As [`LawKind::build`].
     pub fn from_kind(kind: LawKind, contact: &AsperityContact) -> Result<Self> {
+        let table_tolerance = kind
+            .worth_tabulating()
+            .then_some(TABLE_TOLERANCE_FRACTION * Accuracy::DEFAULT.rel_tol);
         Ok(SummitLaw {
             law: Arc::from(kind.build(contact)?),
             reference_radius: contact.radius,
             scaling: kind.radius_scaling(),
+            table_tolerance,
+        })
+    }
+
+    /// Ties the table of a tabulated law to `accuracy`: tolerance
+    /// [`TABLE_TOLERANCE_FRACTION`]` * rel_tol` (at least `1e-13`). No
+    /// effect on laws that are not tabulated.
+    pub fn with_accuracy(mut self, accuracy: &Accuracy) -> Self {
+        if self.table_tolerance.is_some() {
+            self.table_tolerance = Some((TABLE_TOLERANCE_FRACTION * accuracy.rel_tol).max(1e-13));
+        }
+        self
+    }
+
+    /// The exact law on every summit (no table).
+    pub fn exact(mut self) -> Self {
+        self.table_tolerance = None;
+        self
+    }
+
+    /// The tolerance of the table this law will be replaced by, if any.
+    pub fn table_tolerance(&self) -> Option<f64> {
+        self.table_tolerance
+    }
+
+    /// This law tabulated on `[lo, hi]` (m, reference radius) when it is
+    /// to be tabulated and the interval is usable; itself otherwise.
+    ///
+    /// # Errors
+    /// As [`InterpolatedLaw::new`].
+    pub(crate) fn tabulated_on(&self, lo: f64, hi: f64) -> Result<SummitLaw> {
+        let Some(tol) = self.table_tolerance else {
+            return Ok(self.clone());
+        };
+        let hi = hi.min(self.law.max_interference());
+        if !(lo.is_finite() && hi.is_finite() && hi > lo) {
+            return Ok(self.clone());
+        }
+        Ok(SummitLaw {
+            law: Arc::new(InterpolatedLaw::new(self.law.clone(), lo, hi, tol)?),
+            table_tolerance: None,
+            ..self.clone()
         })
     }
 

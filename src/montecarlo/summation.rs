@@ -17,6 +17,19 @@
 //! blocks of every step are summed in parallel, each sequentially, and the
 //! block partials of a step are added in block order. Results are
 //! bit-identical for any number of threads.
+//!
+//! **Speed.** Inside a block the law is called once per chunk of
+//! [`CHUNK`] summits ([`AsperityLaw::state_batch`](crate::law::AsperityLaw::state_batch):
+//! one virtual call per chunk, not per summit), and the six sums (load,
+//! area, count and their squares) run in [`LANES`] independent lanes:
+//! summit `i` of a chunk adds to lane `i mod LANES`, and the lanes are
+//! combined in a fixed tree at the end of the block. Rust never reorders
+//! floating-point additions, so the result is the same whatever SIMD width
+//! the CPU offers (picked at run time by [`pulp::Arch`]); the sums differ
+//! from a single sequential accumulator only by the rounding of a
+//! different (8-way interleaved) order. Fewer than [`SERIAL_BELOW`]
+//! evaluations per call run on the calling thread (same blocks, same
+//! order, same bits): below it rayon's start-up costs more than it saves.
 
 use super::population::Population;
 use super::scaling::SummitLaw;
@@ -31,6 +44,17 @@ use std::sync::Arc;
 
 /// Summits per summation block (fixed: part of the reduction order).
 pub const SUM_BLOCK: usize = 8192;
+
+/// Summits per law call inside a block (stack buffers, L1-resident).
+pub const CHUNK: usize = 256;
+
+/// Accumulator lanes (fixed: part of the reduction order).
+pub const LANES: usize = 8;
+
+/// Law evaluations (summits in range times steps) below which a call runs
+/// serially. Measured (`benches/montecarlo.rs`, `mc_small`): see
+/// docs/performance.md.
+pub const SERIAL_BELOW: usize = 1 << 16;
 
 /// Per-summit rescaling factors `[rho^-alpha, rho^beta, rho^gamma]`.
 #[derive(Debug, Clone)]
@@ -68,7 +92,8 @@ impl Partial {
 
 impl MonteCarlo {
     /// Binds `law` to `population`, precomputing each summit's radius
-    /// factors.
+    /// factors; a law marked for tabulation ([`SummitLaw::from_kind`] of
+    /// an expensive kind) is tabulated here.
     ///
     /// # Errors
     /// [`Error::Invalid`] naming `radius` when summit radii differ from the
@@ -87,6 +112,16 @@ impl MonteCarlo {
             Factors::PerSummit(v) => v.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), f| {
                 (lo.min(f[0]), hi.max(f[0]))
             }),
+        };
+        // An expensive law becomes a table over the interferences this
+        // population reaches down to its lowest summit (see `SummitLaw`).
+        let law = if law.table_tolerance().is_some() {
+            let z = population.heights();
+            let range = z[z.len() - 1] - z[0];
+            let lo = law.law().cutoff_interference();
+            law.tabulated_on(lo, lo.max(0.0) + range * inv_len.1)?
+        } else {
+            law
         };
         Ok(MonteCarlo {
             population,
@@ -141,6 +176,17 @@ impl MonteCarlo {
     /// flag update per evaluation; steps run one after another, the
     /// summits of a step in parallel.
     ///
+    /// Laws that [remember their maximum
+    /// interference](crate::law::AsperityLaw::remembers_maximum) (plastic
+    /// laws, [`AdhesivePlastic`](crate::law::plastic::AdhesivePlastic))
+    /// keep it per summit instead of the flag (8 bytes per summit), as
+    /// [`MaxInterference::step`](crate::law::plastic::MaxInterference::step):
+    /// at a new maximum the virgin curve `state(delta, Approach)`, below it
+    /// `state_after(delta, delta_max)`; the flattening is permanent, so a
+    /// second loading cycle retraces the unloading curve (elastic
+    /// shakedown) and differs from the first. Approach-then-retract again
+    /// equals [`MonteCarlo::curve`] bit for bit.
+    ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `separations[i]` when not finite; as
     /// [`MonteCarlo::state`] otherwise.
@@ -154,34 +200,69 @@ impl MonteCarlo {
         // detached: it is neither evaluated nor flagged.
         let cut = law.cutoff_interference().min(detach);
         let n = self.population.len();
-        let mut attached = vec![false; n];
+        // Per summit: the attached flag, or (laws that remember it) the
+        // largest interference so far, -inf before any contact.
+        let mut memory = if law.remembers_maximum() {
+            Memory::Maximum(vec![f64::NEG_INFINITY; n])
+        } else {
+            Memory::Attached(vec![false; n])
+        };
         let mut prev_lo = n;
         let mut out = Vec::with_capacity(separations.len());
         for &d in separations {
             let lo = self.first_above(d, cut);
             if lo > prev_lo {
-                // Summits that left the range are detached.
-                attached[prev_lo..lo].fill(false);
+                // Summits that left the range are detached; a maximum
+                // interference (plastic flattening) is permanent.
+                if let Memory::Attached(a) = &mut memory {
+                    a[prev_lo..lo].fill(false);
+                }
             }
             prev_lo = lo;
-            let partials: Vec<Partial> = attached
-                .par_chunks_mut(SUM_BLOCK)
-                .enumerate()
-                .skip(lo / SUM_BLOCK)
-                .map(|(b, flags)| {
-                    let base = b * SUM_BLOCK;
-                    let start = base.max(lo);
-                    let end = base + flags.len();
-                    self.block_flagged(
-                        start,
-                        end,
-                        &mut flags[start - base..],
-                        d,
-                        (attach, detach),
-                        observables,
-                    )
-                })
-                .collect();
+            let serial = n - lo < SERIAL_BELOW;
+            let one = |(b, mem): (usize, MemoryChunk<'_>)| {
+                let base = b * SUM_BLOCK;
+                let start = base.max(lo);
+                let end = base + mem.len();
+                self.block_flagged(
+                    start,
+                    end,
+                    mem.tail(start - base),
+                    d,
+                    (attach, detach),
+                    observables,
+                )
+            };
+            let partials: Vec<Partial> = match (&mut memory, serial) {
+                (Memory::Attached(a), true) => a
+                    .chunks_mut(SUM_BLOCK)
+                    .map(MemoryChunk::Attached)
+                    .enumerate()
+                    .skip(lo / SUM_BLOCK)
+                    .map(one)
+                    .collect(),
+                (Memory::Attached(a), false) => a
+                    .par_chunks_mut(SUM_BLOCK)
+                    .map(MemoryChunk::Attached)
+                    .enumerate()
+                    .skip(lo / SUM_BLOCK)
+                    .map(one)
+                    .collect(),
+                (Memory::Maximum(m), true) => m
+                    .chunks_mut(SUM_BLOCK)
+                    .map(MemoryChunk::Maximum)
+                    .enumerate()
+                    .skip(lo / SUM_BLOCK)
+                    .map(one)
+                    .collect(),
+                (Memory::Maximum(m), false) => m
+                    .par_chunks_mut(SUM_BLOCK)
+                    .map(MemoryChunk::Maximum)
+                    .enumerate()
+                    .skip(lo / SUM_BLOCK)
+                    .map(one)
+                    .collect(),
+            };
             let mut total = Partial::default();
             for p in &partials {
                 total.add(p);
@@ -191,47 +272,69 @@ impl MonteCarlo {
         Ok(out)
     }
 
-    /// Sums summits `a..b` at `d`, updating their attached flags.
+    /// Sums summits `a..b` at `d`, updating their memory (attached flags,
+    /// or maximum interferences).
     fn block_flagged(
         &self,
         a: usize,
         b: usize,
-        flags: &mut [bool],
+        mut memory: MemoryChunk<'_>,
         d: f64,
         (attach, detach): (f64, f64),
         extras: &Observables,
     ) -> Partial {
         let z = &self.population.heights()[a..b];
         let law = self.law.law();
-        let mut p = Partial::default();
-        let mut one = |zi: f64, flag: &mut bool, f: [f64; 3]| {
-            let x = (zi - d) * f[0];
-            if *flag {
-                *flag = !(x < detach);
-            } else {
-                *flag = x >= attach;
+        let mut acc = Accumulator::default();
+        let mut buf = Buffers::new();
+        for (c, zc) in z.chunks(CHUNK).enumerate() {
+            let off = c * CHUNK;
+            let f = self.chunk_factors(a + off, zc.len());
+            for (i, &zi) in zc.iter().enumerate() {
+                let fi = f.at(i);
+                let x = (zi - d) * fi[0];
+                let st = match &mut memory {
+                    MemoryChunk::Attached(flags) => {
+                        let flag = &mut flags[off + i];
+                        if *flag {
+                            *flag = !(x < detach);
+                        } else {
+                            *flag = x >= attach;
+                        }
+                        let branch = if *flag {
+                            Branch::Retract
+                        } else {
+                            Branch::Approach
+                        };
+                        law.state(x, branch)
+                    }
+                    // As `plastic::MaxInterference::step`: the virgin curve
+                    // at a new maximum, the history branch below it.
+                    MemoryChunk::Maximum(max) => {
+                        let m = &mut max[off + i];
+                        if x >= *m {
+                            *m = x;
+                            law.state(x, Branch::Approach)
+                        } else {
+                            law.state_after(x, *m)
+                        }
+                    }
+                };
+                buf.load[i] = st.load * fi[1];
+                buf.radius[i] = st.radius * fi[2];
             }
-            let branch = if *flag {
-                Branch::Retract
-            } else {
-                Branch::Approach
-            };
-            let st = law.state(x, branch);
-            add(&mut p, st.load * f[1], st.radius * f[2], extras);
-        };
-        match &self.factors {
-            Factors::Uniform(f) => {
-                for (&zi, flag) in z.iter().zip(flags.iter_mut()) {
-                    one(zi, flag, *f);
-                }
-            }
-            Factors::PerSummit(v) => {
-                for ((&zi, flag), f) in z.iter().zip(flags.iter_mut()).zip(&v[a..b]) {
-                    one(zi, flag, *f);
-                }
-            }
+            acc.add_chunk(&mut buf, zc.len(), extras);
         }
-        p
+        acc.finish()
+    }
+
+    /// The radius factors of summits `a..a + n`.
+    #[inline]
+    fn chunk_factors(&self, a: usize, n: usize) -> ChunkFactors<'_> {
+        match &self.factors {
+            Factors::Uniform(f) => ChunkFactors::Uniform(*f),
+            Factors::PerSummit(v) => ChunkFactors::PerSummit(&v[a..a + n]),
+        }
     }
 
     /// All steps, block-major: each block of summits (64 KiB of heights,
@@ -244,23 +347,26 @@ impl MonteCarlo {
         let first_block = lowest / SUM_BLOCK;
         let blocks = n.div_ceil(SUM_BLOCK);
         // partials[b - first_block][k]: block b at step k (zero if unreached).
-        let partials: Vec<Vec<Partial>> = (first_block..blocks)
-            .into_par_iter()
-            .map(|b| {
-                let (start, end) = (b * SUM_BLOCK, ((b + 1) * SUM_BLOCK).min(n));
-                steps
-                    .iter()
-                    .zip(&firsts)
-                    .map(|(&(d, history), &lo)| {
-                        if lo < end {
-                            self.block(start.max(lo), end, d, history, observables)
-                        } else {
-                            Partial::default()
-                        }
-                    })
-                    .collect()
-            })
-            .collect();
+        let one = |b: usize| -> Vec<Partial> {
+            let (start, end) = (b * SUM_BLOCK, ((b + 1) * SUM_BLOCK).min(n));
+            steps
+                .iter()
+                .zip(&firsts)
+                .map(|(&(d, history), &lo)| {
+                    if lo < end {
+                        self.block(start.max(lo), end, d, history, observables)
+                    } else {
+                        Partial::default()
+                    }
+                })
+                .collect()
+        };
+        let work: usize = firsts.iter().map(|&lo| n - lo).sum();
+        let partials: Vec<Vec<Partial>> = if work < SERIAL_BELOW {
+            (first_block..blocks).map(one).collect()
+        } else {
+            (first_block..blocks).into_par_iter().map(one).collect()
+        };
         let mut states = Vec::with_capacity(steps.len());
         for (k, (&(d, _), &lo)) in steps.iter().zip(&firsts).enumerate() {
             let mut total = Partial::default();
@@ -289,6 +395,8 @@ impl MonteCarlo {
                 ),
             ));
         }
+        // One summit has no sample variance: the standard error is
+        // undefined (NaN, which `Totals::error` reports as `None`).
         let se = std::array::from_fn(|i| {
             if n < 2 {
                 return f64::NAN;
@@ -304,30 +412,219 @@ impl MonteCarlo {
         })
     }
 
-    /// Sums over summits `a..b` at separation `d`.
+    /// Sums over summits `a..b` at separation `d`: per chunk, the
+    /// interferences, one batch call of the law, the radius factors, the
+    /// lane sums.
     fn block(&self, a: usize, b: usize, d: f64, history: History, obs: &Observables) -> Partial {
         let z = &self.population.heights()[a..b];
         let law = self.law.law();
-        match (&self.factors, history) {
-            (Factors::Uniform(f), History::Approach) => {
-                sum_uniform(z, *f, |x, _| law.state(x, Branch::Approach), d, 0.0, obs)
+        let closest = match history {
+            History::Approach => None,
+            History::Retract { closest } => Some(closest),
+        };
+        let mut acc = Accumulator::default();
+        let mut buf = Buffers::new();
+        for (c, zc) in z.chunks(CHUNK).enumerate() {
+            let n = zc.len();
+            let f = self.chunk_factors(a + c * CHUNK, n);
+            f.interferences(zc, d, &mut buf.delta[..n]);
+            if let Some(m) = closest {
+                f.interferences(zc, m, &mut buf.delta_max[..n]);
             }
-            (Factors::Uniform(f), History::Retract { closest }) => {
-                sum_uniform(z, *f, |x, m| law.state_after(x, m), d, closest, obs)
-            }
-            (Factors::PerSummit(v), History::Approach) => sum_per_summit(
-                z,
-                &v[a..b],
-                |x, _| law.state(x, Branch::Approach),
-                d,
-                0.0,
-                obs,
+            let Buffers {
+                delta,
+                delta_max,
+                load,
+                radius,
+            } = &mut buf;
+            law.state_batch(
+                &delta[..n],
+                closest.map(|_| &delta_max[..n]),
+                &mut load[..n],
+                &mut radius[..n],
+            );
+            f.scale(&mut load[..n], &mut radius[..n]);
+            acc.add_chunk(&mut buf, n, obs);
+        }
+        acc.finish()
+    }
+}
+
+/// Per-summit history of a [`MonteCarlo::sequence`].
+enum Memory {
+    Attached(Vec<bool>),
+    Maximum(Vec<f64>),
+}
+
+/// One block of a [`Memory`].
+enum MemoryChunk<'a> {
+    Attached(&'a mut [bool]),
+    Maximum(&'a mut [f64]),
+}
+
+impl<'a> MemoryChunk<'a> {
+    fn len(&self) -> usize {
+        match self {
+            MemoryChunk::Attached(a) => a.len(),
+            MemoryChunk::Maximum(m) => m.len(),
+        }
+    }
+
+    fn tail(self, from: usize) -> MemoryChunk<'a> {
+        match self {
+            MemoryChunk::Attached(a) => MemoryChunk::Attached(&mut a[from..]),
+            MemoryChunk::Maximum(m) => MemoryChunk::Maximum(&mut m[from..]),
+        }
+    }
+}
+
+/// The radius factors of one chunk.
+#[derive(Clone, Copy)]
+enum ChunkFactors<'a> {
+    Uniform([f64; 3]),
+    PerSummit(&'a [[f64; 3]]),
+}
+
+impl ChunkFactors<'_> {
+    #[inline(always)]
+    fn at(&self, i: usize) -> [f64; 3] {
+        match self {
+            ChunkFactors::Uniform(f) => *f,
+            ChunkFactors::PerSummit(v) => v[i],
+        }
+    }
+
+    /// `out[i] = (z[i] - d) rho_i^-alpha`.
+    #[inline]
+    fn interferences(&self, z: &[f64], d: f64, out: &mut [f64]) {
+        match *self {
+            ChunkFactors::Uniform(f) => pulp::Arch::new().dispatch(
+                #[inline(always)]
+                || {
+                    for (o, &zi) in out.iter_mut().zip(z) {
+                        *o = (zi - d) * f[0];
+                    }
+                },
             ),
-            (Factors::PerSummit(v), History::Retract { closest }) => {
-                sum_per_summit(z, &v[a..b], |x, m| law.state_after(x, m), d, closest, obs)
+            ChunkFactors::PerSummit(v) => {
+                for ((o, &zi), f) in out.iter_mut().zip(z).zip(v) {
+                    *o = (zi - d) * f[0];
+                }
             }
         }
     }
+
+    /// `load[i] *= rho_i^beta`, `radius[i] *= rho_i^gamma`.
+    #[inline]
+    fn scale(&self, load: &mut [f64], radius: &mut [f64]) {
+        match *self {
+            ChunkFactors::Uniform(f) => pulp::Arch::new().dispatch(
+                #[inline(always)]
+                || {
+                    for (l, r) in load.iter_mut().zip(radius.iter_mut()) {
+                        *l *= f[1];
+                        *r *= f[2];
+                    }
+                },
+            ),
+            ChunkFactors::PerSummit(v) => {
+                for ((l, r), f) in load.iter_mut().zip(radius.iter_mut()).zip(v) {
+                    *l *= f[1];
+                    *r *= f[2];
+                }
+            }
+        }
+    }
+}
+
+/// Stack buffers of one chunk.
+struct Buffers {
+    delta: [f64; CHUNK],
+    delta_max: [f64; CHUNK],
+    load: [f64; CHUNK],
+    radius: [f64; CHUNK],
+}
+
+impl Buffers {
+    fn new() -> Self {
+        Buffers {
+            delta: [0.0; CHUNK],
+            delta_max: [0.0; CHUNK],
+            load: [0.0; CHUNK],
+            radius: [0.0; CHUNK],
+        }
+    }
+}
+
+/// The lane sums of one block: `lanes[k][j]` for `k` = load, area, count
+/// and their squares, lane `j`; further observables in `extras`, summed in
+/// summit order.
+#[derive(Default)]
+struct Accumulator {
+    lanes: [[f64; LANES]; 6],
+    extras: Partial,
+}
+
+impl Accumulator {
+    /// Adds the first `n` summits of a chunk (load and radius, already
+    /// scaled), padding the last lane group with free summits (exact
+    /// zeros).
+    #[inline]
+    fn add_chunk(&mut self, buf: &mut Buffers, n: usize, obs: &Observables) {
+        if !obs.extras().is_empty() {
+            for (&load, &radius) in buf.load[..n].iter().zip(&buf.radius[..n]) {
+                let st = ContactState { load, radius };
+                for (k, e) in obs.extras().iter().take(EXTRA_SLOTS).enumerate() {
+                    let v = e.value(&st);
+                    self.extras.sum[3 + k] += v;
+                    self.extras.sq[3 + k] += v * v;
+                }
+            }
+        }
+        let padded = n.next_multiple_of(LANES);
+        buf.load[n..padded].fill(0.0);
+        buf.radius[n..padded].fill(0.0);
+        lane_sums(&buf.load[..padded], &buf.radius[..padded], &mut self.lanes);
+    }
+
+    /// Lanes combined in a fixed tree: `((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7))`.
+    fn finish(&self) -> Partial {
+        let mut p = self.extras;
+        let tree =
+            |l: &[f64; LANES]| ((l[0] + l[1]) + (l[2] + l[3])) + ((l[4] + l[5]) + (l[6] + l[7]));
+        for k in 0..3 {
+            p.sum[k] = tree(&self.lanes[k]);
+            p.sq[k] = tree(&self.lanes[3 + k]);
+        }
+        p
+    }
+}
+
+/// Adds `P`, `pi a^2`, `[a > 0]` and their squares of each summit to lane
+/// `i mod LANES` (lengths multiples of [`LANES`]); branch-free, vectorised
+/// at the widest SIMD the CPU has ([`pulp::Arch`]).
+#[inline]
+fn lane_sums(load: &[f64], radius: &[f64], lanes: &mut [[f64; LANES]; 6]) {
+    pulp::Arch::new().dispatch(
+        #[inline(always)]
+        || {
+            let mut acc = *lanes;
+            for (l, r) in load.chunks_exact(LANES).zip(radius.chunks_exact(LANES)) {
+                for j in 0..LANES {
+                    let (p, a) = (l[j], r[j]);
+                    let area = PI * a * a;
+                    let c = if a > 0.0 { 1.0 } else { 0.0 };
+                    acc[0][j] += p;
+                    acc[1][j] += area;
+                    acc[2][j] += c;
+                    acc[3][j] += p * p;
+                    acc[4][j] += area * area;
+                    acc[5][j] += c;
+                }
+            }
+            *lanes = acc;
+        },
+    );
 }
 
 impl LoadingModel for MonteCarlo {
@@ -395,68 +692,4 @@ impl MonteCarlo {
         let z = self.population.heights();
         z[z.len() - 1]
     }
-}
-
-/// Adds one summit's load, area and count (slots 0-2) and any further
-/// observables to a partial.
-#[inline(always)]
-fn add(p: &mut Partial, load: f64, radius: f64, obs: &Observables) {
-    let area = PI * radius * radius;
-    let c = if radius > 0.0 { 1.0 } else { 0.0 };
-    p.sum[0] += load;
-    p.sum[1] += area;
-    p.sum[2] += c;
-    p.sq[0] += load * load;
-    p.sq[1] += area * area;
-    p.sq[2] += c;
-    if !obs.extras().is_empty() {
-        let st = ContactState { load, radius };
-        for (k, e) in obs.extras().iter().take(EXTRA_SLOTS).enumerate() {
-            let v = e.value(&st);
-            p.sum[3 + k] += v;
-            p.sq[3 + k] += v * v;
-        }
-    }
-}
-
-/// One radius for all summits: the factors are constants.
-#[inline(always)]
-fn sum_uniform<S>(
-    z: &[f64],
-    f: [f64; 3],
-    state: S,
-    d: f64,
-    closest: f64,
-    obs: &Observables,
-) -> Partial
-where
-    S: Fn(f64, f64) -> ContactState,
-{
-    let mut p = Partial::default();
-    for &zi in z {
-        let st = state((zi - d) * f[0], (zi - closest) * f[0]);
-        add(&mut p, st.load * f[1], st.radius * f[2], obs);
-    }
-    p
-}
-
-/// Per-summit radii: factors read alongside the heights.
-#[inline(always)]
-fn sum_per_summit<S>(
-    z: &[f64],
-    f: &[[f64; 3]],
-    state: S,
-    d: f64,
-    closest: f64,
-    obs: &Observables,
-) -> Partial
-where
-    S: Fn(f64, f64) -> ContactState,
-{
-    let mut p = Partial::default();
-    for (&zi, fi) in z.iter().zip(f) {
-        let st = state((zi - d) * fi[0], (zi - closest) * fi[0]);
-        add(&mut p, st.load * fi[1], st.radius * fi[2], obs);
-    }
-    p
 }

@@ -7,14 +7,19 @@
 //! it (`cargo build --lib --no-default-features`).
 
 pub mod cache;
+pub mod measured;
 pub mod output;
 pub mod plan;
 pub mod plot;
 pub mod run;
 pub mod scene;
 pub mod sweep;
+pub mod validity;
 
-pub use output::{charts, curve_csv, montecarlo_csv, write_outputs, McSummary, Summary};
+pub use output::{
+    charts, curve_csv, montecarlo_csv, resistance_of, write_outputs, McSummary, PlasticitySummary,
+    StateRow, StictionSummary, Summary,
+};
 pub use plan::{Plan, PlanMode};
 pub use run::{McResults, Results};
 pub use scene::{Scene, DEFAULT_SCENE};

@@ -1,9 +1,16 @@
 //! Executing a [`Plan`]: the loading program, pull-off and hysteresis energy.
 
+use super::plan::LawSource;
 use super::plan::{McPlan, Plan};
+use super::scene::ProgramTarget;
+use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction};
 use crate::error::Result;
-use crate::law::AsperityLaw;
-use crate::loading::{Curve, History, LoadingModel, LoadingProgram, PullOff, State, SLOTS};
+use crate::law::plastic::{contact_fractions, RegimeFractions};
+use crate::law::{AsperityLaw, LawKind};
+use crate::loading::{
+    Curve, History, LoadingModel, LoadingProgram, Observable, Observables, PullOff, State, SLOTS,
+};
+use crate::material::plastic::{RegimeLimits, Variant};
 use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
 use std::sync::Arc;
 use std::time::Instant;
@@ -34,9 +41,24 @@ pub struct Results {
     /// The explicit population's curve and its comparison with the
     /// integral, when the scene asks for one.
     pub montecarlo: Option<McResults>,
+    /// The states listed in `[program]` (`separations` or `loads`), on
+    /// approach, in the listed order (empty without a list).
+    pub listed: Vec<State>,
+    /// Contact-regime fractions at the closest approach, when the materials
+    /// give a yield strength.
+    pub regimes: Option<RegimeFractions>,
+    /// The switch's stiction verdict, with `[switch]`.
+    pub stiction: Option<Stiction>,
+    /// For an elastic-plastic law: the approach states of the elastic law it
+    /// reduces to as `psi -> 0` (JKR with adhesion, Hertz without) at the
+    /// same separations, for the load–area comparison.
+    pub elastic_approach: Option<Vec<State>>,
     /// Where the results lie outside a model's validity (each a sentence
     /// naming the quantity, its value and the bound).
     pub warnings: Vec<String>,
+    /// The measured map's part (the other model's headline numbers when
+    /// asked), when the scene has `[surface] topography`.
+    pub topography: Option<super::measured::TopographyResults>,
 }
 
 /// A population summed over the program, beside the integral.
@@ -54,9 +76,34 @@ pub struct McResults {
     pub max_abs_z: Option<f64>,
     /// Most tensile sampled retraction load of the population.
     pub pull_off: Option<PullOff>,
+    /// Summits of the population in contact (count / scale factor; summits
+    /// in range when the count is not computed), per state (approach
+    /// states, then retraction states). Standard errors are reported only
+    /// where at least [`MIN_SUMMITS_FOR_Z`] are.
+    pub contacts: Vec<f64>,
+    /// Most tensile sampled retraction load of populations drawn with
+    /// other seeds (`seed + 1 ..`), to show how one realisation's pull-off
+    /// scatters; empty when the population is too large for
+    /// [`SEED_SPREAD_BUDGET`].
+    pub seed_pull_offs: Vec<(u64, Option<f64>)>,
     /// Wall-clock time of drawing and summing (s).
     pub seconds: f64,
+    /// With `[electrical]`: the sample's own spots at the closest
+    /// separation, at random positions in the area the sample stands for
+    /// (`None` without contact or beyond [`MAX_SAMPLE_SPOTS`] spots).
+    pub spots: Option<SampleResistance>,
 }
+
+/// Most contact spots of a population for which explicit-position
+/// resistances are computed (Greenwood's formula is `O(n^2)`).
+pub const MAX_SAMPLE_SPOTS: usize = 20_000;
+
+/// Extra seeds drawn for the pull-off scatter of one realisation.
+pub const EXTRA_SEEDS: u64 = 4;
+
+/// Largest `summits x points` for which [`EXTRA_SEEDS`] more populations
+/// are summed (a few tenths of a second in a release build).
+pub const SEED_SPREAD_BUDGET: f64 = 2e7;
 
 /// Draws the plan's population and sums it over `program`.
 fn run_montecarlo(
@@ -74,7 +121,7 @@ fn run_montecarlo(
         None => SummitLaw::fixed(run_law.clone(), mc.law.reference_radius())?,
         Some(_) => mc.law.clone(),
     };
-    let summer = MonteCarlo::new(population, law)?;
+    let summer = MonteCarlo::new(population.clone(), law.clone())?;
     let mc_curve = summer
         .curve(&curve.program, &plan.curve_outputs)?
         .scaled(mc.factor);
@@ -87,7 +134,9 @@ fn run_montecarlo(
             // The standard error means something only with enough summits
             // in range (central limit); with none in range the sum is an
             // exact 0 that a tiny expectation cannot be "many errors" from.
-            if m.evaluations >= MIN_SUMMITS_FOR_Z {
+            if m.evaluations >= MIN_SUMMITS_FOR_Z
+                && contacts_of(m, mc.factor) >= MIN_SUMMITS_FOR_Z as f64
+            {
                 m.deviation_from(g)
             } else {
                 [None; SLOTS]
@@ -100,12 +149,86 @@ fn run_montecarlo(
         .flatten()
         .map(|v| v.abs())
         .reduce(f64::max);
+    let spots = match &plan.resistance {
+        Some(res) => {
+            let side = (plan.surface.nominal_area / mc.factor).sqrt();
+            let seed = crate::numeric::mix::splitmix64(mc.spec.seed ^ 0x5350_4f54); // "SPOT"
+            let found = population_spots(&population, &law, curve.program.closest, side, seed)?;
+            match found {
+                Some(s) if s.len() <= MAX_SAMPLE_SPOTS => {
+                    Some(SampleResistance::new(&s, res.spot())?)
+                }
+                _ => None,
+            }
+        }
+        None => None,
+    };
+    let contacts = mc_curve
+        .approach
+        .iter()
+        .chain(&mc_curve.retract)
+        .map(|m| contacts_of(m, mc.factor))
+        .collect();
+    let mut seed_pull_offs = Vec::new();
+    if plan.pull_off && (mc.summits as f64) * (curve.program.points as f64) <= SEED_SPREAD_BUDGET {
+        for k in 1..=EXTRA_SEEDS {
+            let mut other = mc.clone();
+            other.spec.seed = mc.spec.seed.wrapping_add(k);
+            let spec = other.population_spec(&plan.surface)?;
+            let population = Arc::new(Population::sample(&spec, plan.distribution.as_ref())?);
+            let law = match mc.law.scaling() {
+                None => SummitLaw::fixed(run_law.clone(), mc.law.reference_radius())?,
+                Some(_) => mc.law.clone(),
+            };
+            let c = MonteCarlo::new(population, law)?
+                .curve(
+                    &curve.program,
+                    &crate::loading::Observables::standard(true, false, false),
+                )?
+                .scaled(mc.factor);
+            seed_pull_offs.push((other.spec.seed, c.sampled_pull_off().map(|p| p.load)));
+        }
+    }
     Ok(McResults {
+        spots,
+        contacts,
+        seed_pull_offs,
         pull_off: mc_curve.sampled_pull_off(),
         curve: mc_curve,
         z,
         max_abs_z,
         seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// Summits of a population state in contact: its count over the scale
+/// factor, or the summits in range when the count is not computed.
+fn contacts_of(m: &State, factor: f64) -> f64 {
+    m.count()
+        .map_or(m.evaluations as f64, |c| (c / factor).round())
+}
+
+/// Curve steps computed between two progress reports.
+pub const PROGRESS_CHUNK: usize = 16;
+
+/// [`LoadingModel::curve`] in chunks of steps, reporting each chunk.
+fn curve_with_progress(
+    model: &dyn LoadingModel,
+    program: &LoadingProgram,
+    outputs: &crate::loading::Observables,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Curve> {
+    let steps = program.steps();
+    let mut states = Vec::with_capacity(steps.len());
+    for chunk in steps.chunks(PROGRESS_CHUNK) {
+        states.extend(model.states(chunk, outputs)?);
+        progress(states.len(), steps.len());
+    }
+    let retract = states.split_off(program.points);
+    Ok(Curve {
+        program: *program,
+        approach: states,
+        retract,
     })
 }
 
@@ -128,13 +251,45 @@ impl Plan {
     /// tolerance; [`crate::Error::Invalid`] when a maximum load cannot be
     /// reached.
     pub fn run(&self) -> Result<Results> {
+        self.run_with_progress(&|_, _| {})
+    }
+
+    /// [`Plan::run`], calling `progress(done, total)` as the states of the
+    /// curve are computed (in chunks of [`PROGRESS_CHUNK`] steps; the
+    /// states are the same as in one call).
+    ///
+    /// # Errors
+    /// As [`Plan::run`].
+    pub fn run_with_progress(&self, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Results> {
+        self.run_unmapped(progress)
+            .map_err(|e| crate::study::scene::map_derived(&self.scene, e))
+    }
+
+    fn run_unmapped(&self, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Results> {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;
-        let closest = self.closest_separation(&model)?;
+        // A measured map with summits = "measured": the exact sum over its
+        // summits replaces the integral.
+        let mut results = match super::measured::main_model(self)? {
+            Some(m) => self.run_on(&m, run_law, t0, progress)?,
+            None => self.run_on(&model, run_law, t0, progress)?,
+        };
+        results.topography = super::measured::results(self)?;
+        Ok(results)
+    }
+
+    fn run_on<M: LoadingModel>(
+        &self,
+        model: &M,
+        run_law: Arc<dyn AsperityLaw>,
+        t0: Instant,
+        progress: &(dyn Fn(usize, usize) + Sync),
+    ) -> Result<Results> {
+        let closest = self.closest_separation(model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
         let curve = if self.compute_retraction {
-            model.curve(&program, &self.curve_outputs)?
+            curve_with_progress(model, &program, &self.curve_outputs, progress)?
         } else {
             let steps: Vec<_> = program
                 .separations()
@@ -153,7 +308,7 @@ impl Plan {
         } else {
             None
         };
-        let hysteresis_energy = if self.hysteresis_energy {
+        let mut hysteresis_energy = if self.hysteresis_energy {
             curve.hysteresis_energy()
         } else {
             None
@@ -169,6 +324,7 @@ impl Plan {
             .flat_map(|l| l.iter())
             .map(|s| s.evaluations)
             .sum();
+        let warnings = super::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
             None => None,
@@ -180,7 +336,117 @@ impl Plan {
             seconds: t0.elapsed().as_secs_f64(),
             evaluations,
             montecarlo,
-            warnings: Vec::new(),
+            listed: Vec::new(),
+            regimes: None,
+            stiction: None,
+            elastic_approach: None,
+            warnings,
+            topography: None,
         })
+        .and_then(|r| self.finish(model, r))
+    }
+
+    /// The parts that follow from the curve: listed states, regime
+    /// fractions, stiction, and their warnings.
+    fn finish<M: LoadingModel>(&self, model: &M, mut r: Results) -> Result<Results> {
+        let outputs = self
+            .curve_outputs
+            .clone()
+            .with(Observable::Load)?
+            .with(Observable::Area)?;
+        let outputs = outputs.with(Observable::Count)?;
+        let steps: Vec<(f64, History)> = match &self.listed {
+            Some(ProgramTarget::Separations(xs)) => {
+                xs.iter().map(|&d| (d, History::Approach)).collect()
+            }
+            Some(ProgramTarget::Loads(ps)) => ps
+                .iter()
+                .map(|&p| {
+                    model
+                        .separation_at_load(p, self.start)
+                        .map(|d| (d, History::Approach))
+                        .map_err(|e| e.renamed("program.loads"))
+                })
+                .collect::<Result<_>>()?,
+            _ => Vec::new(),
+        };
+        r.listed = model.states(&steps, &outputs)?;
+        let closest = r.curve.program.closest;
+        if let Some(p) = self.plasticity {
+            let limits = match self.law.source {
+                LawSource::Plastic(v) => {
+                    let c = p.critical_interference(
+                        v,
+                        self.contact.radius,
+                        self.contact.contact_modulus,
+                    );
+                    let (e, f) = v.regime_multiples();
+                    RegimeLimits {
+                        elastic: e * c,
+                        fully_plastic: f * c,
+                    }
+                }
+                // An elastic law: the Kogut–Etsion regimes as the diagnostic.
+                _ => {
+                    let c = p.critical_interference(
+                        Variant::KogutEtsion,
+                        self.contact.radius,
+                        self.contact.contact_modulus,
+                    );
+                    let (e, f) = Variant::KogutEtsion.regime_multiples();
+                    RegimeLimits {
+                        elastic: e * c,
+                        fully_plastic: f * c,
+                    }
+                }
+            };
+            r.regimes = Some(contact_fractions(
+                &limits,
+                self.surface.sigma,
+                closest,
+                self.distribution.as_ref(),
+            ));
+        }
+        if matches!(self.law.source, LawSource::Plastic(_)) {
+            // The elastic law the plastic one reduces to as psi -> 0: JKR
+            // with adhesion, Hertz without.
+            let kind = if self.contact.adhesion.work() > 0.0 {
+                LawKind::Jkr
+            } else {
+                LawKind::Hertz
+            };
+            let law: Arc<dyn AsperityLaw> = Arc::from(kind.build(&self.contact)?);
+            let elastic = self.model_with(law)?;
+            let steps: Vec<(f64, History)> = r
+                .curve
+                .approach
+                .iter()
+                .map(|s| (s.separation, History::Approach))
+                .collect();
+            r.elastic_approach =
+                Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
+        }
+        if let Some(sw) = &self.switch {
+            let pull = r.pull_off.map_or(0.0, |p| p.load.min(0.0));
+            r.stiction = Some(sw.stiction(pull)?);
+        }
+        if let Some(res) = &self.resistance {
+            if res.interaction() == Interaction::Greenwood {
+                let skipped = r
+                    .curve
+                    .approach
+                    .iter()
+                    .chain(&r.listed)
+                    .filter_map(|s| res.resistance(&self.curve_outputs, &s.totals))
+                    .filter(|c| c.interaction_skipped && c.contacts > 0.0)
+                    .count();
+                if skipped > 0 {
+                    r.warnings.push(format!(
+                        "electrical.interaction = \"greenwood\": left out at {skipped} states where fewer than 2 contacts are expected (the mean field needs several spots)"
+                    ));
+                }
+            }
+        }
+        Ok(r)
     }
 }

@@ -2,13 +2,16 @@
 //! printing and exit codes live here; no physics does.
 //!
 //! Exit codes: 0 success, 2 bad input (one line on stderr naming the
-//! argument), 1 a computation that failed.
+//! argument), 1 a computation that failed, 141 stdout closed by its reader
+//! (e.g. `| head`; quiet, see `pipe.rs`).
 
 mod default_study;
 mod fn_cmd;
 mod heating_cmd;
 mod law_cmd;
 mod map_cmd;
+mod pipe;
+mod progress;
 mod punch_cmd;
 mod run_cmd;
 mod shape_cmd;
@@ -68,6 +71,8 @@ pub enum CliError {
     Usage(String),
     /// The computation failed.
     Failed(String),
+    /// Stdout was closed by its reader: exit quietly.
+    ClosedPipe,
 }
 
 impl From<asperity::Error> for CliError {
@@ -81,6 +86,7 @@ impl From<asperity::Error> for CliError {
 }
 
 fn main() -> ExitCode {
+    pipe::quiet_on_closed_pipe();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {
@@ -127,5 +133,6 @@ fn main() -> ExitCode {
             eprintln!("error: {msg}");
             ExitCode::from(1)
         }
+        Err(CliError::ClosedPipe) => ExitCode::from(pipe::CLOSED_PIPE_EXIT),
     }
 }

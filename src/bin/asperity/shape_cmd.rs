@@ -1,9 +1,10 @@
 //! `asperity shape`: JKR adhesion of an axisymmetric profile (paraboloid,
 //! true sphere, cone, flat punch, power law): pull-off under load and
-//! displacement control and, with `--radii`, the curve. SI units.
+//! displacement control and, with `--radii`, the curve; with `--stress`,
+//! Maugis–Dugdale instead of JKR. SI units.
 
 use crate::CliError;
-use asperity::axisym::{sphere_exact, AxisymJkr, Profile};
+use asperity::axisym::{sphere_exact, AxisymJkr, AxisymMd, MdPoint, Profile};
 use asperity::law::Instability;
 use clap::Args;
 use serde::Serialize;
@@ -37,6 +38,10 @@ pub struct ShapeArgs {
     /// equilibria.
     #[arg(long, allow_hyphen_values = true)]
     radii: Option<String>,
+    /// Dugdale stress sigma0 (Pa): Maugis–Dugdale adhesion (range w/sigma0)
+    /// instead of JKR; not for the flat punch.
+    #[arg(long, allow_negative_numbers = true)]
+    stress: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]
     json: bool,
@@ -88,6 +93,8 @@ fn flag(e: asperity::Error) -> CliError {
         Some("coefficient") => Some("--coefficient"),
         Some("contact_modulus") => Some("--estar"),
         Some("work_of_adhesion") => Some("--w"),
+        Some("stress") => Some("--stress"),
+        Some("profile") => Some("--profile"),
         _ => None,
     };
     match name {
@@ -135,29 +142,35 @@ pub fn run(args: &ShapeArgs) -> crate::CliResult {
         Some(t) => Some(parse_radii(t, &profile)?),
         None => None,
     };
-    let jkr = AxisymJkr::new(profile, args.estar, args.w).map_err(flag)?;
-    let (po, jo) = (
-        jkr.pull_off_load_control(),
-        jkr.jump_out_displacement_control(),
-    );
+    let model = match args.stress {
+        Some(stress) => {
+            Model::Md(AxisymMd::new(profile, args.estar, args.w, stress).map_err(flag)?)
+        }
+        None => Model::Jkr(AxisymJkr::new(profile, args.estar, args.w).map_err(flag)?),
+    };
+    let (po, jo) = model.instabilities();
     let mut checked = vec![
         ("pull-off (load control)".to_string(), po.radius),
         ("jump-out (displacement control)".to_string(), jo.radius),
     ];
-    let curve = radii.map(|rs| {
-        rs.iter()
-            .map(|&a| {
-                checked.push((format!("curve point a = {a} m"), a));
-                CurvePoint {
-                    radius_m: a,
-                    load_N: jkr.load(a),
-                    interference_m: jkr.interference(a),
-                }
-            })
-            .collect::<Vec<_>>()
-    });
+    let curve = match radii {
+        Some(rs) => Some(
+            rs.iter()
+                .map(|&a| {
+                    checked.push((format!("curve point a = {a} m"), a));
+                    let (load, interference) = model.at(a)?;
+                    Ok(CurvePoint {
+                        radius_m: a,
+                        load_N: load,
+                        interference_m: interference,
+                    })
+                })
+                .collect::<Result<Vec<_>, CliError>>()?,
+        ),
+        None => None,
+    };
     let named: Vec<(&str, f64)> = checked.iter().map(|(s, a)| (s.as_str(), *a)).collect();
-    let warnings = sphere_exact::warnings(jkr.profile(), &named);
+    let warnings = sphere_exact::warnings(model.profile(), &named);
     for w in &warnings {
         eprintln!("warning: {w}");
     }
@@ -171,13 +184,64 @@ pub fn run(args: &ShapeArgs) -> crate::CliResult {
         let s = serde_json::to_string(&out).map_err(|e| CliError::Failed(e.to_string()))?;
         println!("{s}");
     } else {
-        print_table(&args.profile, &out);
+        let name = match args.stress {
+            Some(s) => format!("Maugis-Dugdale, sigma0 = {s} Pa"),
+            None => "JKR".into(),
+        };
+        print_table(&args.profile, &name, &out);
     }
     Ok(())
 }
 
-fn print_table(profile: &str, out: &Output) {
-    println!("profile {profile} (JKR)");
+/// The adhesion model of the command.
+enum Model {
+    Jkr(AxisymJkr),
+    Md(AxisymMd),
+}
+
+impl Model {
+    fn instabilities(&self) -> (Instability, Instability) {
+        let inst = |p: MdPoint| Instability {
+            load: p.load,
+            interference: p.interference,
+            radius: p.radius,
+        };
+        match self {
+            Model::Jkr(j) => (j.pull_off_load_control(), j.jump_out_displacement_control()),
+            Model::Md(m) => (
+                inst(m.pull_off_load_control()),
+                inst(m.jump_out_displacement_control()),
+            ),
+        }
+    }
+
+    fn profile(&self) -> &Profile {
+        match self {
+            Model::Jkr(j) => j.profile(),
+            Model::Md(m) => m.profile(),
+        }
+    }
+
+    /// `(load, interference)` at contact radius `a`.
+    fn at(&self, a: f64) -> Result<(f64, f64), CliError> {
+        match self {
+            Model::Jkr(j) => Ok((j.load(a), j.interference(a))),
+            Model::Md(m) => {
+                let p = m.point(a);
+                if p.load.is_finite() && p.interference.is_finite() {
+                    Ok((p.load, p.interference))
+                } else {
+                    Err(CliError::Usage(format!(
+                        "--radii: at a = {a} m the Dugdale zone would pass the sphere's equator"
+                    )))
+                }
+            }
+        }
+    }
+}
+
+fn print_table(profile: &str, model: &str, out: &Output) {
+    println!("profile {profile} ({model})");
     println!(
         "{:<34} {:>14} {:>14} {:>14}",
         "", "load (N)", "radius (m)", "interference (m)"

@@ -1,10 +1,10 @@
 //! `asperity sweep` and `asperity merge`.
 
+use crate::progress::Progress;
 use crate::CliError;
 use asperity::study::scene::Scene;
 use asperity::study::sweep::{merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary};
 use clap::Args;
-use indicatif::{ProgressBar, ProgressStyle};
 use std::path::PathBuf;
 
 /// Arguments of `asperity sweep`.
@@ -87,23 +87,15 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     if args.threads == Some(0) {
         return Err(CliError::Usage("--threads = 0: give at least 1".into()));
     }
-    let bar = ProgressBar::new(0);
-    bar.set_style(
-        ProgressStyle::with_template(
-            "{bar:40} {pos}/{len} points  {per_sec}  elapsed {elapsed}  eta {eta}",
-        )
-        .map_err(|e| CliError::Failed(e.to_string()))?,
-    );
-    let progress = |done: usize, total: usize| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
-    };
+    // A bar on a terminal; plain lines (every 10 % or 10 s) in logs.
+    let bar = Progress::new("sweep", "points", std::time::Duration::ZERO);
+    let progress = |done: usize, total: usize| bar.update(done, total);
     let options = SweepOptions {
         shard,
         threads: args.threads,
     };
     let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress).map_err(as_flag)?;
-    bar.finish_and_clear();
+    bar.finish();
     eprintln!(
         "{} points: {} already done, {} computed now ({} failed){}; results in {}",
         outcome.planned,
@@ -117,6 +109,15 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
         },
         outcome.path.display()
     );
+    // A sweep that produced no result at all is a failure, not a success.
+    if outcome.planned > 0 && outcome.failed_rows == outcome.planned {
+        let (i, why) = outcome.first_failure.unwrap_or_default();
+        return Err(CliError::Failed(format!(
+            "every one of the {} points failed (first, point {i}: {why}); see {}",
+            outcome.planned,
+            outcome.path.display()
+        )));
+    }
     Ok(())
 }
 

@@ -164,6 +164,11 @@ impl AsperityLaw for AdhesivePlastic {
         self.loading.breakpoint_interferences()
     }
 
+    /// The flattening (and so the JKR shape) depends on `delta_max`.
+    fn remembers_maximum(&self) -> bool {
+        true
+    }
+
     fn attach_interference(&self) -> f64 {
         0.0
     }

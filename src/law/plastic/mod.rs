@@ -202,6 +202,11 @@ macro_rules! plastic_asperity_law {
                 $crate::law::plastic::PlasticLoading::breakpoint_interferences(self)
             }
 
+            /// The flattening is permanent: unloading depends on `delta_max`.
+            fn remembers_maximum(&self) -> bool {
+                true
+            }
+
             fn attach_interference(&self) -> f64 {
                 0.0
             }

@@ -45,32 +45,171 @@ pub fn si_prefix_area(values: impl Iterator<Item = f64>) -> (f64, &'static str) 
     (s * s, p)
 }
 
-/// Writes `curve.csv`, `summary.json` and the charts the scene's outputs
-/// allow into `dir` (created if missing). Returns the files written.
+/// Every file [`write_outputs`] may write: the ones a run does not write
+/// this time are removed from the directory, so no output of an earlier run
+/// (a `montecarlo.csv` beside a run without a population) is left to be
+/// read as this run's.
+pub const OUTPUT_FILES: [&str; 7] = [
+    "curve.csv",
+    "montecarlo.csv",
+    "summary.json",
+    "load_separation.svg",
+    "load_separation_adhesive.svg",
+    "area_load.svg",
+    "count_load.svg",
+];
+
+/// The first numeric cell of a CSV text that is not finite:
+/// `(column, row's first two cells, value)`.
+fn non_finite_cell(csv: &str) -> Option<(String, String, String)> {
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next()?.split(',').collect();
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        for (i, c) in cells.iter().enumerate() {
+            if c.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
+                let col = header.get(i).copied().unwrap_or("?");
+                let at = cells.iter().take(2).copied().collect::<Vec<_>>().join(" ");
+                return Some((col.to_string(), at, c.to_string()));
+            }
+        }
+    }
+    None
+}
+
+/// The scalar results of a summary, by name, to check they are finite
+/// (JSON has no `inf`: `serde_json` would silently write `null`).
+fn summary_values(s: &Summary) -> Vec<(&'static str, Option<f64>)> {
+    let mut v = vec![
+        ("tabor_mu", s.tabor_mu),
+        ("maugis_lambda", s.maugis_lambda),
+        ("contact_modulus", Some(s.contact_modulus)),
+        ("summits", Some(s.summits)),
+        ("start_separation", Some(s.start_separation)),
+        ("closest_separation", Some(s.closest_separation)),
+        ("max_load", s.max_load),
+        ("max_area", s.max_area),
+        ("max_count", s.max_count),
+        ("pull_off_load", s.pull_off_load),
+        ("pull_off_separation", s.pull_off_separation),
+        ("hysteresis_energy", s.hysteresis_energy),
+    ];
+    if let Some(m) = &s.montecarlo {
+        v.extend([
+            ("montecarlo.max_load", m.max_load),
+            (
+                "montecarlo.max_load_standard_error",
+                m.max_load_standard_error,
+            ),
+            ("montecarlo.pull_off_load", m.pull_off_load),
+            (
+                "montecarlo.integral_sampled_pull_off_load",
+                m.integral_sampled_pull_off_load,
+            ),
+            ("montecarlo.max_abs_z", m.max_abs_z),
+        ]);
+    }
+    v
+}
+
+/// Refuses a run's outputs when any number in them is not finite.
+fn check_finite(files: &[(&str, &str)], summary: &Summary) -> Result<()> {
+    let refuse = |name: &str, what: String| {
+        Error::invalid(
+            name,
+            format!(
+                "{what} is not finite, so no output was written: the scene's \
+                 magnitudes overflow f64 (check surface.nominal_area, \
+                 surface.density and the loads they imply)"
+            ),
+        )
+    };
+    for (file, text) in files {
+        if let Some((col, at, v)) = non_finite_cell(text) {
+            return Err(refuse(col.as_str(), format!("{file}: {col} = {v} at {at}")));
+        }
+    }
+    for (name, v) in summary_values(summary) {
+        if let Some(x) = v.filter(|x| !x.is_finite()) {
+            return Err(refuse(name, format!("summary.json: {name} = {x}")));
+        }
+    }
+    Ok(())
+}
+
+/// Writes `curve.csv`, `summary.json`, `montecarlo.csv` (with a population)
+/// and the charts the scene's outputs allow into `dir` (created if
+/// missing), and removes the files of [`OUTPUT_FILES`] this run does not
+/// write. Returns the files written.
+///
+/// Every number is checked before anything is written: a run whose
+/// results are not finite (an `inf` load from an absurd nominal area)
+/// writes nothing and says which quantity.
 ///
 /// # Errors
+/// [`Error::Invalid`] naming the quantity when a result is not finite;
 /// [`Error::Invalid`] naming `out` when the directory or a file cannot be
 /// written.
 pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<PathBuf>> {
     let io = |e: std::io::Error| Error::invalid("out", format!("{}: {e}", dir.display()));
+    let curve = curve_csv(results, plan);
+    let mc = super::montecarlo_csv(results);
+    let summary = Summary::new(plan, results);
+    let mut tables = vec![("curve.csv", curve.as_str())];
+    if let Some(text) = &mc {
+        tables.push(("montecarlo.csv", text.as_str()));
+    }
+    check_finite(&tables, &summary)?;
+    tables.push(("summary.json", ""));
+    let charts = charts(plan, results);
     std::fs::create_dir_all(dir).map_err(io)?;
+    let current: Vec<&str> = tables
+        .iter()
+        .map(|t| t.0)
+        .chain(charts.iter().map(|c| c.0.as_str()))
+        .collect();
+    for stale in OUTPUT_FILES.iter().filter(|f| !current.contains(f)) {
+        match std::fs::remove_file(dir.join(stale)) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(io(e)),
+            _ => {}
+        }
+    }
     let mut written = Vec::new();
     let csv = dir.join("curve.csv");
-    std::fs::write(&csv, curve_csv(results, plan)).map_err(io)?;
+    std::fs::write(&csv, curve).map_err(io)?;
     written.push(csv);
-    if let Some(text) = super::montecarlo_csv(results) {
+    if let Some(text) = mc {
         let path = dir.join("montecarlo.csv");
         std::fs::write(&path, text).map_err(io)?;
         written.push(path);
     }
     let json = dir.join("summary.json");
-    std::fs::write(&json, Summary::new(plan, results).to_json() + "\n").map_err(io)?;
+    std::fs::write(&json, summary.to_json() + "\n").map_err(io)?;
     written.push(json);
-    for chart in charts(plan, results) {
+    for chart in charts {
         let path = dir.join(&chart.0);
         chart.1.write_svg(&path, 800, 560)?;
         written.push(path);
     }
+    for (name, chart, loglog) in super::feature_charts(plan, results) {
+        let path = dir.join(&name);
+        // A feature chart with nothing to draw (no compressive state with
+        // contact, say) is left out, not an error.
+        let drawable =
+            chart.series.iter().flat_map(|s| &s.points).any(|p| {
+                p.0.is_finite() && p.1.is_finite() && (!loglog || (p.0 > 0.0 && p.1 > 0.0))
+            });
+        if !drawable {
+            continue;
+        }
+        if loglog {
+            chart.write_svg_loglog(&path, 800, 560)?;
+        } else {
+            chart.write_svg(&path, 800, 560)?;
+        }
+        written.push(path);
+    }
+    written.extend(super::topography::write_charts(plan, dir)?);
     Ok(written)
 }
 
@@ -187,6 +326,18 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn non_finite_cells_are_found_with_their_column() {
+        let ok = "leg,separation_m,load_N\napproach,1e-9,2e0\nretract,1e-9,\n";
+        assert_eq!(non_finite_cell(ok), None);
+        let bad = "leg,separation_m,load_N\napproach,1e-9,2e0\napproach,2e-9,inf\n";
+        assert_eq!(
+            non_finite_cell(bad),
+            Some(("load_N".into(), "approach 2e-9".into(), "inf".into()))
+        );
+        assert!(non_finite_cell("a,b\nNaN,1\n").is_some());
+    }
 
     #[test]
     fn prefixes_put_the_largest_value_in_one_to_a_thousand() {

@@ -62,6 +62,12 @@ pub enum LawReason {
     },
     /// Named in the scene.
     Given,
+    /// Named in the scene; its adhesion is left out because the JKR
+    /// interference scale (m) is far below the tolerance.
+    AdhesionNegligible {
+        /// `(pi^2 w^2 R/K^2)^(1/3)` (m).
+        jkr_scale: f64,
+    },
     /// The full-solver law, from the on-disk cache or computed at run time.
     Calibrated {
         /// Whether the cache already holds it.
@@ -157,6 +163,39 @@ pub enum Decision {
         /// `eta A_n / summits`.
         factor: f64,
     },
+    /// The plasticity index of the surface (materials give a yield
+    /// strength or hardness).
+    Plasticity {
+        /// `psi = (E*/H) sqrt(sigma/R)`.
+        psi: f64,
+        /// Hardness `H` (Pa).
+        hardness: f64,
+        /// Whether the law is elastic-plastic.
+        plastic_law: bool,
+    },
+    /// How the contact resistance is computed.
+    Resistance {
+        /// Spreading model name.
+        spreading: &'static str,
+        /// Whether Greenwood's interaction term is added.
+        greenwood: bool,
+        /// Whether a film resistance is added.
+        film: bool,
+    },
+    /// The states listed in `[program]`.
+    Listed {
+        /// How many.
+        count: usize,
+        /// Whether they are loads (else separations).
+        loads: bool,
+    },
+    /// Which model of a measured map (`[surface] topography`).
+    Topography {
+        /// The choice, in a few words.
+        choice: String,
+        /// Why.
+        why: String,
+    },
 }
 
 impl Decision {
@@ -171,6 +210,10 @@ impl Decision {
             Decision::PullOff { .. } => "pull-off",
             Decision::HysteresisEnergy { .. } => "hysteresis energy",
             Decision::MonteCarlo { .. } => "montecarlo",
+            Decision::Plasticity { .. } => "plasticity",
+            Decision::Resistance { .. } => "resistance",
+            Decision::Listed { .. } => "listed states",
+            Decision::Topography { .. } => "topography",
         }
     }
 
@@ -203,6 +246,12 @@ impl Decision {
             }
             .into(),
             Decision::MonteCarlo { summits, seed, .. } => format!("{summits} summits, seed {seed}"),
+            Decision::Plasticity { psi, .. } => format!("psi = {psi:.3}"),
+            Decision::Resistance { spreading, .. } => format!("{spreading} spots"),
+            Decision::Listed { count, loads } => {
+                format!("{count} {}", if *loads { "loads" } else { "separations" })
+            }
+            Decision::Topography { choice, .. } => choice.clone(),
         }
     }
 
@@ -284,6 +333,40 @@ impl Decision {
                     String::new()
                 }
             ),
+            Decision::Plasticity {
+                psi,
+                hardness,
+                plastic_law,
+            } => format!(
+                "GW plasticity index (E*/H) sqrt(sigma/R) with H = {hardness:.4e} Pa: {}; {}",
+                if *psi > 1.0 {
+                    "above 1, most contacts yield"
+                } else {
+                    "below 1, most contacts stay elastic"
+                },
+                if *plastic_law {
+                    "the elastic-plastic law follows them (regime fractions at the closest approach in the summary)"
+                } else {
+                    "the law is elastic"
+                }
+            ),
+            Decision::Resistance {
+                greenwood, film, ..
+            } => format!(
+                "each contact spot from the law's contact radius, summed in parallel{}{}",
+                if *greenwood {
+                    " plus Greenwood's mean-field interaction in the square apparent area (left out where fewer than 2 contacts are expected)"
+                } else {
+                    " (independent spots, no interaction)"
+                },
+                if *film { ", with a film resistance per spot" } else { "" }
+            ),
+            Decision::Listed { loads, .. } => format!(
+                "reported on approach in the listed order{}; the curve runs to the {}",
+                if *loads { ", each separation solved for its load" } else { "" },
+                if *loads { "largest load" } else { "closest separation" }
+            ),
+            Decision::Topography { why, .. } => why.clone(),
         }
     }
 }
@@ -310,6 +393,10 @@ fn law_why(reason: &LawReason, d: &Decision) -> String {
              full-solver law"
         ),
         LawReason::Given => "given in the scene".into(),
+        LawReason::AdhesionNegligible { jkr_scale } => format!(
+            "given in the scene; adhesion left out: its JKR interference scale {jkr_scale:.3e} m is \
+             below 1e-6 x rtol x sigma"
+        ),
         LawReason::Calibrated { cached, path } => format!(
             "full Lennard-Jones sphere solver (paraboloid), tabulated on both branches, with the \
              Lennard-Jones attraction kept out to a rigid gap of 100 z0 (the Dugdale laws cut it at \

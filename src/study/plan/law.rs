@@ -6,8 +6,9 @@ use super::PlanMode;
 use crate::error::{Error, Result};
 use crate::law::errors::LawErrorTable;
 use crate::law::{AsperityLaw, LawKind};
+use crate::material::plastic::Variant;
 use crate::material::AsperityContact;
-use crate::study::scene::Scene;
+use crate::study::scene::{LawFamily, Scene};
 use std::sync::Arc;
 
 /// Where the plan's law comes from.
@@ -17,6 +18,20 @@ pub enum LawSource {
     Kind(LawKind),
     /// The law calibrated from the full Lennard-Jones sphere solver.
     Calibrated,
+    /// An elastic-plastic law (with JKR adhesion on the unloading shape
+    /// when `w > 0`).
+    Plastic(Variant),
+    /// JKR on an axisymmetric profile (`law.profile`).
+    Shaped,
+}
+
+impl LawSource {
+    /// Whether the retraction leg can differ from the approach leg: adhesive
+    /// hysteresis or plastic history.
+    pub fn has_history(&self, law: &dyn AsperityLaw) -> bool {
+        matches!(self, LawSource::Plastic(_))
+            || law.attach_interference() != law.detach_interference()
+    }
 }
 
 /// The law a plan uses.
@@ -48,6 +63,11 @@ pub(super) fn choose(
     let table = LawErrorTable::embedded();
     let w = contact.adhesion.work();
     let kind_name = scene.law.kind.as_str();
+    match scene.law.family()? {
+        LawFamily::Plastic(v) => return plastic(scene, contact, v, decisions),
+        LawFamily::Shaped => return shaped(scene, contact, decisions),
+        LawFamily::Elastic => {}
+    }
     if kind_name == "calibrated" && w > 0.0 {
         return calibrated(contact, preview, decisions);
     }
@@ -148,4 +168,119 @@ fn calibrated(
         law,
         measured_error: None,
     })
+}
+
+/// An elastic-plastic law: the variant's loading fit, elastic unloading from
+/// the flattened shape, and JKR adhesion on that shape when `w > 0`.
+fn plastic(
+    scene: &Scene,
+    contact: &AsperityContact,
+    variant: Variant,
+    decisions: &mut Vec<Decision>,
+) -> Result<LawChoice> {
+    use crate::law::plastic::{build, AdhesivePlastic, PlasticLaw};
+    let plasticity = scene.plasticity()?.ok_or_else(|| {
+        Error::invalid(
+            "materials.yield_strength",
+            format!(
+                "the {} law needs the yield strength of the softer body (Pa)",
+                variant.name()
+            ),
+        )
+    })?;
+    let loading = build(variant, contact.radius, contact.contact_modulus, plasticity)
+        .map_err(|e| e.in_table("materials"))?;
+    let w = contact.adhesion.work();
+    // JKR interference scale of the unflattened summit,
+    // (pi^2 w^2 R / K^2)^(1/3), K = 4E*/3: where it is below a millionth of
+    // rtol x sigma the adhesion cannot change any output at the tolerance
+    // (and underflows the JKR scales), so the bare law serves.
+    let k = 4.0 * contact.contact_modulus / 3.0;
+    let jkr_scale = (std::f64::consts::PI.powi(2) * w * w * contact.radius / (k * k)).cbrt();
+    let negligible = jkr_scale < 1e-6 * scene.accuracy.rtol * scene.surface.sigma;
+    let law: Arc<dyn AsperityLaw> = if w > 0.0 && !negligible {
+        Arc::new(AdhesivePlastic::new(loading.as_loading(), w)?)
+    } else {
+        PlasticLaw::as_law(loading)
+    };
+    let reason = if w > 0.0 && negligible {
+        LawReason::AdhesionNegligible { jkr_scale }
+    } else {
+        LawReason::Given
+    };
+    decisions.push(Decision::Law {
+        name: variant.name().into(),
+        reason,
+        mu: contact.tabor(),
+        lambda: contact.lambda(),
+    });
+    Ok(LawChoice {
+        name: variant.name().into(),
+        source: LawSource::Plastic(variant),
+        law,
+        measured_error: None,
+    })
+}
+
+/// JKR on the scene's axisymmetric profile (Chebyshev-tabulated, exact
+/// beyond the table).
+fn shaped(
+    scene: &Scene,
+    contact: &AsperityContact,
+    decisions: &mut Vec<Decision>,
+) -> Result<LawChoice> {
+    if contact.adhesion.work() == 0.0 {
+        return Err(Error::invalid(
+            "adhesion.w",
+            "kind = \"shaped\" is JKR adhesion on the profile: it needs w > 0",
+        ));
+    }
+    let profile = scene.law.profile(contact.radius)?;
+    let name = format!("shaped ({})", profile.name());
+    let law =
+        crate::law::shaped::Shaped::new(profile, contact.contact_modulus, contact.adhesion.work())
+            // The profile keys are valid (checked with the scene): what fails here
+            // is derived (instabilities out of floating-point range for these
+            // moduli and work of adhesion), named by the caller's mapping.
+            .map_err(|e| shaped_error(scene, e))?;
+    decisions.push(Decision::Law {
+        name: name.clone(),
+        reason: LawReason::Given,
+        mu: contact.tabor(),
+        lambda: contact.lambda(),
+    });
+    Ok(LawChoice {
+        name,
+        source: LawSource::Shaped,
+        law: Arc::new(law),
+        measured_error: None,
+    })
+}
+
+/// A shaped law that cannot be built from valid profile keys: its
+/// instabilities left the floating-point range. Names the input furthest
+/// from typical values among the profile's own keys, `adhesion.w` and the
+/// moduli (`|ln(value/typical)|`).
+fn shaped_error(scene: &Scene, e: Error) -> Error {
+    let l = &scene.law;
+    let m = &scene.materials;
+    let candidates = [
+        ("law.tan_angle", l.tan_angle, 0.3),
+        ("law.exponent", l.exponent, 2.0),
+        ("law.radius", l.radius, 1e-6),
+        ("adhesion.w", Some(scene.adhesion.w), 0.5),
+        ("materials.e1", Some(m.e1), 8e10),
+        ("materials.e2", Some(m.e2), 8e10),
+    ];
+    let pick = candidates
+        .iter()
+        .filter_map(|(n, v, t)| v.filter(|v| *v > 0.0).map(|v| (*n, (v / t).ln().abs())))
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map_or("adhesion.w", |x| x.0);
+    Error::invalid(
+        pick,
+        format!(
+            "the shaped law cannot be built ({e}); {pick} is the input furthest from typical values"
+        ),
+    )
 }

@@ -28,20 +28,25 @@
 mod decision;
 mod law;
 mod montecarlo;
+mod topography;
 
 pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
 pub use law::{LawChoice, LawSource};
 pub use montecarlo::McPlan;
+pub use topography::TopographyPlan;
 
+use crate::electrical::{Heating, Interaction, ResistanceObservables, Switch};
 use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
 use crate::heights::HeightDistribution;
 use crate::law::interpolated::InterpolatedLaw;
 use crate::law::AsperityLaw;
 use crate::loading::{LoadingModel, Observables};
+use crate::material::plastic::{plasticity_index, Plasticity};
 use crate::material::AsperityContact;
-use crate::study::scene::{build_contact, build_distribution, build_surface, Scene};
+use crate::study::scene::{build_contact, build_distribution, build_surface, ProgramTarget, Scene};
 use std::fmt;
+use std::path::Path;
 use std::sync::Arc;
 
 /// The program starts where summits beyond the flat's reach carry less than
@@ -117,10 +122,23 @@ pub struct Plan {
     pub montecarlo: Option<McPlan>,
     /// The decisions, in order.
     pub decisions: Vec<Decision>,
+    /// Plastic data of the yielding body, when the materials give it.
+    pub plasticity: Option<Plasticity>,
+    /// The states listed in `[program]` (`separations` or `loads`).
+    pub listed: Option<ProgramTarget>,
+    /// The contact resistance's observables, with `[electrical]`.
+    pub resistance: Option<ResistanceObservables>,
+    /// The switch spring, with `[switch]`.
+    pub switch: Option<Switch>,
+    /// The current (A) and Holm's heating relation, with
+    /// `electrical.current`.
+    pub heating: Option<(f64, Heating)>,
     /// Where the scene lies outside a model's validity, found while
     /// planning (the run adds its own, [`crate::study::Results::warnings`]);
     /// the summary lists both.
     pub warnings: Vec<String>,
+    /// The measured map, when the scene has `[surface] topography`.
+    pub topography: Option<TopographyPlan>,
 }
 
 impl Plan {
@@ -131,7 +149,31 @@ impl Plan {
     /// Whatever the scene's values make impossible (validated again here),
     /// naming the scene field.
     pub fn new(scene: &Scene, mode: PlanMode) -> Result<Plan> {
-        Plan::build(scene, mode, false)
+        Plan::build(scene, mode, false, Path::new("."))
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
+    }
+
+    /// As [`Plan::new`] for a scene read from a file in `base_dir`: a
+    /// `[surface] topography` path is relative to it ([`Plan::new`] uses
+    /// the working directory).
+    ///
+    /// # Errors
+    /// As [`Plan::new`], and [`crate::study::scene::resolve`].
+    pub fn new_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Plan> {
+        Plan::build(scene, mode, false, base_dir)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
+    }
+
+    /// As [`Plan::preview`] for a scene read from a file in `base_dir`.
+    ///
+    /// # Errors
+    /// As [`Plan::new_in`].
+    pub fn preview_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Plan> {
+        Plan::build(scene, mode, true, base_dir)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
     }
 
     /// Plans `scene` without running anything expensive (`asperity run
@@ -141,21 +183,60 @@ impl Plan {
     /// # Errors
     /// As [`Plan::new`].
     pub fn preview(scene: &Scene, mode: PlanMode) -> Result<Plan> {
-        Plan::build(scene, mode, true)
+        Plan::build(scene, mode, true, Path::new("."))
+            .map_err(|e| crate::study::scene::map_derived(scene, e))
+            .and_then(crate::study::validity::checked)
     }
 
-    fn build(scene: &Scene, mode: PlanMode, preview: bool) -> Result<Plan> {
+    fn build(scene: &Scene, mode: PlanMode, preview: bool, base_dir: &Path) -> Result<Plan> {
         scene.validate()?;
+        let resolved = crate::study::scene::resolve(scene, base_dir)?;
+        let scene = resolved.as_ref().map_or(scene, |r| &r.scene);
         let contact = build_contact(scene)?;
         let surface = build_surface(scene)?;
         let distribution = build_distribution(&scene.surface)?;
         let mut decisions = Vec::new();
         let rtol = scene.accuracy.rtol;
         let law = law::choose(scene, &contact, mode, preview, &mut decisions)?;
+        let topography = match &resolved {
+            Some(r) => {
+                let t = TopographyPlan::new(r, &law, &contact)?;
+                decisions.push(Decision::Topography {
+                    choice: t.choice(),
+                    why: t.why(),
+                });
+                Some(t)
+            }
+            None => None,
+        };
         let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
         let (curve_outputs, accuracy) = outputs(scene, mode, &model, &law, &mut decisions)?;
+        let resistance = resistance(scene, &surface, &mut decisions)?;
+        let curve_outputs = match &resistance {
+            Some(r) => r.add_to(curve_outputs)?,
+            None => curve_outputs,
+        };
+        let mut warnings = Vec::new();
+        let plasticity = scene.plasticity()?;
+        if let Some(p) = plasticity {
+            let psi = plasticity_index(
+                contact.contact_modulus,
+                p.hardness(),
+                surface.sigma,
+                surface.radius,
+            );
+            let plastic_law = matches!(law.source, LawSource::Plastic(_));
+            decisions.push(Decision::Plasticity {
+                psi,
+                hardness: p.hardness(),
+                plastic_law,
+            });
+            if !plastic_law {
+                warnings.extend(crate::law::plastic::elastic_law_warning(&law.name, psi));
+            }
+        }
         let model = model.with_accuracy(accuracy);
-        let (target, start) = program(scene, mode, &model, &mut decisions)?;
+        let (target, start, listed) = program(scene, mode, &model, &mut decisions)?;
         let tabulation = tabulation(&law, &model, start, target, rtol, mode);
         if let Some((interval, tolerance)) = tabulation {
             decisions.push(Decision::Tabulation {
@@ -164,7 +245,7 @@ impl Plan {
                 interval,
             });
         }
-        let hysteresis_free = law.law.attach_interference() == law.law.detach_interference();
+        let hysteresis_free = !law.source.has_history(law.law.as_ref());
         let compute_retraction = mode == PlanMode::EverythingOn || !hysteresis_free;
         decisions.push(Decision::Retraction {
             computed: compute_retraction,
@@ -216,7 +297,21 @@ impl Plan {
             pull_off,
             hysteresis_energy,
             decisions,
-            warnings: Vec::new(),
+            plasticity,
+            listed,
+            resistance,
+            switch: match &scene.switch {
+                Some(s) => Some(
+                    Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch"))?,
+                ),
+                None => None,
+            },
+            heating: match &scene.electrical {
+                Some(e) => e.heating()?,
+                None => None,
+            },
+            warnings,
+            topography,
         })
     }
 
@@ -251,7 +346,7 @@ impl Plan {
     /// # Errors
     /// [`Error::Invalid`] naming `program.max_load` when the load is not
     /// reached.
-    pub fn closest_separation(&self, model: &GwModel) -> Result<f64> {
+    pub fn closest_separation(&self, model: &impl LoadingModel) -> Result<f64> {
         match self.target {
             Target::Separation(d) => Ok(d),
             Target::Load(p) => model
@@ -261,17 +356,26 @@ impl Plan {
     }
 }
 
-/// Where the program starts and where its approach stops.
+/// Where the program starts and where its approach stops, and the listed
+/// states (`separations` or `loads`), if any.
 fn program(
     scene: &Scene,
     mode: PlanMode,
     model: &GwModel,
     decisions: &mut Vec<Decision>,
-) -> Result<(Target, f64)> {
-    let target = match (scene.program.closest_separation, scene.program.max_load) {
-        (Some(d), _) => Target::Separation(d),
-        (None, Some(p)) => Target::Load(p),
-        (None, None) => return Err(Error::invalid("program", "no target")),
+) -> Result<(Target, f64, Option<ProgramTarget>)> {
+    let given = scene.program_target()?;
+    let (target, listed) = match &given {
+        ProgramTarget::Separation(d) => (Target::Separation(*d), None),
+        ProgramTarget::Load(p) => (Target::Load(*p), None),
+        ProgramTarget::Separations(xs) => (
+            Target::Separation(xs.iter().copied().fold(f64::INFINITY, f64::min)),
+            Some(given.clone()),
+        ),
+        ProgramTarget::Loads(xs) => (
+            Target::Load(xs.iter().copied().fold(0.0, f64::max)),
+            Some(given.clone()),
+        ),
     };
     let (start, reason) = match (scene.program.start_separation, mode) {
         (Some(s), _) => (s, StartReason::Given),
@@ -281,20 +385,64 @@ fn program(
         ),
         (None, PlanMode::EverythingOn) => (model.interaction_onset(), StartReason::EverythingOn),
     };
+    if !start.is_finite() {
+        // Derived from sigma, the distribution and the force range: named
+        // by the caller's mapping to the input furthest out.
+        return Err(Error::invalid(
+            "start separation",
+            format!("the program's start separation is {start:e} m"),
+        ));
+    }
     decisions.push(Decision::Start {
         separation: start,
         reason,
     });
+    if let Some(l) = &listed {
+        let (count, loads) = match l {
+            ProgramTarget::Separations(xs) => (xs.len(), false),
+            ProgramTarget::Loads(xs) => (xs.len(), true),
+            _ => (0, false),
+        };
+        decisions.push(Decision::Listed { count, loads });
+    }
     if let Target::Separation(d) = target {
         if !(start > d) {
+            let name = if listed.is_some() {
+                "program.separations"
+            } else {
+                "program.closest_separation"
+            };
             return Err(Error::OutOfRange {
-                name: "program.closest_separation".into(),
+                name: name.into(),
                 value: d,
                 allowed: crate::error::Allowed::open(f64::NEG_INFINITY, start),
             });
         }
     }
-    Ok((target, start))
+    Ok((target, start, listed))
+}
+
+/// The contact resistance's observables and decision, with `[electrical]`.
+fn resistance(
+    scene: &Scene,
+    surface: &RoughSurface,
+    decisions: &mut Vec<Decision>,
+) -> Result<Option<ResistanceObservables>> {
+    let Some(e) = &scene.electrical else {
+        return Ok(None);
+    };
+    let spot = e.spot_resistance()?;
+    let interaction = e.interaction()?;
+    decisions.push(Decision::Resistance {
+        spreading: spot.spreading().name(),
+        greenwood: interaction == Interaction::Greenwood,
+        film: spot.has_film(),
+    });
+    Ok(Some(ResistanceObservables::new(
+        spot,
+        interaction,
+        surface.nominal_area.sqrt(),
+    )))
 }
 
 /// Which observables the curve computes, the integration method, and the

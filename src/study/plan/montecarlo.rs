@@ -4,6 +4,7 @@
 use super::law::{LawChoice, LawSource};
 use crate::error::{Error, Result};
 use crate::gw::RoughSurface;
+use crate::law::RadiusScaling;
 use crate::material::AsperityContact;
 use crate::montecarlo::{PopulationSpec, RadiusSpec, SummitLaw, MAX_SUMMITS};
 use crate::study::scene::MonteCarloSpec;
@@ -48,19 +49,25 @@ impl McPlan {
         let summit_law = if spec.radius_log_std == 0.0 {
             SummitLaw::fixed(law.law.clone(), contact.radius)?
         } else {
-            let kind = match law.source {
-                LawSource::Kind(k) if k.radius_scaling().is_some() => k,
+            match law.source {
+                LawSource::Kind(k) if k.radius_scaling().is_some() => {
+                    SummitLaw::from_kind(k, contact)?
+                }
+                // Without adhesion the plastic fits scale as (1, 2, 1).
+                LawSource::Plastic(_) if contact.adhesion.work() == 0.0 => {
+                    SummitLaw::scaled(law.law.clone(), contact.radius, RadiusScaling::PLASTIC)?
+                }
                 _ => {
                     return Err(Error::invalid(
                         "montecarlo.radius_log_std",
                         format!(
-                            "a radius spread needs a law that scales with R (hertz, dmt, jkr, bradley), not {}",
+                            "a radius spread needs a law that scales with R (hertz, dmt, jkr, bradley, \
+                             or an elastic-plastic law without adhesion), not {}",
                             law.name
                         ),
                     ))
                 }
-            };
-            SummitLaw::from_kind(kind, contact)?
+            }
         };
         Ok(McPlan {
             spec: *spec,

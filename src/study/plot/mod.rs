@@ -1,6 +1,7 @@
 //! SVG line charts of result curves (plotters, SVG backend; no fonts or
 //! system libraries needed).
 
+mod loglog;
 mod map;
 pub mod plastic;
 pub mod punch;

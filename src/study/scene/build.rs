@@ -63,3 +63,139 @@ fn field(e: Error, modulus: &str, poisson: &str) -> Error {
         _ => e.renamed(poisson),
     }
 }
+
+/// Typical values of the numeric scene inputs (a gold microswitch), the
+/// reference against which [`map_derived`] finds the input furthest out.
+const TYPICAL: [(&str, f64); 8] = [
+    ("materials.e1", 8e10),
+    ("materials.e2", 8e10),
+    ("surface.density", 1e12),
+    ("surface.radius", 1e-6),
+    ("surface.sigma", 5e-9),
+    ("surface.nominal_area", 1e-8),
+    ("adhesion.w", 0.5),
+    ("adhesion.z0", 3e-10),
+];
+
+fn input(scene: &Scene, name: &str) -> f64 {
+    let (m, s, a) = (&scene.materials, &scene.surface, &scene.adhesion);
+    match name {
+        "materials.e1" => m.e1,
+        "materials.e2" => m.e2,
+        "surface.density" => s.density,
+        "surface.radius" => s.radius,
+        "surface.sigma" => s.sigma,
+        "surface.nominal_area" => s.nominal_area,
+        "adhesion.w" => a.w,
+        _ => a.z0,
+    }
+}
+
+/// The numeric input furthest (in `|ln(value/typical)|`) from a typical
+/// gold microswitch ([`TYPICAL`]); with `among`, only those inputs.
+pub fn most_extreme_input(scene: &Scene, among: &[&str]) -> &'static str {
+    TYPICAL
+        .iter()
+        .filter(|(n, _)| among.is_empty() || among.contains(n))
+        .filter(|(n, _)| input(scene, n) > 0.0)
+        .max_by(|x, y| {
+            let d = |(n, t): &(&str, f64)| (input(scene, n) / t).ln().abs();
+            d(x).total_cmp(&d(y))
+        })
+        .map_or("materials.e1", |x| x.0)
+}
+
+/// Maps an error about a derived quantity, which no scene key names (the
+/// Maugis `lambda` or Tabor `mu`, a start separation, a law not finite on
+/// the interferences reached), back to the scene input that drove it out of
+/// range; errors naming a scene field pass unchanged (a start after the
+/// closest separation gets the inputs that set the start appended).
+///
+/// `mu = (R w^2 / (E*^2 z0^3))^(1/3)`, `lambda = 1.1570 mu`: each input's
+/// share of `ln mu` against a typical gold microswitch ([`TYPICAL`]) is
+/// `exponent x ln(value/typical)`; the input with the largest share in the
+/// direction of the failure is named (for `E*`, the more compliant body's
+/// modulus), and the message lists them all. Other derived quantities name
+/// the input furthest from typical ([`most_extreme_input`]).
+pub fn map_derived(scene: &Scene, e: Error) -> Error {
+    let field = e.field().unwrap_or("").to_string();
+    let text = e.to_string();
+    if field == "program.closest_separation"
+        && scene.program.start_separation.is_none()
+        && matches!(e, Error::OutOfRange { .. })
+    {
+        let s = &scene.surface;
+        let parameter = match (s.weibull_shape, s.truncation) {
+            (Some(k), _) => format!(" (surface.weibull_shape = {k:e})"),
+            (_, Some(k)) => format!(" (surface.truncation = {k:e})"),
+            _ => String::new(),
+        };
+        return Error::invalid(
+            field,
+            format!(
+                "{text}: no summit comes within range of the flat there; the start (where the \
+                 first summit comes in range) follows from surface.sigma = {:e} m, \
+                 surface.distribution = {:?}{parameter} and the interaction range \
+                 adhesion.z0 = {:e} m",
+                s.sigma, s.distribution, scene.adhesion.z0
+            ),
+        );
+    }
+    let tabor = matches!(
+        field.as_str(),
+        "lambda" | "mu" | "tabor" | "tabor_parameter"
+    ) || (field == "law.kind" && text.contains("full solver at mu"));
+    if !tabor {
+        let scene_field = field.contains('.')
+            || matches!(
+                field.as_str(),
+                "program" | "surface" | "materials" | "adhesion" | "montecarlo" | "scene"
+            );
+        if scene_field || !e.is_bad_input() {
+            return e;
+        }
+        let pick = most_extreme_input(scene, &[]);
+        return Error::invalid(
+            pick,
+            format!(
+                "{text}: a derived quantity left its range; {pick} = {:e} is the input furthest \
+                 from typical values",
+                input(scene, pick)
+            ),
+        );
+    }
+    let m = &scene.materials;
+    let e_field = if m.e1 <= m.e2 {
+        "materials.e1"
+    } else {
+        "materials.e2"
+    };
+    let shares = [
+        ("surface.radius", 1.0 / 3.0),
+        ("adhesion.w", 2.0 / 3.0),
+        (e_field, -2.0 / 3.0),
+        ("adhesion.z0", -1.0),
+    ];
+    let typical = |n: &str| TYPICAL.iter().find(|t| t.0 == n).map_or(1.0, |t| t.1);
+    let share = |&(n, p): &(&str, f64)| p * (input(scene, n) / typical(n)).ln();
+    let total: f64 = shares.iter().map(share).sum();
+    let too_large = !(total < 0.0);
+    let pick = shares
+        .iter()
+        .max_by(|x, y| {
+            let (sx, sy) = (share(x), share(y));
+            let (sx, sy) = if too_large { (sx, sy) } else { (-sx, -sy) };
+            sx.total_cmp(&sy)
+        })
+        .map_or("materials.e1", |x| x.0);
+    let (s, a) = (&scene.surface, &scene.adhesion);
+    Error::invalid(
+        pick,
+        format!(
+            "{text}: the Tabor mu = (R w^2/(E*^2 z0^3))^(1/3) (Maugis lambda = 1.1570 mu) is \
+             driven out of range by {pick} (surface.radius = {:e} m, adhesion.w = {:e} J/m^2, \
+             materials.e1 = {:e} Pa, materials.e2 = {:e} Pa, adhesion.z0 = {:e} m)",
+            s.radius, a.w, m.e1, m.e2, a.z0
+        ),
+    )
+}

@@ -8,14 +8,20 @@
 //! fields. The planner ([`crate::study::plan`]) decides what to compute.
 
 mod build;
+mod features;
 mod parse;
 mod schema;
+mod topography;
 
-pub use build::{build_contact, build_distribution, build_surface};
+pub use build::{
+    build_contact, build_distribution, build_surface, map_derived, most_extreme_input,
+};
+pub use features::{LawFamily, ProgramTarget, ELASTIC_LAWS, PROFILES};
+pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
 pub use schema::{
-    AccuracySpec, AdhesionSpec, LawSpec, MaterialsSpec, MonteCarloSpec, OutputsSpec, ProgramSpec,
-    Scene, SurfaceSpec,
+    AccuracySpec, AdhesionSpec, ElectricalSpec, LawSpec, MaterialsSpec, MonteCarloSpec,
+    OutputsSpec, ProgramSpec, Scene, SurfaceSpec, SwitchSpec, MAX_LISTED_STATES,
 };
 
 /// The default scene (`examples/scenes/mems-gold.toml`), embedded so that

@@ -34,10 +34,7 @@ impl Scene {
         nu.check("materials.nu1", m.nu1)?;
         nu.check("materials.nu2", m.nu2)?;
         let s = &self.surface;
-        positive("surface.density", s.density)?;
-        positive("surface.radius", s.radius)?;
-        positive("surface.sigma", s.sigma)?;
-        positive("surface.nominal_area", s.nominal_area)?;
+        super::topography::validate_surface(s)?;
         match s.distribution.as_str() {
             "gaussian" | "exponential" => {}
             "weibull" => {
@@ -87,38 +84,8 @@ impl Scene {
         }
         non_negative("adhesion.w", self.adhesion.w)?;
         positive("adhesion.z0", self.adhesion.z0)?;
-        const LAWS: [&str; 7] = ["auto", "hertz", "dmt", "jkr", "maugis", "cos", "calibrated"];
-        if !LAWS.contains(&self.law.kind.as_str()) {
-            return Err(Error::invalid(
-                "law.kind",
-                format!(
-                    "unknown law {:?}; known: {}",
-                    self.law.kind,
-                    LAWS.join(", ")
-                ),
-            ));
-        }
+        self.validate_features()?;
         let p = &self.program;
-        match (p.closest_separation, p.max_load) {
-            (Some(d), None) => {
-                finite("program.closest_separation", d)?;
-            }
-            (None, Some(load)) => {
-                positive("program.max_load", load)?;
-            }
-            (Some(_), Some(_)) => {
-                return Err(Error::invalid(
-                    "program",
-                    "give closest_separation or max_load, not both",
-                ))
-            }
-            (None, None) => {
-                return Err(Error::invalid(
-                    "program",
-                    "missing closest_separation or max_load (one is required)",
-                ))
-            }
-        }
         if let Some(start) = p.start_separation {
             finite("program.start_separation", start)?;
             if let Some(d) = p.closest_separation {
@@ -152,8 +119,149 @@ impl Scene {
             }
             non_negative("montecarlo.radius_log_std", mc.radius_log_std)?;
         }
+        not_applicable(self)?;
+        costs(self)?;
         Ok(())
     }
+}
+
+/// Largest `program.points` (per leg).
+pub const MAX_POINTS: usize = 1_000_000;
+
+/// Smallest summit radius, height scale and interaction range (m): below a
+/// femtometre no length of a contact means anything.
+pub const MIN_LENGTH: f64 = 1e-15;
+
+/// Largest summit radius, height scale and interaction range (m).
+pub const MAX_LENGTH: f64 = 1.0;
+
+/// Largest number of summits `eta A_n` on the nominal area (totals stay
+/// far from overflow).
+pub const MAX_SURFACE_SUMMITS: f64 = 1e24;
+
+/// Largest memory (bytes) a Monte Carlo population may take (heights, radii
+/// and the sorted suffix), so that a scene never aborts on allocation.
+pub const MAX_POPULATION_BYTES: f64 = 2.0 * (1u64 << 30) as f64;
+
+/// Largest estimated single-core time (s) of summing a population over the
+/// program.
+pub const MAX_POPULATION_SECONDS: f64 = 3600.0;
+
+/// Bytes per summit of a population: height, radius and working copies.
+const BYTES_PER_SUMMIT: f64 = 32.0;
+
+/// Estimated time (ns) of one summit evaluation (a tabulated or analytic
+/// law plus summation; Maugis–Dugdale untabulated is ~200 ns).
+const NS_PER_SUMMIT_EVALUATION: f64 = 50.0;
+
+/// Keys that apply only to one distribution are refused on the others (an
+/// ignored key would hide a mistake, as an unknown key would).
+fn not_applicable(scene: &Scene) -> Result<()> {
+    let s = &scene.surface;
+    let d = s.distribution.as_str();
+    for (key, present, owner) in [
+        (
+            "surface.weibull_shape",
+            s.weibull_shape.is_some(),
+            "weibull",
+        ),
+        (
+            "surface.truncation",
+            s.truncation.is_some(),
+            "truncated-gaussian",
+        ),
+        ("surface.heights", s.heights.is_some(), "empirical"),
+    ] {
+        if present && d != owner {
+            return Err(Error::invalid(
+                key,
+                format!(
+                    "applies only to distribution = \"{owner}\", not {d:?}: remove it or change \
+                     surface.distribution"
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Sizes against their documented bounds before anything is allocated: the
+/// points per leg, and the Monte Carlo population's memory and time
+/// (estimated; refused with the estimate and the bound).
+fn costs(scene: &Scene) -> Result<()> {
+    let p = &scene.program;
+    if p.points > MAX_POINTS {
+        return Err(Error::OutOfRange {
+            name: "program.points".into(),
+            value: p.points as f64,
+            allowed: Allowed::closed(2.0, MAX_POINTS as f64),
+        });
+    }
+    let s = &scene.surface;
+    // With a measured map, density, radius and sigma come from the map
+    // (checked when it is read; the spec holds placeholders until then).
+    let measured = s.topography.is_some();
+    for (name, x) in [
+        ("surface.radius", s.radius),
+        ("surface.sigma", s.sigma),
+        ("adhesion.z0", scene.adhesion.z0),
+    ] {
+        if measured && name != "adhesion.z0" {
+            continue;
+        }
+        Allowed::closed(MIN_LENGTH, MAX_LENGTH).check(name, x)?;
+    }
+    let summits = s.density * s.nominal_area;
+    if !measured && !(1.0..=MAX_SURFACE_SUMMITS).contains(&summits) {
+        let pick =
+            super::build::most_extreme_input(scene, &["surface.density", "surface.nominal_area"]);
+        return Err(Error::invalid(
+            pick,
+            format!(
+                "eta A_n = surface.density x surface.nominal_area = {summits:e} summits; allowed \
+                 [1, {MAX_SURFACE_SUMMITS:e}] (fewer than one summit is no rough surface)"
+            ),
+        ));
+    }
+    let Some(mc) = &scene.montecarlo else {
+        return Ok(());
+    };
+    let (n, field) = match mc.summits {
+        Some(n) => (n as f64, "montecarlo.summits"),
+        None => ((s.density * s.nominal_area).round(), "surface.nominal_area"),
+    };
+    if !n.is_finite() {
+        return Err(Error::invalid(
+            field,
+            format!("eta A_n = {n} summits is not a population size"),
+        ));
+    }
+    let bytes = n * BYTES_PER_SUMMIT;
+    if bytes > MAX_POPULATION_BYTES {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "a population of {n:.3e} summits needs about {:.3e} GB of memory, more than the \
+                 bound {:.1} GB; give a smaller montecarlo.summits (the totals are scaled to the \
+                 whole surface)",
+                bytes / 1e9,
+                MAX_POPULATION_BYTES / 1e9
+            ),
+        ));
+    }
+    let seconds = n * 2.0 * p.points as f64 * NS_PER_SUMMIT_EVALUATION * 1e-9;
+    if seconds > MAX_POPULATION_SECONDS {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "summing {n:.3e} summits over 2 x {} points takes an estimated {seconds:.3e} s on \
+                 one core, more than the bound {MAX_POPULATION_SECONDS} s; give a smaller \
+                 montecarlo.summits or program.points",
+                p.points
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Turns a TOML error into one naming the line and, where it can be found,

@@ -35,6 +35,81 @@ pub struct Scene {
     /// statistical integral (absent: no Monte Carlo).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub montecarlo: Option<MonteCarloSpec>,
+    /// Optional electrical contact: spot resistances from the contact
+    /// spots (absent: no resistance).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub electrical: Option<ElectricalSpec>,
+    /// Optional switch: spring and travel, for the stiction margin.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub switch: Option<SwitchSpec>,
+}
+
+/// `[electrical]`: constriction resistance of the contact spots
+/// (Maxwell/Holm, Sharvin, Wexler), optionally with Greenwood's interaction
+/// and a film. Same metal: `resistivity` (and `mean_free_path`); two
+/// metals: `resistivity1`/`resistivity2` (and `mean_free_path1`/`2`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ElectricalSpec {
+    /// Resistivity of both bodies (Ohm m), > 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub resistivity: Option<f64>,
+    /// Resistivity of body 1 (Ohm m), > 0 (two metals).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub resistivity1: Option<f64>,
+    /// Resistivity of body 2 (Ohm m), > 0 (two metals).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub resistivity2: Option<f64>,
+    /// Electron mean free path of both bodies (m), > 0; needed by
+    /// `sharvin` and `wexler`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mean_free_path: Option<f64>,
+    /// Mean free path of body 1 (m), > 0 (two metals).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mean_free_path1: Option<f64>,
+    /// Mean free path of body 2 (m), > 0 (two metals).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mean_free_path2: Option<f64>,
+    /// `"maxwell"` (diffusive, Holm), `"sharvin"` (ballistic) or
+    /// `"wexler"` (Mikrajuddin interpolation); default `"maxwell"`.
+    #[serde(default = "default_spreading")]
+    pub spreading: String,
+    /// `"none"` (independent parallel spots, default) or `"greenwood"`
+    /// (mean-field interaction in a square apparent area of side
+    /// `sqrt(nominal_area)`).
+    #[serde(default = "default_interaction")]
+    pub interaction: String,
+    /// Film resistance per unit area (Ohm m^2), >= 0; each spot adds
+    /// `film_resistance / (pi a^2)`. Default 0.
+    #[serde(default)]
+    pub film_resistance: f64,
+    /// Current through the contact (A), > 0, optional: the summary and the
+    /// listed states then give the contact voltage `I R` and the peak
+    /// contact temperature (Holm's phi-theta relation with the
+    /// Wiedemann–Franz law).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub current: Option<f64>,
+    /// Bulk temperature (K), > 0, for the heating; default 293.15.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bulk_temperature: Option<f64>,
+}
+
+fn default_spreading() -> String {
+    "maxwell".to_string()
+}
+
+fn default_interaction() -> String {
+    "none".to_string()
+}
+
+/// `[switch]`: the spring that reopens the contact.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SwitchSpec {
+    /// Spring constant `k` (N/m), > 0.
+    pub spring_constant: f64,
+    /// Travel (m), > 0: the restoring force is `k x travel`.
+    pub travel: f64,
 }
 
 /// `[montecarlo]`: an explicit random population of summits drawn from the
@@ -70,24 +145,42 @@ pub struct MaterialsSpec {
     pub e2: f64,
     /// Poisson ratio of body 2, in [0, 0.5).
     pub nu2: f64,
+    /// Yield strength of the body that yields (Pa), > 0; required by the
+    /// elastic-plastic laws, optional otherwise (it feeds the plasticity
+    /// diagnostics). Its Poisson ratio is taken as that of the softer body
+    /// (the lower Young's modulus; body 1 on a tie).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_strength: Option<f64>,
+    /// Hardness of the body that yields (Pa), >= `yield_strength`; default
+    /// `2.8 x yield_strength` (Tabor).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hardness: Option<f64>,
 }
 
 /// `[surface]`: the summits.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SurfaceSpec {
-    /// Summit areal density `eta` (1/m^2), > 0.
+    /// Summit areal density `eta` (1/m^2), > 0. Required unless
+    /// `topography` is given (then it comes from the map and must not be
+    /// given); absent reads as NaN.
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub density: f64,
-    /// Summit radius `R` (m), > 0.
+    /// Summit radius `R` (m), > 0. Required unless `topography` is given.
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub radius: f64,
     /// Summit-height standard deviation `sigma` (m), > 0 (the decay length
-    /// for the exponential distribution).
+    /// for the exponential distribution). Required unless `topography` is
+    /// given.
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub sigma: f64,
     /// Height distribution: `"gaussian"` (default), `"exponential"`,
     /// `"weibull"`, `"truncated-gaussian"`, `"empirical"`.
     #[serde(default = "default_distribution")]
     pub distribution: String,
-    /// Nominal area `A_n` (m^2), > 0.
+    /// Nominal area `A_n` (m^2), > 0. Required unless `topography` is
+    /// given (default then: the map's area, rows x cols x pixel_size^2).
+    #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub nominal_area: f64,
     /// Weibull shape `k` (> 0), for `distribution = "weibull"`.
     #[serde(default)]
@@ -98,6 +191,44 @@ pub struct SurfaceSpec {
     /// Measured summit heights (m), for `"empirical"`.
     #[serde(default)]
     pub heights: Option<Vec<f64>>,
+    /// A measured height map (`.npy`, or a text matrix `.txt`/`.csv`/`.asc`),
+    /// path relative to the scene file's directory. The summits come from
+    /// the map (`docs/surface.md`, "Scenes from measurements"): `density`,
+    /// `radius` and `sigma` must then not be given, and `distribution`
+    /// must stay `"gaussian"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub topography: Option<String>,
+    /// Pixel size of the map (m), > 0; required with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pixel_size: Option<f64>,
+    /// Factor from the map's height unit to metres (e.g. `1e-9` for nm),
+    /// > 0; default 1. Only with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height_scale: Option<f64>,
+    /// Treat the map as periodic (remove only the mean, wrap neighbours);
+    /// default false. Only with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub periodic: Option<bool>,
+    /// Which model of the map the study uses: `"measured"` (default: an
+    /// exact sum over the measured summits, each with its own height and
+    /// radius) or `"moments"` (Gaussian GW with the parameters McCool's
+    /// relations give from the measured moments). Only with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub summits: Option<String>,
+    /// Also run the other model of the map and report its headline numbers
+    /// in the summary's `topography` object; default false. Only with
+    /// `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compare: Option<bool>,
+}
+
+/// The value of a summit statistic not given in the scene.
+fn unset() -> f64 {
+    f64::NAN
+}
+
+fn is_unset(x: &f64) -> bool {
+    x.is_nan()
 }
 
 fn default_distribution() -> String {
@@ -120,9 +251,35 @@ pub struct AdhesionSpec {
 pub struct LawSpec {
     /// `"auto"` (default: the planner picks the cheapest law that meets the
     /// tolerance for this Tabor parameter), `"hertz"`, `"dmt"`, `"jkr"`,
-    /// `"maugis"`, `"cos"` or `"calibrated"`.
+    /// `"maugis"`, `"cos"`, `"calibrated"`, the elastic-plastic
+    /// `"kogut-etsion"`, `"jackson-green"`, `"chang-etsion-bogy"`,
+    /// `"zhao-maietta-chang"` (need `materials.yield_strength`), or
+    /// `"shaped"` (JKR on the axisymmetric `profile`).
     #[serde(default = "default_law")]
     pub kind: String,
+    /// For `kind = "shaped"`: `"paraboloid"`, `"sphere"` (exact sphere),
+    /// `"cone"`, `"flat"`, `"power"` or `"tabulated"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub profile: Option<String>,
+    /// Shaped: sphere/paraboloid radius or flat-punch radius (m), > 0;
+    /// default `surface.radius`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    /// Shaped cone: `tan(beta)` of `f(r) = r tan(beta)`, > 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tan_angle: Option<f64>,
+    /// Shaped power law `f(r) = A r^n`: the exponent `n`, > 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub exponent: Option<f64>,
+    /// Shaped power law: the coefficient `A` (m^(1-n)), > 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coefficient: Option<f64>,
+    /// Shaped tabulated profile: radii `r` (m), ascending from 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub profile_r: Option<Vec<f64>>,
+    /// Shaped tabulated profile: heights `f(r)` (m) at `profile_r`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub profile_f: Option<Vec<f64>>,
 }
 
 fn default_law() -> String {
@@ -133,13 +290,23 @@ impl Default for LawSpec {
     fn default() -> Self {
         LawSpec {
             kind: default_law(),
+            profile: None,
+            radius: None,
+            tan_angle: None,
+            exponent: None,
+            coefficient: None,
+            profile_r: None,
+            profile_f: None,
         }
     }
 }
 
 /// `[program]`: approach to a closest separation or to a maximum load, then
-/// retract back out through the same separations.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+/// retract back out through the same separations. Instead of a closest
+/// separation or a maximum load, `separations` or `loads` list states of
+/// interest: the curve then runs to the closest (most loaded) of them and
+/// each listed state is reported on approach, in the listed order.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ProgramSpec {
     /// Closest separation of the flat from the mean summit plane (m).
@@ -149,6 +316,15 @@ pub struct ProgramSpec {
     /// Maximum compressive load on approach (N, > 0).
     #[serde(default)]
     pub max_load: Option<f64>,
+    /// Separations (m, from the mean summit height) at which to report the
+    /// approach state, in this order; at most [`MAX_LISTED_STATES`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub separations: Option<Vec<f64>>,
+    /// Compressive loads (N, > 0) at which to report the approach state
+    /// (the separation is solved for each), in this order; at most
+    /// [`MAX_LISTED_STATES`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub loads: Option<Vec<f64>>,
     /// Separation where the program starts and ends (m); default: where
     /// the first asperity comes within range of the flat.
     #[serde(default)]
@@ -157,6 +333,9 @@ pub struct ProgramSpec {
     #[serde(default = "default_points")]
     pub points: usize,
 }
+
+/// Most listed states a program may ask for.
+pub const MAX_LISTED_STATES: usize = 10_000;
 
 fn default_points() -> usize {
     200
@@ -181,6 +360,11 @@ pub struct OutputsSpec {
     /// Energy lost per approach–retract cycle (default false).
     #[serde(default)]
     pub hysteresis_energy: bool,
+    /// Contact resistance (default false; needs `[electrical]`): the curve
+    /// gains `resistance_ohm`, the summary the resistance at the closest
+    /// approach.
+    #[serde(default)]
+    pub resistance: bool,
 }
 
 fn yes() -> bool {
@@ -195,6 +379,7 @@ impl Default for OutputsSpec {
             count: true,
             pull_off: true,
             hysteresis_energy: false,
+            resistance: false,
         }
     }
 }

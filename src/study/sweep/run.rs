@@ -30,8 +30,13 @@ pub struct PointOutcome {
     pub resumed: usize,
     /// Points computed now.
     pub computed: usize,
-    /// Points whose scene failed (their row says why).
+    /// Points computed now whose scene failed (their row says why).
     pub failed: usize,
+    /// Rows of this shard, resumed or computed now, whose status is not
+    /// `ok`; when it equals `planned` the sweep produced nothing.
+    pub failed_rows: usize,
+    /// The status of the first failed row (lowest index) and its index.
+    pub first_failure: Option<(usize, String)>,
     /// Whether a half-written last row was repaired.
     pub repaired: bool,
     /// The results file.
@@ -65,11 +70,40 @@ fn output_columns(scene: &Scene) -> Vec<&'static str> {
             "mc_max_abs_z",
         ]);
     }
+    if o.resistance {
+        cols.push("resistance_ohm");
+    }
+    if scene.switch.is_some() {
+        cols.extend(["stiction_margin_N", "sticks"]);
+    }
     cols
 }
 
 fn cell(x: Option<f64>) -> String {
     x.map_or(String::new(), |v| format!("{v:e}"))
+}
+
+/// The value of output column `c` in a summary.
+fn value(s: &Summary, c: &str) -> Option<f64> {
+    match c {
+        "max_load_N" => s.max_load,
+        "max_area_m2" => s.max_area,
+        "max_count" => s.max_count,
+        "pull_off_N" => s.pull_off_load,
+        "pull_off_separation_m" => s.pull_off_separation,
+        "hysteresis_energy_J" => s.hysteresis_energy,
+        "mc_max_load_N" => s.montecarlo.as_ref().and_then(|m| m.max_load),
+        "mc_max_load_se_N" => s
+            .montecarlo
+            .as_ref()
+            .and_then(|m| m.max_load_standard_error),
+        "mc_pull_off_N" => s.montecarlo.as_ref().and_then(|m| m.pull_off_load),
+        "resistance_ohm" => s.resistance_ohm,
+        "stiction_margin_N" => s.stiction.as_ref().map(|t| t.margin_n),
+        // 1 when the switch sticks (margin < 0), else 0.
+        "sticks" => s.stiction.as_ref().map(|t| f64::from(u8::from(t.sticks))),
+        _ => s.montecarlo.as_ref().and_then(|m| m.max_abs_z),
+    }
 }
 
 /// Computes one point's row: `index, values.., seed, status, outputs..`.
@@ -99,27 +133,27 @@ fn point_row(
         let plan = Plan::new(&scene, PlanMode::Planned)?;
         let results = plan.run()?;
         Ok(Summary::new(&plan, &results))
-    })();
+    })()
+    .and_then(|s| {
+        // A value that is not finite is never written as a result.
+        let bad = cols
+            .iter()
+            .map(|c| (c, value(&s, c)))
+            .find(|(_, v)| v.is_some_and(|x| !x.is_finite()));
+        match bad {
+            Some((c, Some(v))) => Err(Error::invalid(
+                *c,
+                format!("{v} is not finite (the scene's magnitudes overflow)"),
+            )),
+            _ => Ok(s),
+        }
+    });
     let ok = outcome.is_ok();
     match outcome {
         Ok(s) => {
             row.push("ok".into());
             for c in cols {
-                row.push(cell(match *c {
-                    "max_load_N" => s.max_load,
-                    "max_area_m2" => s.max_area,
-                    "max_count" => s.max_count,
-                    "pull_off_N" => s.pull_off_load,
-                    "pull_off_separation_m" => s.pull_off_separation,
-                    "hysteresis_energy_J" => s.hysteresis_energy,
-                    "mc_max_load_N" => s.montecarlo.as_ref().and_then(|m| m.max_load),
-                    "mc_max_load_se_N" => s
-                        .montecarlo
-                        .as_ref()
-                        .and_then(|m| m.max_load_standard_error),
-                    "mc_pull_off_N" => s.montecarlo.as_ref().and_then(|m| m.pull_off_load),
-                    _ => s.montecarlo.as_ref().and_then(|m| m.max_abs_z),
-                }));
+                row.push(cell(value(&s, c)));
             }
         }
         Err(e) => {
@@ -219,12 +253,24 @@ pub fn run_sweep(
     let file = file
         .into_inner()
         .map_err(|_| Error::invalid("out", "results file lock poisoned"))?;
+    // Status column: after the index, the varied values and the seed.
+    let status_col = spec.vary.len() + 2;
+    let failures: Vec<(usize, String)> = file
+        .rows()
+        .filter(|(i, _)| options.shard.is_none_or(|s| s.contains(*i)))
+        .filter_map(|(i, r)| {
+            let status = r.split(',').nth(status_col).unwrap_or("");
+            (status != "ok").then(|| (i, status.to_string()))
+        })
+        .collect();
     let path = file.finish(&header)?;
     Ok(PointOutcome {
         planned: total,
         resumed,
         computed: todo.len(),
         failed: failed.into_inner(),
+        failed_rows: failures.len(),
+        first_failure: failures.into_iter().next(),
         repaired,
         path,
     })

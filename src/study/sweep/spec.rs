@@ -16,13 +16,15 @@ pub struct Vary {
     pub from: f64,
     /// Last value.
     pub to: f64,
-    /// Grid points (ignored by Latin-hypercube designs).
+    /// Grid points; 0 when `N` was not given (allowed only in
+    /// Latin-hypercube designs, which do not use it).
     pub n: usize,
 }
 
 impl Vary {
     /// Parses `PATH=FROM:TO:N` (or `PATH=FROM:TO` for Latin-hypercube
-    /// designs, where `N` is not used).
+    /// designs, where `N` is not used: it is then recorded as 0, and
+    /// [`SweepSpec::validate`] refuses it in a grid).
     ///
     /// # Errors
     /// [`Error::Invalid`] naming `--vary` with the text and what is wrong.
@@ -49,7 +51,7 @@ impl Vary {
                 .ok()
                 .filter(|&n| n >= 1)
                 .ok_or_else(|| bad(&format!("N = {s:?} must be a whole number >= 1")))?,
-            None => 1,
+            None => 0,
         };
         Ok(Vary {
             path: path.trim().to_string(),
@@ -138,6 +140,16 @@ impl SweepSpec {
                 return Err(Error::invalid(
                     "vary",
                     format!("{} is varied twice", v.path),
+                ));
+            }
+            if v.n == 0 && matches!(self.design, Design::Grid) {
+                return Err(Error::invalid(
+                    "vary",
+                    format!(
+                        "{}={}:{} has no N: a grid needs PATH=FROM:TO:N \
+                         (or give --samples K for a Latin hypercube)",
+                        v.path, v.from, v.to
+                    ),
                 ));
             }
             if self.log && !(v.from > 0.0 && v.to > 0.0) {
@@ -354,6 +366,13 @@ mod tests {
         spec.vary.push(Vary::parse("a=0:1:2").unwrap());
         assert_eq!(spec.validate().unwrap_err().field(), Some("vary"));
         spec.vary.pop();
+        // A grid field without N would silently run one point.
+        spec.vary = vec![Vary::parse("a=0:1").unwrap()];
+        let e = spec.validate().unwrap_err();
+        assert_eq!(e.field(), Some("vary"));
+        assert!(e.to_string().contains("has no N"), "{e}");
+        spec.design = Design::Latin { samples: 3 };
+        spec.validate().unwrap();
         spec.design = Design::Latin { samples: 0 };
         assert_eq!(spec.validate().unwrap_err().field(), Some("samples"));
         for bad in ["0/3", "4/3", "x/2", "1"] {

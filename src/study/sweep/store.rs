@@ -39,9 +39,53 @@ impl SweepMeta {
 pub struct ResultsFile {
     path: PathBuf,
     file: File,
+    /// The directory lock, held until this value is dropped.
+    _lock: DirLock,
     done: BTreeMap<usize, String>,
     /// Whether a half-written last line was found and dropped on opening.
     pub repaired: bool,
+}
+
+/// An exclusive OS lock on `DIR/sweep.lock` (`flock` on Unix), held while
+/// a sweep or a merge writes into `DIR`, so two runs never interleave
+/// their rows or their `sweep.json`. The operating system releases it when
+/// the process ends, however it ends (`kill -9` included), so a stale lock
+/// never blocks a later run. The (empty) lock file is left in place:
+/// removing it would let a third run lock a fresh file while a second still
+/// holds the old one.
+#[derive(Debug)]
+pub struct DirLock {
+    _file: File,
+}
+
+/// Name of the lock file inside a results directory.
+pub const LOCK_FILE: &str = "sweep.lock";
+
+impl DirLock {
+    /// Creates `dir` if needed and takes its lock without waiting.
+    ///
+    /// # Errors
+    /// [`Error::Io`] naming the directory when another process holds the
+    /// lock (the message says so) or the lock file cannot be opened.
+    pub fn acquire(dir: &Path) -> Result<DirLock> {
+        std::fs::create_dir_all(dir).map_err(|e| io_err(dir, e))?;
+        let path = dir.join(LOCK_FILE);
+        let file = OpenOptions::new()
+            .create(true)
+            .truncate(false)
+            .write(true)
+            .open(&path)
+            .map_err(|e| io_err(&path, e))?;
+        match file.try_lock() {
+            Ok(()) => Ok(DirLock { _file: file }),
+            Err(std::fs::TryLockError::WouldBlock) => Err(io_err(
+                dir,
+                "another asperity sweep or merge is writing into this directory \
+                 (it holds sweep.lock); wait for it to finish or use another --out",
+            )),
+            Err(std::fs::TryLockError::Error(e)) => Err(io_err(&path, e)),
+        }
+    }
 }
 
 /// A file-system failure: not the input's fault.
@@ -64,10 +108,19 @@ fn row_index(line: &str, fields: usize) -> Option<usize> {
 }
 
 /// Reads complete rows of a results file whose first line must be
-/// `header`; returns them by index and whether a torn last line was found
-/// (and the byte length of the intact part).
-fn read_rows(path: &Path, header: &str) -> Result<(BTreeMap<usize, String>, bool, usize)> {
+/// `header` and whose indices must be below `total`; returns them by index
+/// and whether a torn last line was found (and the byte length of the
+/// intact part). Content errors are [`Error::Invalid`] about `field`
+/// (`out` for the directory being resumed, `merge` for an input shard),
+/// naming the file.
+fn read_rows(
+    path: &Path,
+    header: &str,
+    total: usize,
+    field: &str,
+) -> Result<(BTreeMap<usize, String>, bool, usize)> {
     let text = std::fs::read_to_string(path).map_err(|e| io_err(path, e))?;
+    let bad = |why: String| Error::invalid(field, format!("{}: {why}", path.display()));
     let mut rows = BTreeMap::new();
     let fields = header.split(',').count();
     let mut intact = 0;
@@ -77,13 +130,19 @@ fn read_rows(path: &Path, header: &str) -> Result<(BTreeMap<usize, String>, bool
         let line = chunk.trim_end_matches('\n');
         if i == 0 {
             if line != header {
-                return Err(bad_dir(
-                    path,
-                    format!("header {line:?} differs from this sweep's {header:?}"),
-                ));
+                return Err(bad(format!(
+                    "header {line:?} differs from this sweep's {header:?}"
+                )));
             }
         } else {
             match (complete, row_index(line, fields)) {
+                (true, Some(idx)) if idx >= total => {
+                    return Err(bad(format!(
+                        "line {}: point {idx} lies outside the sweep (points 0 ..= {})",
+                        i + 1,
+                        total.saturating_sub(1)
+                    )))
+                }
                 (true, Some(idx)) => {
                     rows.entry(idx).or_insert_with(|| line.to_string());
                 }
@@ -92,10 +151,7 @@ fn read_rows(path: &Path, header: &str) -> Result<(BTreeMap<usize, String>, bool
                     break;
                 }
                 (true, None) => {
-                    return Err(bad_dir(
-                        path,
-                        format!("line {} is not a result row: {line:?}", i + 1),
-                    ))
+                    return Err(bad(format!("line {} is not a result row: {line:?}", i + 1)))
                 }
             }
         }
@@ -107,11 +163,14 @@ fn read_rows(path: &Path, header: &str) -> Result<(BTreeMap<usize, String>, bool
 impl ResultsFile {
     /// Opens (or creates) `dir/results.csv` for the sweep `meta`; refuses a
     /// directory holding a different sweep; drops a half-written last line.
+    /// The directory stays locked ([`DirLock`]) until the file is dropped.
     ///
     /// # Errors
-    /// [`Error::Invalid`] naming `--out`.
+    /// [`Error::Invalid`] naming `out` (a different sweep, a row that is not
+    /// this sweep's); [`Error::Io`] when another process holds the lock or
+    /// a file cannot be read or written.
     pub fn open(dir: &Path, meta: &SweepMeta) -> Result<ResultsFile> {
-        std::fs::create_dir_all(dir).map_err(|e| io_err(dir, e))?;
+        let lock = DirLock::acquire(dir)?;
         let meta_path = dir.join("sweep.json");
         if meta_path.exists() {
             let old: SweepMeta = serde_json::from_str(
@@ -130,7 +189,7 @@ impl ResultsFile {
         }
         let path = dir.join("results.csv");
         let (done, repaired) = if path.exists() {
-            let (rows, torn, intact) = read_rows(&path, &meta.header)?;
+            let (rows, torn, intact) = read_rows(&path, &meta.header, meta.total, "out")?;
             if torn {
                 let f = OpenOptions::new()
                     .write(true)
@@ -150,6 +209,7 @@ impl ResultsFile {
         Ok(ResultsFile {
             path,
             file,
+            _lock: lock,
             done,
             repaired,
         })
@@ -158,6 +218,11 @@ impl ResultsFile {
     /// Whether point `index` is already in the file.
     pub fn is_done(&self, index: usize) -> bool {
         self.done.contains_key(&index)
+    }
+
+    /// The rows present (already done or appended), by point index.
+    pub fn rows(&self) -> impl Iterator<Item = (usize, &str)> {
+        self.done.iter().map(|(i, r)| (*i, r.as_str()))
     }
 
     /// Rows already present.
@@ -203,47 +268,62 @@ fn write_sorted(path: &Path, header: &str, rows: &BTreeMap<usize, String>) -> Re
 }
 
 /// Joins the results of shard directories into `out`, checking that they
-/// belong to one sweep, that no point appears twice and none is missing.
-/// The merged `results.csv` equals the file of an unsharded run.
+/// belong to one sweep, that every row lies inside the sweep and inside
+/// the shard its directory says it holds, that no point appears twice and
+/// none is missing. The merged `results.csv` equals the file of an
+/// unsharded run. `out` is locked ([`DirLock`]) while it is written.
 ///
 /// # Errors
-/// [`Error::Invalid`] naming `merge` with the duplicate or missing points,
-/// or `--out` on I/O failure.
+/// [`Error::Invalid`] naming `merge` and the offending shard directory
+/// (bad, foreign, duplicate or missing rows); [`Error::Io`] when a file
+/// cannot be read or written (or `out` is locked by another run).
 pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<PathBuf> {
     if dirs.is_empty() {
         return Err(Error::invalid("merge", "no directories to merge"));
     }
+    let shard_err = |dir: &Path, why: String| {
+        Error::invalid("merge", format!("shard {}: {why}", dir.display()))
+    };
     let mut first: Option<SweepMeta> = None;
     let mut rows: BTreeMap<usize, (String, &Path)> = BTreeMap::new();
     for dir in dirs {
         let meta_path = dir.join("sweep.json");
-        let meta: SweepMeta = serde_json::from_str(
-            &std::fs::read_to_string(&meta_path).map_err(|e| io_err(&meta_path, e))?,
-        )
-        .map_err(|e| bad_dir(&meta_path, e))?;
+        let text = std::fs::read_to_string(&meta_path).map_err(|e| {
+            shard_err(
+                dir,
+                format!("cannot read sweep.json ({e}): not a sweep directory"),
+            )
+        })?;
+        let meta: SweepMeta =
+            serde_json::from_str(&text).map_err(|e| shard_err(dir, format!("sweep.json: {e}")))?;
         if let Some(f) = &first {
             if !f.same_sweep(&meta) {
-                return Err(Error::invalid(
-                    "merge",
-                    format!(
-                        "{} holds a different sweep from {}",
-                        dir.display(),
-                        dirs[0].display()
-                    ),
+                return Err(shard_err(
+                    dir,
+                    format!("holds a different sweep from {}", dirs[0].display()),
                 ));
             }
         }
-        let (part, torn, _) = read_rows(&dir.join("results.csv"), &meta.header)?;
+        let (part, torn, _) =
+            read_rows(&dir.join("results.csv"), &meta.header, meta.total, "merge").map_err(
+                |e| match e {
+                    Error::Invalid { reason, .. } => shard_err(dir, reason),
+                    other => other,
+                },
+            )?;
         if torn {
-            return Err(Error::invalid(
-                "merge",
-                format!(
-                    "{} ends with a half-written row: rerun that shard first",
-                    dir.display()
-                ),
+            return Err(shard_err(
+                dir,
+                "ends with a half-written row: rerun that shard first".into(),
             ));
         }
         for (idx, row) in part {
+            if let Some(s) = meta.shard.filter(|s| !s.contains(idx)) {
+                return Err(shard_err(
+                    dir,
+                    format!("point {idx} does not belong to its shard {}/{}", s.k, s.n),
+                ));
+            }
             if let Some((_, other)) = rows.get(&idx) {
                 return Err(Error::invalid(
                     "merge",
@@ -272,7 +352,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<PathBuf> {
             ),
         ));
     }
-    std::fs::create_dir_all(out).map_err(|e| io_err(out, e))?;
+    let _lock = DirLock::acquire(out)?;
     let merged = SweepMeta {
         shard: None,
         ..meta.clone()
@@ -348,6 +428,35 @@ mod tests {
     }
 
     #[test]
+    fn a_locked_directory_is_refused_and_released_on_drop() {
+        let dir = tmp("lock");
+        let m = meta(None);
+        let f = ResultsFile::open(&dir, &m).unwrap();
+        // flock locks belong to the open file, so a second open in this
+        // process conflicts exactly as another process would.
+        let e = ResultsFile::open(&dir, &m).unwrap_err();
+        assert!(matches!(e, Error::Io { .. }), "{e}");
+        assert!(e.to_string().contains("another asperity sweep"), "{e}");
+        drop(f);
+        ResultsFile::open(&dir, &m).unwrap();
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn resume_refuses_a_row_outside_the_sweep() {
+        let dir = tmp("outside");
+        let m = meta(None);
+        drop(ResultsFile::open(&dir, &m).unwrap());
+        let path = dir.join("results.csv");
+        let text = std::fs::read_to_string(&path).unwrap() + "4,1,6,ok,4e0\n";
+        std::fs::write(&path, text).unwrap();
+        let e = ResultsFile::open(&dir, &m).unwrap_err();
+        assert_eq!(e.field(), Some("out"));
+        assert!(e.to_string().contains("point 4 lies outside"), "{e}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
     fn merge_checks_gaps_and_duplicates() {
         let (a, b, out) = (tmp("a"), tmp("b"), tmp("out"));
         for (dir, k, rows) in [(&a, 1, [0usize, 2]), (&b, 2, [1, 3])] {
@@ -366,6 +475,32 @@ mod tests {
         let e = merge(&[a.clone(), a.clone()], &out).unwrap_err();
         assert!(e.to_string().contains("point 0 is in both"), "{e}");
         assert!(merge(&[], &out).is_err());
+        // A row outside the sweep, or outside its shard, names its shard
+        // (not --out).
+        let csv = b.join("results.csv");
+        let good = std::fs::read_to_string(&csv).unwrap();
+        std::fs::write(&csv, format!("{good}9,0,0,ok,1e0\n")).unwrap();
+        let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
+        assert_eq!(e.field(), Some("merge"), "{e}");
+        assert!(
+            e.to_string().contains(&format!("shard {}", b.display())),
+            "{e}"
+        );
+        assert!(
+            e.to_string().contains("point 9 lies outside the sweep"),
+            "{e}"
+        );
+        std::fs::write(&csv, good.replace("1,0,0,ok", "2,0,0,ok")).unwrap();
+        let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("point 2 does not belong to its shard 2/2"),
+            "{e}"
+        );
+        std::fs::remove_file(b.join("sweep.json")).unwrap();
+        let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
+        assert_eq!(e.field(), Some("merge"), "{e}");
+        assert!(e.to_string().contains("not a sweep directory"), "{e}");
         for d in [a, b, out] {
             std::fs::remove_dir_all(d).ok();
         }

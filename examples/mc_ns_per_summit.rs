@@ -1,0 +1,113 @@
+//! CPU nanoseconds per summit of `MonteCarlo::state` on one thread, per law:
+//! `cargo run --release --example mc_ns_per_summit [repeats]`.
+//!
+//! 1e6 summits (exponential heights, sigma = 5 nm, R = 1 um), every summit
+//! in range (`d = -sigma`), load + area + count, on a 1-thread rayon pool.
+//! Process CPU time from `/proc/self/stat` (Linux; utime + stime) around
+//! the repeated states, so other processes' load does not count; the
+//! population is drawn before the clock starts. The same work as
+//! `benches/peers/montecarlo_numpy.py`.
+use asperity::heights::Exponential;
+use asperity::law::plastic::build;
+use asperity::law::{Hertz, Jkr, LawKind, RadiusScaling};
+use asperity::loading::{History, LoadingModel, Observables};
+use asperity::material::plastic::{Plasticity, Variant};
+use asperity::material::{Adhesion, AsperityContact};
+use asperity::montecarlo::*;
+use std::hint::black_box;
+use std::sync::Arc;
+use std::time::Instant;
+
+const R: f64 = 1e-6;
+const SIGMA: f64 = 5e-9;
+const N: usize = 1_000_000;
+
+/// utime + stime of this process (s), from /proc/self/stat.
+fn cpu_seconds() -> f64 {
+    let s = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    let after = s.rsplit_once(')').map_or("", |x| x.1);
+    let f: Vec<&str> = after.split_whitespace().collect();
+    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
+    // Fields 14 and 15 (utime, stime) are at 11 and 12 after the ')'.
+    (ticks(11) + ticks(12)) / 100.0
+}
+
+fn main() {
+    let repeats: usize = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(1);
+    let spec = PopulationSpec::new(N, SIGMA, RadiusSpec::Fixed(R), 1).unwrap();
+    let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
+    let contact = AsperityContact::new(R, 4.8e10, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
+    let laws: Vec<(&str, SummitLaw, usize)> = vec![
+        (
+            "hertz",
+            SummitLaw::scaled(
+                Arc::new(Hertz::new(R, 4.8e10).unwrap()),
+                R,
+                RadiusScaling::MAUGIS,
+            )
+            .unwrap(),
+            400,
+        ),
+        (
+            "jkr",
+            SummitLaw::scaled(
+                Arc::new(Jkr::new(R, 4.8e10, 0.5).unwrap()),
+                R,
+                RadiusScaling::MAUGIS,
+            )
+            .unwrap(),
+            10,
+        ),
+        (
+            "tabulated-md",
+            SummitLaw::from_kind(LawKind::Maugis, &contact).unwrap(),
+            40,
+        ),
+        (
+            "kogut-etsion",
+            SummitLaw::fixed(
+                build(Variant::KogutEtsion, R, 4.8e10, Plasticity::gold())
+                    .unwrap()
+                    .as_law(),
+                R,
+            )
+            .unwrap(),
+            40,
+        ),
+    ];
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
+    println!("law, history, CPU ns/summit (1 thread), wall ns/summit");
+    for (name, law, k) in laws {
+        let mc = MonteCarlo::new(pop.clone(), law).unwrap();
+        let k = k * repeats;
+        for (hname, history) in [
+            ("approach", History::Approach),
+            (
+                "retract",
+                History::Retract {
+                    closest: -2.0 * SIGMA,
+                },
+            ),
+        ] {
+            pool.install(|| {
+                black_box(mc.state(-SIGMA, history, &Observables::ALL).unwrap());
+                let (c0, t0) = (cpu_seconds(), Instant::now());
+                for _ in 0..k {
+                    black_box(
+                        mc.state(black_box(-SIGMA), history, &Observables::ALL)
+                            .unwrap(),
+                    );
+                }
+                let (cpu, wall) = (cpu_seconds() - c0, t0.elapsed().as_secs_f64());
+                let per = 1e9 / (k * N) as f64;
+                println!("{name:14} {hname:9} {:8.2} {:8.2}", cpu * per, wall * per);
+            });
+        }
+    }
+}

@@ -1,0 +1,110 @@
+//! The spot sums as per-asperity observables, so that any law and both
+//! integrators (GW integral, Monte Carlo sum) give a contact resistance.
+//!
+//! A summit in contact with radius `a_i` is a spot of conductance
+//! `G_i = 1/R(a_i)` ([`SpotResistance::spot_conductance`]). The parallel
+//! resistance needs `sum G_i`, Greenwood's interaction weights also
+//! `sum G_i^2` ([`SpotSums`]); the count of spots is the `count` total.
+
+use super::gw::{ContactResistance, Interaction, SpotSums};
+use super::spot::SpotResistance;
+use crate::error::Result;
+use crate::law::ContactState;
+use crate::loading::{Observable, Observables, PerAsperity, Totals};
+use std::sync::Arc;
+
+/// `G_i` (S) or `G_i^2` (S^2) of one asperity's spot.
+#[derive(Debug, Clone, Copy)]
+pub struct SpotConductance {
+    spot: SpotResistance,
+    squared: bool,
+}
+
+impl PerAsperity for SpotConductance {
+    fn name(&self) -> &str {
+        if self.squared {
+            "spot_conductance_sq_S2"
+        } else {
+            "spot_conductance_S"
+        }
+    }
+
+    #[inline]
+    fn value(&self, state: &ContactState) -> f64 {
+        let g = self.spot.spot_conductance(state.radius);
+        if self.squared {
+            g * g
+        } else {
+            g
+        }
+    }
+}
+
+/// The observables a resistance needs, and how to turn totals into one.
+#[derive(Debug, Clone)]
+pub struct ResistanceObservables {
+    spot: SpotResistance,
+    interaction: Interaction,
+    side: f64,
+    conductance: Observable,
+    conductance_sq: Observable,
+}
+
+impl ResistanceObservables {
+    /// For spots of `spot`, with `interaction` in a square apparent area
+    /// of side `side` (m).
+    pub fn new(spot: SpotResistance, interaction: Interaction, side: f64) -> Self {
+        let o = |squared| Observable::Custom(Arc::new(SpotConductance { spot, squared }));
+        ResistanceObservables {
+            spot,
+            interaction,
+            side,
+            conductance: o(false),
+            conductance_sq: o(true),
+        }
+    }
+
+    /// `observables` plus the count and the two conductance sums.
+    ///
+    /// # Errors
+    /// When `observables` has no free extra slots left.
+    pub fn add_to(&self, observables: Observables) -> Result<Observables> {
+        observables
+            .with(Observable::Count)?
+            .with(self.conductance.clone())?
+            .with(self.conductance_sq.clone())
+    }
+
+    /// The contact resistance from totals computed with
+    /// [`ResistanceObservables::add_to`]'s observables (`None` when they
+    /// are missing); `inf` without contact.
+    pub fn resistance(
+        &self,
+        observables: &Observables,
+        totals: &Totals,
+    ) -> Option<ContactResistance> {
+        let g = totals.get(observables.slot(&self.conductance)?)?;
+        let g2 = totals.get(observables.slot(&self.conductance_sq)?)?;
+        let sums = SpotSums {
+            contacts: totals.count()?,
+            conductance: g,
+            conductance_sq: g2,
+        };
+        Some(ContactResistance::from_sums(
+            &sums,
+            &self.spot,
+            self.interaction,
+            self.side,
+        ))
+    }
+
+    /// The per-spot resistance law.
+    pub fn spot(&self) -> &SpotResistance {
+        &self.spot
+    }
+
+    /// The interaction asked for.
+    pub fn interaction(&self) -> Interaction {
+        self.interaction
+    }
+}

@@ -1,0 +1,75 @@
+//! Charts of the optional features: resistance against force (log-log)
+//! with `[electrical]`, and load against real area for an elastic-plastic
+//! law beside the elastic summits it reduces to as `psi -> 0` (JKR with
+//! adhesion, Hertz without).
+
+use super::resistance_of;
+use crate::loading::Curve;
+use crate::study::plan::Plan;
+use crate::study::plot::plastic::load_area_chart;
+use crate::study::plot::{Chart, Series};
+use crate::study::run::Results;
+
+/// A feature chart: file name, chart, and whether its axes are logarithmic.
+pub type FeatureChart = (String, Chart, bool);
+
+/// The feature charts of a run.
+pub fn feature_charts(plan: &Plan, results: &Results) -> Vec<FeatureChart> {
+    let title = plan.scene.title.clone().unwrap_or_default();
+    let mut out = Vec::new();
+    if plan.resistance.is_some() && plan.scene.outputs.resistance {
+        let points = |leg: &[crate::loading::State]| -> Vec<(f64, f64)> {
+            leg.iter()
+                .filter_map(|s| Some((s.load()?, resistance_of(plan, s)?)))
+                .collect()
+        };
+        let mut series = vec![Series {
+            label: "approach".into(),
+            points: points(&results.curve.approach),
+        }];
+        if !results.listed.is_empty() {
+            series.push(Series {
+                label: "listed states".into(),
+                points: points(&results.listed),
+            });
+        }
+        out.push((
+            "resistance_force.svg".into(),
+            Chart {
+                title: format!(
+                    "{title}: contact resistance against force ({})",
+                    plan.law.name
+                ),
+                x_label: "force P (N), compressive".into(),
+                y_label: "contact resistance R (Ohm)".into(),
+                series,
+                y_range: None,
+            },
+            true,
+        ));
+    }
+    if let Some(elastic) = &results.elastic_approach {
+        let c = &results.curve;
+        let hertz = Curve {
+            program: c.program,
+            approach: elastic.clone(),
+            retract: Vec::new(),
+        };
+        let chart = load_area_chart(
+            &format!("{title}: load against real area, elastic vs elastic-plastic"),
+            &[
+                (plan.law.name.clone(), c.clone()),
+                (
+                    if plan.contact.adhesion.work() > 0.0 {
+                        "jkr (elastic)".into()
+                    } else {
+                        "hertz (elastic)".into()
+                    },
+                    hertz,
+                ),
+            ],
+        );
+        out.push(("load_area_plastic.svg".into(), chart, false));
+    }
+    out
+}

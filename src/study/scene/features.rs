@@ -1,0 +1,435 @@
+//! The scene's optional features: the program's target (closest separation,
+//! maximum load, or listed separations/loads), plastic materials, the law's
+//! profile keys, `[electrical]` and `[switch]`. Each is validated here,
+//! naming the dotted field, and built into core objects.
+
+use super::schema::{ElectricalSpec, LawSpec, Scene, MAX_LISTED_STATES};
+use crate::axisym::Profile;
+use crate::electrical::{Conductor, Heating, Interaction, SpotResistance, Spreading, Switch};
+use crate::error::{finite, non_negative, positive, Allowed, Error, Result};
+use crate::material::plastic::{Plasticity, Variant};
+
+/// Where the program's approach stops, as the scene gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ProgramTarget {
+    /// `closest_separation` (m).
+    Separation(f64),
+    /// `max_load` (N).
+    Load(f64),
+    /// `separations` (m), in the listed order.
+    Separations(Vec<f64>),
+    /// `loads` (N), in the listed order.
+    Loads(Vec<f64>),
+}
+
+/// Which family the scene's `law.kind` belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LawFamily {
+    /// An elastic analytic law, `auto` or `calibrated`.
+    Elastic,
+    /// An elastic-plastic law.
+    Plastic(Variant),
+    /// JKR on an axisymmetric profile.
+    Shaped,
+}
+
+/// Elastic law names a scene may give (besides the plastic ones and
+/// `shaped`).
+pub const ELASTIC_LAWS: [&str; 7] = ["auto", "hertz", "dmt", "jkr", "maugis", "cos", "calibrated"];
+
+/// The profile names of `law.profile`.
+pub const PROFILES: [&str; 6] = ["paraboloid", "sphere", "cone", "flat", "power", "tabulated"];
+
+impl LawSpec {
+    /// The family of `kind`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `law.kind` for unknown names.
+    pub fn family(&self) -> Result<LawFamily> {
+        let k = self.kind.as_str();
+        if ELASTIC_LAWS.contains(&k) {
+            return Ok(LawFamily::Elastic);
+        }
+        if k == "shaped" {
+            return Ok(LawFamily::Shaped);
+        }
+        Variant::parse(k).map(LawFamily::Plastic).map_err(|_| {
+            let mut known: Vec<&str> = ELASTIC_LAWS.to_vec();
+            known.extend(Variant::ALL.iter().map(|v| v.name()));
+            known.push("shaped");
+            Error::invalid(
+                "law.kind",
+                format!("unknown law {:?}; known: {}", self.kind, known.join(", ")),
+            )
+        })
+    }
+
+    /// The profile keys that are given, by scene name.
+    fn given_profile_keys(&self) -> Vec<&'static str> {
+        let mut keys = Vec::new();
+        for (name, given) in [
+            ("profile", self.profile.is_some()),
+            ("radius", self.radius.is_some()),
+            ("tan_angle", self.tan_angle.is_some()),
+            ("exponent", self.exponent.is_some()),
+            ("coefficient", self.coefficient.is_some()),
+            ("profile_r", self.profile_r.is_some()),
+            ("profile_f", self.profile_f.is_some()),
+        ] {
+            if given {
+                keys.push(name);
+            }
+        }
+        keys
+    }
+
+    /// The axisymmetric profile of a shaped law (`default_radius` for a
+    /// sphere, paraboloid or flat punch without `law.radius`).
+    ///
+    /// # Errors
+    /// Missing or bad profile keys, and keys the profile does not use,
+    /// naming the `law.` field.
+    pub fn profile(&self, default_radius: f64) -> Result<Profile> {
+        let name = self.profile.as_deref().ok_or_else(|| {
+            Error::invalid(
+                "law.profile",
+                format!(
+                    "required for kind = \"shaped\"; one of {}",
+                    PROFILES.join(", ")
+                ),
+            )
+        })?;
+        let uses: &[&str] = match name {
+            "paraboloid" | "sphere" | "flat" => &["profile", "radius"],
+            "cone" => &["profile", "tan_angle"],
+            "power" => &["profile", "exponent", "coefficient"],
+            "tabulated" => &["profile", "profile_r", "profile_f"],
+            other => {
+                return Err(Error::invalid(
+                    "law.profile",
+                    format!("unknown profile {other:?}; known: {}", PROFILES.join(", ")),
+                ))
+            }
+        };
+        if let Some(k) = self.given_profile_keys().iter().find(|k| !uses.contains(k)) {
+            return Err(Error::invalid(
+                format!("law.{k}"),
+                format!(
+                    "does not apply to profile = {name:?} (it uses {})",
+                    uses.join(", ")
+                ),
+            ));
+        }
+        let need = |key: &str, x: Option<f64>| {
+            x.ok_or_else(|| {
+                Error::invalid(
+                    format!("law.{key}"),
+                    format!("required for profile = {name:?}"),
+                )
+            })
+        };
+        let radius = || -> Result<f64> {
+            let r = self.radius.unwrap_or(default_radius);
+            positive("law.radius", r)
+        };
+        let profile = match name {
+            "paraboloid" => Profile::paraboloid(radius()?),
+            "sphere" => Profile::sphere(radius()?),
+            "flat" => Profile::flat(radius()?),
+            "cone" => Profile::cone(positive(
+                "law.tan_angle",
+                need("tan_angle", self.tan_angle)?,
+            )?),
+            "power" => Profile::power(
+                positive("law.coefficient", need("coefficient", self.coefficient)?)?,
+                positive("law.exponent", need("exponent", self.exponent)?)?,
+            ),
+            _ => {
+                let r = self.profile_r.clone().ok_or_else(|| {
+                    Error::invalid("law.profile_r", "required for profile = \"tabulated\"")
+                })?;
+                let f = self.profile_f.clone().ok_or_else(|| {
+                    Error::invalid("law.profile_f", "required for profile = \"tabulated\"")
+                })?;
+                Profile::tabulated(r, f)
+            }
+        };
+        profile.map_err(|e| match e.field() {
+            Some(f) if f.starts_with("law.") => e,
+            Some("tan_angle") => e.renamed("law.tan_angle"),
+            Some("exponent") => e.renamed("law.exponent"),
+            Some("coefficient") => e.renamed("law.coefficient"),
+            Some("radius") => e.renamed("law.radius"),
+            Some("r") | Some("profile_r") => e.renamed("law.profile_r"),
+            Some("f") | Some("profile_f") => e.renamed("law.profile_f"),
+            _ => e.in_table("law"),
+        })
+    }
+}
+
+impl Scene {
+    /// The program's target.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `program` unless exactly one of
+    /// `closest_separation`, `max_load`, `separations`, `loads` is given;
+    /// bad values naming the field.
+    pub fn program_target(&self) -> Result<ProgramTarget> {
+        let p = &self.program;
+        let given: Vec<&str> = [
+            ("closest_separation", p.closest_separation.is_some()),
+            ("max_load", p.max_load.is_some()),
+            ("separations", p.separations.is_some()),
+            ("loads", p.loads.is_some()),
+        ]
+        .iter()
+        .filter(|(_, g)| *g)
+        .map(|(n, _)| *n)
+        .collect();
+        if given.len() != 1 {
+            return Err(Error::invalid(
+                "program",
+                if given.is_empty() {
+                    "missing closest_separation, max_load, separations or loads (one is required)"
+                        .to_string()
+                } else {
+                    format!(
+                        "give one of closest_separation, max_load, separations, loads, not {}",
+                        given.join(" and ")
+                    )
+                },
+            ));
+        }
+        let list = |name: &str, xs: &[f64], check: &dyn Fn(&str, f64) -> Result<f64>| {
+            if xs.is_empty() || xs.len() > MAX_LISTED_STATES {
+                return Err(Error::invalid(
+                    format!("program.{name}"),
+                    format!("needs 1 ..= {MAX_LISTED_STATES} values, got {}", xs.len()),
+                ));
+            }
+            for &x in xs {
+                check(&format!("program.{name}"), x)?;
+            }
+            Ok(xs.to_vec())
+        };
+        Ok(
+            match (p.closest_separation, p.max_load, &p.separations, &p.loads) {
+                (Some(d), ..) => {
+                    ProgramTarget::Separation(finite("program.closest_separation", d)?)
+                }
+                (_, Some(l), ..) => ProgramTarget::Load(positive("program.max_load", l)?),
+                (_, _, Some(xs), _) => {
+                    ProgramTarget::Separations(list("separations", xs, &finite)?)
+                }
+                (_, _, _, Some(xs)) => ProgramTarget::Loads(list("loads", xs, &positive)?),
+                _ => unreachable!("exactly one target was counted"),
+            },
+        )
+    }
+
+    /// The plastic data of the yielding body, if a yield strength is given.
+    /// Its Poisson ratio is the softer body's (the lower Young's modulus;
+    /// body 1 on a tie).
+    ///
+    /// # Errors
+    /// As [`Plasticity::from_optional`], naming `materials.yield_strength`
+    /// or `materials.hardness`; a plastic law without a yield strength.
+    pub fn plasticity(&self) -> Result<Option<Plasticity>> {
+        let m = &self.materials;
+        let nu = if m.e2 < m.e1 { m.nu2 } else { m.nu1 };
+        let family = self.law.family()?;
+        Plasticity::from_optional(
+            &self.law.kind,
+            matches!(family, LawFamily::Plastic(_)),
+            m.yield_strength,
+            m.hardness,
+            nu,
+        )
+        .map_err(|e| match e.field() {
+            Some("hardness") => e.renamed("materials.hardness"),
+            Some("poisson_ratio") => e.renamed(if m.e2 < m.e1 {
+                "materials.nu2"
+            } else {
+                "materials.nu1"
+            }),
+            _ => e.renamed("materials.yield_strength"),
+        })
+    }
+
+    /// Validates the optional features (program target, plastic materials,
+    /// law keys, `[electrical]`, `[switch]`, `outputs.resistance`).
+    ///
+    /// # Errors
+    /// The first bad value, naming its dotted field.
+    pub(super) fn validate_features(&self) -> Result<()> {
+        let target = self.program_target()?;
+        if let (Some(start), ProgramTarget::Separations(xs)) =
+            (self.program.start_separation, &target)
+        {
+            let closest = xs.iter().copied().fold(f64::INFINITY, f64::min);
+            if !(start > closest) {
+                return Err(Error::OutOfRange {
+                    name: "program.start_separation".into(),
+                    value: start,
+                    allowed: Allowed::open(closest, f64::INFINITY),
+                });
+            }
+        }
+        let family = self.law.family()?;
+        self.plasticity()?;
+        match family {
+            LawFamily::Shaped => {
+                self.law.profile(self.surface.radius)?;
+            }
+            _ => {
+                if let Some(k) = self.law.given_profile_keys().first() {
+                    return Err(Error::invalid(
+                        format!("law.{k}"),
+                        format!("applies only to kind = \"shaped\", not {:?}", self.law.kind),
+                    ));
+                }
+            }
+        }
+        if let Some(e) = &self.electrical {
+            e.spot_resistance()?;
+            e.interaction()?;
+            e.heating()?;
+        }
+        if self.outputs.resistance && self.electrical.is_none() {
+            return Err(Error::invalid(
+                "outputs.resistance",
+                "needs an [electrical] section (resistivity, spreading, ...)",
+            ));
+        }
+        if let Some(s) = &self.switch {
+            positive("switch.spring_constant", s.spring_constant)?;
+            positive("switch.travel", s.travel)?;
+            Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch"))?;
+        }
+        Ok(())
+    }
+}
+
+impl ElectricalSpec {
+    /// The per-spot resistance law.
+    ///
+    /// # Errors
+    /// Bad or conflicting values, naming the `electrical.` field: give
+    /// either `resistivity` or both `resistivity1` and `resistivity2` (the
+    /// same for the mean free paths); `sharvin` and `wexler` need mean free
+    /// paths.
+    pub fn spot_resistance(&self) -> Result<SpotResistance> {
+        let spreading =
+            Spreading::parse(&self.spreading).map_err(|e| e.renamed("electrical.spreading"))?;
+        let pair = |name: &str, one: Option<f64>, a: Option<f64>, b: Option<f64>| {
+            let field = |s: &str| format!("electrical.{name}{s}");
+            match (one, a, b) {
+                (Some(x), None, None) => {
+                    Ok(Some((positive(&field(""), x)?, positive(&field(""), x)?)))
+                }
+                (None, Some(x), Some(y)) => {
+                    Ok(Some((positive(&field("1"), x)?, positive(&field("2"), y)?)))
+                }
+                (None, None, None) => Ok(None),
+                (Some(_), _, _) => Err(Error::invalid(
+                    field(""),
+                    format!("give {name} or {name}1 and {name}2, not both"),
+                )),
+                (None, Some(_), None) => Err(Error::invalid(
+                    field("2"),
+                    format!("{name}1 is given without {name}2"),
+                )),
+                (None, None, Some(_)) => Err(Error::invalid(
+                    field("1"),
+                    format!("{name}2 is given without {name}1"),
+                )),
+            }
+        };
+        let rho = pair(
+            "resistivity",
+            self.resistivity,
+            self.resistivity1,
+            self.resistivity2,
+        )?
+        .ok_or_else(|| {
+            Error::invalid(
+                "electrical.resistivity",
+                "required (Ohm m), or resistivity1 and resistivity2 for two metals",
+            )
+        })?;
+        let mfp = pair(
+            "mean_free_path",
+            self.mean_free_path,
+            self.mean_free_path1,
+            self.mean_free_path2,
+        )?;
+        let two = self.resistivity.is_none();
+        let mfp_name = if self.mean_free_path.is_some() || !two {
+            "electrical.mean_free_path"
+        } else {
+            "electrical.mean_free_path1"
+        };
+        let body = |r: f64, l: Option<f64>| Conductor::new(r, l);
+        // Physical ranges (metals ~1e-8 Ohm m, mean free paths ~1e-8 m);
+        // beyond them conductances leave the floating-point range.
+        let rho_range = Allowed::closed(1e-12, 1e6);
+        let mfp_range = Allowed::closed(1e-12, 1e-2);
+        let names = |n: &str| {
+            if two {
+                [format!("electrical.{n}1"), format!("electrical.{n}2")]
+            } else {
+                [format!("electrical.{n}"), format!("electrical.{n}")]
+            }
+        };
+        let [r1, r2] = names("resistivity");
+        rho_range.check(&r1, rho.0)?;
+        rho_range.check(&r2, rho.1)?;
+        if let Some((l1, l2)) = mfp {
+            let [n1, n2] = names("mean_free_path");
+            mfp_range.check(&n1, l1)?;
+            mfp_range.check(&n2, l2)?;
+        }
+        Allowed::closed(0.0, 1e3).check("electrical.film_resistance", self.film_resistance)?;
+        let b1 = body(rho.0, mfp.map(|m| m.0)).map_err(|e| e.renamed("electrical.resistivity"))?;
+        let b2 = body(rho.1, mfp.map(|m| m.1)).map_err(|e| e.renamed("electrical.resistivity"))?;
+        non_negative("electrical.film_resistance", self.film_resistance)?;
+        SpotResistance::new(spreading, b1, b2, self.film_resistance).map_err(|e| match e.field() {
+            Some("mean_free_path") => e.renamed(mfp_name),
+            Some("film_resistance") => e.renamed("electrical.film_resistance"),
+            _ => e.in_table("electrical"),
+        })
+    }
+
+    /// The current (A) and the heating relation, when `current` is given.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `electrical.current` or
+    /// `electrical.bulk_temperature`; [`Error::Invalid`] naming
+    /// `electrical.bulk_temperature` given without a current.
+    pub fn heating(&self) -> Result<Option<(f64, Heating)>> {
+        match (self.current, self.bulk_temperature) {
+            (Some(i), t) => {
+                let i = positive("electrical.current", i)?;
+                let h = match t {
+                    Some(t) => Heating::new(positive("electrical.bulk_temperature", t)?)
+                        .map_err(|e| e.renamed("electrical.bulk_temperature"))?,
+                    None => Heating::default(),
+                };
+                Ok(Some((i, h)))
+            }
+            (None, Some(_)) => Err(Error::invalid(
+                "electrical.bulk_temperature",
+                "applies only with electrical.current (the heating needs a current)",
+            )),
+            (None, None) => Ok(None),
+        }
+    }
+
+    /// The interaction choice.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `electrical.interaction`.
+    pub fn interaction(&self) -> Result<Interaction> {
+        Interaction::parse(&self.interaction).map_err(|e| e.renamed("electrical.interaction"))
+    }
+}

@@ -1,0 +1,167 @@
+//! The command line does not lie or crash about its outputs: a closed
+//! stdout (`| head`) ends quietly with status 141, a run leaves no file of
+//! an earlier run beside its own and lists what it wrote, non-finite
+//! results are refused before anything is written, and long runs report
+//! progress on a non-terminal stderr.
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_asperity"))
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("asperity-cli-robust-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn scene_path(name: &str) -> String {
+    format!("{}/examples/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn run(args: &[&str], dir: &Path) -> (i32, String, String) {
+    let o = bin().args(args).current_dir(dir).output().unwrap();
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// Runs with stdout a pipe whose reader is closed before the program
+/// starts (as `| head` does after its lines): the status and stderr.
+fn with_closed_stdout(args: &[&str], dir: &Path) -> (Option<i32>, String) {
+    let (reader, writer) = std::io::pipe().unwrap();
+    drop(reader); // every write to stdout now fails with EPIPE
+    let o = bin()
+        .args(args)
+        .current_dir(dir)
+        .stdout(writer)
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap();
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn a_closed_stdout_ends_quietly_with_141() {
+    let dir = tmp("pipe");
+    let scene = scene_path("soft-jkr.toml");
+    for args in [
+        vec!["law", "--law", "jkr"],
+        vec!["law", "--law", "maugis", "--json"],
+        vec!["run", &scene, "--out", "o"],
+        vec!["run", &scene, "--out", "o", "--json"],
+        vec!["run", &scene, "--plan"],
+        // A command still printing with println!: the panic hook.
+        vec!["fn", "--dist", "gaussian", "--n", "1", "--h", "0,1,2"],
+    ] {
+        let (code, err) = with_closed_stdout(&args, &dir);
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert!(!err.contains("Broken pipe"), "{args:?}: {err}");
+        // Bad arguments for `fn` would exit 2 before printing: catch that.
+        assert_eq!(code, Some(141), "{args:?}: {err}");
+    }
+    // The run's files were written before it printed.
+    assert!(dir.join("o/curve.csv").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_run_removes_outputs_of_an_earlier_run_and_lists_its_own() {
+    let dir = tmp("stale");
+    let (code, _, err) = run(
+        &["run", &scene_path("montecarlo-gold.toml"), "--out", "o"],
+        &dir,
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(dir.join("o/montecarlo.csv").exists());
+    std::fs::write(dir.join("o/notes.txt"), "mine").unwrap();
+    let (code, out, err) = run(&["run", &scene_path("soft-jkr.toml"), "--out", "o"], &dir);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        !dir.join("o/montecarlo.csv").exists(),
+        "a montecarlo.csv of the earlier run is left beside JKR results"
+    );
+    // Files the run does not own are left alone.
+    assert!(dir.join("o/notes.txt").exists());
+    // What is in the directory is exactly what the run says it wrote.
+    let listed: Vec<String> = out
+        .lines()
+        .skip_while(|l| !l.contains("wrote:"))
+        .skip(1)
+        .map(|l| l.trim().to_string())
+        .collect();
+    let mut present: Vec<String> = std::fs::read_dir(dir.join("o"))
+        .unwrap()
+        .map(|e| format!("o/{}", e.unwrap().file_name().to_string_lossy()))
+        .filter(|f| f != "o/notes.txt")
+        .collect();
+    present.sort();
+    let mut listed_sorted = listed.clone();
+    listed_sorted.sort();
+    assert_eq!(listed_sorted, present, "{out}");
+    // With --json, stdout is only JSON and the files are listed on stderr.
+    let (code, out, err) = run(
+        &["run", &scene_path("soft-jkr.toml"), "--out", "o", "--json"],
+        &dir,
+    );
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str::<serde_json::Value>(&out).unwrap();
+    assert!(err.contains("wrote o/curve.csv"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn non_finite_results_are_refused_before_anything_is_written() {
+    let dir = tmp("inf");
+    let text = std::fs::read_to_string(scene_path("soft-jkr.toml")).unwrap();
+    let huge = text.replacen("nominal_area = 1e-6", "nominal_area = 1e300", 1);
+    assert_ne!(huge, text);
+    std::fs::write(dir.join("huge.toml"), huge).unwrap();
+    let (code, _, err) = run(&["run", "huge.toml", "--out", "o"], &dir);
+    // Refused either by the scene check (surface.nominal_area) or by the
+    // output check (naming the quantity): never a file full of inf.
+    assert_ne!(code, 0, "{err}");
+    assert_ne!(code, 101, "{err}");
+    assert!(
+        err.contains("surface.nominal_area") && !err.contains("chart"),
+        "{err}"
+    );
+    assert!(!dir.join("o/curve.csv").exists());
+    assert!(!dir.join("o/summary.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_run_reports_progress_on_a_non_terminal_stderr() {
+    let dir = tmp("progress");
+    // The delay before progress shows (2 s) is set to 0 so a fast run
+    // shows it; stderr is a pipe here, so plain lines are expected.
+    let o = bin()
+        .args(["run", &scene_path("soft-jkr.toml"), "--out", "o"])
+        .env("ASPERITY_PROGRESS_AFTER", "0")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("run: 240/240 curve states (100 %)"), "{err}");
+    let lines = err.lines().filter(|l| l.starts_with("run: ")).count();
+    assert!((2..=12).contains(&lines), "{lines} progress lines:\n{err}");
+    // Without the override a sub-second run stays quiet.
+    let o = bin()
+        .args(["run", &scene_path("soft-jkr.toml"), "--out", "o"])
+        .env_remove("ASPERITY_PROGRESS_AFTER")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!err.contains("run: "), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
