@@ -45,7 +45,7 @@ use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
 
 /// Bump when a change alters solver results: calibrations cached on disk are
 /// keyed by it.
-pub const SOLVER_VERSION: u32 = 3;
+pub const SOLVER_VERSION: u32 = 4;
 
 /// Smallest Tabor parameter accepted (the rigid Bradley limit is within
 /// 0.01% there).
@@ -281,9 +281,10 @@ impl SphereProblem {
     /// building anything: the node count of the mesh at a contact edge of
     /// JKR's zero-load radius (or at the axis, whichever is larger), memory
     /// `8 n^2 (2 + 24)` bytes (the Jacobian, its LU and up to 24 live
-    /// compliance matrices), and time `1.4e-7 n^3 (1 + mu)` s in an
-    /// optimised build on one core (fitted to the measured 0.04 s, 1.1 s,
-    /// 6.2 s at mu = 1, 5, 10, default resolution; docs/performance.md).
+    /// compliance matrices), and time `2e-8 n^3 (1 + mu)` s in an
+    /// optimised build on one core (an upper bound of the measured 0.015 s,
+    /// 0.14 s, 0.37-0.62 s at mu = 1, 5, 10 and 2.7 s at mu = 10,
+    /// resolution 2, on a loaded 2-core machine; docs/performance.md).
     /// Debug builds are 10-30x slower.
     pub fn cost(&self) -> CostEstimate {
         let edge = 1.82 * MAUGIS_RADIUS;
@@ -295,7 +296,7 @@ impl SphereProblem {
         CostEstimate {
             nodes: n,
             memory_bytes: 8.0 * nf * nf * 26.0,
-            seconds: 1.4e-7 * nf.powi(3) * (1.0 + self.mu),
+            seconds: 2e-8 * nf.powi(3) * (1.0 + self.mu),
         }
     }
 
@@ -401,7 +402,7 @@ impl SphereProblem {
         let step = (4.0 * self.options.arc_step).max(0.05);
         let st = tr.run(step, |s| {
             let last = &s.last().unwrap().sol;
-            last.load > 0.05 && last.radius > 0.0 && last.d_load < 0.0
+            last.load > 0.05 && last.radius > 0.0 && last.dt_load > 0.0
         })?;
         let crit = |s: &State| {
             let p = point(self.mu, s);
@@ -413,11 +414,11 @@ impl SphereProblem {
                 arc: p.arc,
             }
         };
-        // Pull-off: dP/dH0 from > 0 to <= 0 (H0 decreasing); keep the lowest.
+        // Pull-off: dP/dt from < 0 to >= 0 along the curve; keep the lowest.
         let mut pull: Option<State> = None;
         for w in st.windows(2) {
-            if w[0].sol.d_load > 0.0 && w[1].sol.d_load <= 0.0 {
-                let s = tr.refine(&w[0], &w[1], |x| x.d_load)?;
+            if w[0].sol.dt_load < 0.0 && w[1].sol.dt_load >= 0.0 {
+                let s = tr.refine(&w[0], &w[1], |x| x.dt_load)?;
                 if pull.as_ref().is_none_or(|p| s.sol.load < p.sol.load) {
                     pull = Some(s);
                 }
@@ -431,14 +432,16 @@ impl SphereProblem {
                 .unwrap()
                 .clone(),
         };
+        // Jump-in: a local maximum of the approach along the curve; jump-out:
+        // the local minimum after it.
         let mut jump_in = None;
         let mut jump_out = None;
         for w in st.windows(2) {
-            let (a, b) = (w[0].sol.d_approach, w[1].sol.d_approach);
-            if a < 0.0 && b >= 0.0 && jump_in.is_none() {
-                jump_in = Some(tr.refine(&w[0], &w[1], |x| x.d_approach)?);
-            } else if a > 0.0 && b <= 0.0 {
-                jump_out = Some(tr.refine(&w[0], &w[1], |x| x.d_approach)?);
+            let (a, b) = (w[0].sol.dt_approach, w[1].sol.dt_approach);
+            if a > 0.0 && b <= 0.0 && jump_in.is_none() {
+                jump_in = Some(tr.refine(&w[0], &w[1], |x| x.dt_approach)?);
+            } else if a < 0.0 && b >= 0.0 {
+                jump_out = Some(tr.refine(&w[0], &w[1], |x| x.dt_approach)?);
             }
         }
         let mut zero = None;
@@ -485,8 +488,11 @@ impl SphereProblem {
             s.last().unwrap().central_gap() <= central_gap
         })?;
         let n = st.len();
-        let from = if n >= 2 { &st[n - 2] } else { &st[0] };
-        let s = tr.goto(from, central_gap)?;
+        let s = if n >= 2 {
+            tr.refine(&st[n - 2], &st[n - 1], |x| x.h[0] - central_gap)?
+        } else {
+            st[0].clone()
+        };
         Ok(Profile {
             radius: s.disc.r.clone(),
             gap: s.sol.h.clone(),
