@@ -14,9 +14,10 @@
 //! contact edge ([`mesh`]), the compliance matrix of
 //! [`compliance`] (elliptic integrals with the log singularity treated
 //! exactly), Newton–Raphson on the gaps at a prescribed central gap `H(0)`
-//! ([`newton`](self)), and continuation in `H(0)` so that the whole S-shaped
-//! load–approach curve, unstable parts included, is traced. The mesh is
-//! rebuilt around the edge as it moves.
+//! before contact and a prescribed contact radius after it (`newton`), and
+//! continuation in that parameter (`trace`) so that the whole S-shaped
+//! load–approach curve, unstable parts included, is traced. The mesh follows
+//! the edge (rebuilt near the axis, rescaled further out).
 //!
 //! ```
 //! use asperity::sphere::{Shape, SolverOptions, SphereProblem};
@@ -51,10 +52,14 @@ pub const SOLVER_VERSION: u32 = 4;
 /// 0.01% there).
 pub const MIN_TABOR: f64 = 0.005;
 
-/// Largest Tabor parameter accepted. Above it the central gap `H(0)` stops
-/// being a monotone parameter of the curve just after contact forms (a fold
-/// in `H(0)`, observed at mu = 15-20), which would need arc-length
-/// continuation (Feng 2000); at mu = 10 the pull-off is within 0.7% of JKR.
+/// Largest Tabor parameter accepted. Since solver version 4 the tracer
+/// continues in the contact radius and passes the near-fold of the central
+/// gap `H(0)` that stopped it at mu = 15-20; it traces mu = 15, 20, 30
+/// (pull-offs -1.5051, -1.5032, -1.5012 at the default resolution), but the
+/// jump-out load then drifts away from JKR's -5/6 (-0.8525 at mu = 30) and
+/// at mu = 50-100 the trace completes with wrong pull-offs (-1.493, -1.386),
+/// so accuracy above 10 is not established (docs/performance.md). At
+/// mu = 10 the pull-off is within 0.7% of JKR.
 pub const MAX_TABOR: f64 = 10.0;
 
 /// Smallest size ratio `rho = R/z0` accepted for the true sphere.
@@ -159,7 +164,8 @@ impl SolverOptions {
 /// One point of the load–approach curve.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SpherePoint {
-    /// Central gap `H(0)/z0` (the continuation parameter).
+    /// Central gap `H(0)/z0` (the continuation parameter before contact;
+    /// after it, the contact radius is).
     pub central_gap: f64,
     /// Approach (interference) `alpha/z0`; 0 when the rigid sphere's apex
     /// is at `z0` from the undeformed half-space.
@@ -173,9 +179,10 @@ pub struct SpherePoint {
     pub interference_bar: f64,
     /// Contact radius in Maugis units `A = a/(pi w R^2/K)^(1/3)`.
     pub radius_bar: f64,
-    /// `d(alpha/z0)/dH(0)`: > 0 on parts unstable under displacement control.
+    /// `d(alpha/z0)/dH(0)` along the curve (large where `H(0)` nearly
+    /// folds).
     pub d_approach: f64,
-    /// `d(P/(pi w R))/dH(0)`.
+    /// `d(P/(pi w R))/dH(0)` along the curve.
     pub d_load: f64,
     /// Arc length from the start of the trace, `int hypot(dPbar, c dalpha)`
     /// (`c` converts `alpha/z0` to Maugis units when mu is large), trapezoidal
@@ -203,8 +210,8 @@ pub struct Critical {
 pub struct SphereFacts {
     /// Pull-off under load control: the minimum load.
     pub pull_off: Critical,
-    /// Jump-out under displacement control (`d alpha/dH(0) = 0`, local
-    /// minimum of the approach); `None` when the curve has no S (small mu).
+    /// Jump-out under displacement control (local minimum of the approach
+    /// along the curve); `None` when the curve has no S (small mu).
     pub jump_out: Option<Critical>,
     /// Jump-in on approach (local maximum of the approach); `None` without S.
     pub jump_in: Option<Critical>,
@@ -357,8 +364,8 @@ impl SphereProblem {
 
     /// The whole load–approach curve from far apart (`start_gap`) until the
     /// load exceeds `max_load_bar`, unstable parts included, in the order
-    /// traced (increasing `arc`; `H(0)` decreases except where it folds,
-    /// mu > ~15).
+    /// traced (increasing `arc` and contact radius; `H(0)` decreases on
+    /// every curve traced so far, nearly folding at mu ~ 15-20).
     ///
     /// # Errors
     /// [`Error::NoConvergence`] when Newton fails even with tiny steps.
@@ -469,7 +476,8 @@ impl SphereProblem {
     }
 
     /// Gap and pressure profiles at central gap `central_gap` (units `z0`),
-    /// reached by continuation from far apart.
+    /// reached by continuation from far apart (the first point of the curve
+    /// with that central gap).
     ///
     /// # Errors
     /// [`Error::OutOfRange`] for a gap outside `(min_gap, start_gap]`;
