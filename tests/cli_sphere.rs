@@ -89,3 +89,34 @@ fn bad_input_exits_2_naming_the_argument() {
         assert!(err.contains(name), "{args:?}: {err}");
     }
 }
+
+/// Issue 11: absurd or too-coarse resolutions exit 2 naming `--resolution`
+/// at once (1e6 once tried to allocate 16 PB); expensive ones (mu = 10 at
+/// resolution 4 once ran for minutes; since solver version 4 it takes ~20 s,
+/// resolution 16 would take ~30 min) are refused with the estimate and the
+/// bound.
+#[test]
+fn costly_or_too_coarse_resolutions_are_refused_with_the_estimate() {
+    let t = std::time::Instant::now();
+    for args in [
+        vec!["--mu", "1", "--resolution", "1e6"],
+        vec!["--mu", "1", "--resolution", "100"],
+        vec!["--mu", "1", "--resolution", "0.05"],
+        vec!["--mu", "1", "--resolution", "0.2"],
+        vec!["--mu", "10", "--resolution", "16"],
+        vec!["--mu", "10", "--resolution", "30"],
+    ] {
+        let out = run(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("--resolution"), "{args:?}: {err}");
+    }
+    let out = run(&["--mu", "10", "--resolution", "16"]);
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("estimated") && err.contains("nodes") && err.contains("120 s"),
+        "{err}"
+    );
+    assert!(t.elapsed().as_secs_f64() < 5.0);
+}

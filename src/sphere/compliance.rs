@@ -140,17 +140,18 @@ pub(crate) fn interval_integral(rules: &Rules, r: f64, sa: f64, sb: f64) -> f64 
 
 /// The compliance matrix `C` (row-major, `n x n`) for nodes `r` (ascending,
 /// `r[0] = 0`): `E* u(r_i) = sum_j C_ij p_j` for the piecewise-linear pressure
-/// through `p_j` that drops to zero at `r[n-1]`.
+/// through `p_j` that drops to zero at `r[n-1]`. Rows are assembled in
+/// parallel (rayon), each exactly as serially.
 pub fn compliance_matrix(r: &[f64]) -> Vec<f64> {
+    use rayon::prelude::*;
     let n = r.len();
     let rules = Rules::new();
     let mut c = vec![0.0; n * n];
-    let mut means = vec![0.0; n.saturating_sub(1)];
-    for i in 0..n {
-        for k in 0..n - 1 {
-            means[k] = interval_integral(&rules, r[i], r[k], r[k + 1]) / (r[k + 1] - r[k]);
-        }
-        let row = &mut c[i * n..(i + 1) * n];
+    // rows are independent (bit-identical for any thread count)
+    c.par_chunks_mut(n.max(1)).enumerate().for_each(|(i, row)| {
+        let means: Vec<f64> = (0..n.saturating_sub(1))
+            .map(|k| interval_integral(&rules, r[i], r[k], r[k + 1]) / (r[k + 1] - r[k]))
+            .collect();
         for j in 0..n {
             let right = if j + 1 < n {
                 means[j]
@@ -160,7 +161,7 @@ pub fn compliance_matrix(r: &[f64]) -> Vec<f64> {
             let left = if j > 0 { means[j - 1] } else { 0.0 };
             row[j] = right - left;
         }
-    }
+    });
     c
 }
 

@@ -61,6 +61,17 @@ impl MeshSpec {
         }
     }
 
+    /// Number of nodes [`nodes`](Self::nodes) returns, computed without
+    /// allocating (saturates at `usize::MAX`).
+    pub fn node_count(&self) -> usize {
+        let total = self.phi(self.r_max).ceil();
+        if total.is_finite() && total < 1e15 {
+            (total as usize).max(4) + 1
+        } else {
+            usize::MAX
+        }
+    }
+
     /// The nodes, ascending, `r[0] = 0`, `r[n-1] = r_max`.
     pub fn nodes(&self) -> Vec<f64> {
         let total = self.phi(self.r_max);

@@ -14,9 +14,10 @@
 //! contact edge ([`mesh`]), the compliance matrix of
 //! [`compliance`] (elliptic integrals with the log singularity treated
 //! exactly), Newton–Raphson on the gaps at a prescribed central gap `H(0)`
-//! ([`newton`](self)), and continuation in `H(0)` so that the whole S-shaped
-//! load–approach curve, unstable parts included, is traced. The mesh is
-//! rebuilt around the edge as it moves.
+//! before contact and a prescribed contact radius after it (`newton`), and
+//! continuation in that parameter (`trace`) so that the whole S-shaped
+//! load–approach curve, unstable parts included, is traced. The mesh follows
+//! the edge (rebuilt near the axis, rescaled further out).
 //!
 //! ```
 //! use asperity::sphere::{Shape, SolverOptions, SphereProblem};
@@ -45,20 +46,39 @@ use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
 
 /// Bump when a change alters solver results: calibrations cached on disk are
 /// keyed by it.
-pub const SOLVER_VERSION: u32 = 2;
+pub const SOLVER_VERSION: u32 = 4;
 
 /// Smallest Tabor parameter accepted (the rigid Bradley limit is within
 /// 0.01% there).
 pub const MIN_TABOR: f64 = 0.005;
 
-/// Largest Tabor parameter accepted. Above it the central gap `H(0)` stops
-/// being a monotone parameter of the curve just after contact forms (a fold
-/// in `H(0)`, observed at mu = 15-20), which would need arc-length
-/// continuation (Feng 2000); at mu = 10 the pull-off is within 0.7% of JKR.
+/// Largest Tabor parameter accepted. Since solver version 4 the tracer
+/// continues in the contact radius and passes the near-fold of the central
+/// gap `H(0)` that stopped it at mu = 15-20; it traces mu = 15, 20, 30
+/// (pull-offs -1.5051, -1.5032, -1.5012 at the default resolution), but the
+/// jump-out load then drifts away from JKR's -5/6 (-0.8525 at mu = 30) and
+/// at mu = 50-100 the trace completes with wrong pull-offs (-1.493, -1.386),
+/// so accuracy above 10 is not established (docs/performance.md). At
+/// mu = 10 the pull-off is within 0.7% of JKR.
 pub const MAX_TABOR: f64 = 10.0;
 
 /// Smallest size ratio `rho = R/z0` accepted for the true sphere.
 pub const MIN_SIZE_RATIO: f64 = 10.0;
+
+/// Coarsest mesh resolution accepted. Coarser meshes do not resolve the
+/// contact edge: at 0.2 the mu = 1 jump-out load is 72% off and at 0.05 the
+/// pull-off is -3.23 (beyond Bradley's -2); at 0.5 (`SolverOptions::coarse`)
+/// the pull-off is within 1.5e-3 of the converged value for mu in
+/// [0.1, 5] (docs/performance.md, mesh convergence).
+pub const MIN_RESOLUTION: f64 = 0.5;
+
+/// Finest mesh resolution accepted (spacings 1/64 of the default).
+pub const MAX_RESOLUTION: f64 = 64.0;
+
+/// Largest mesh accepted, checked before anything is allocated: one
+/// compliance matrix is `8 n^2` bytes (128 MiB here) and each Newton
+/// factorisation `O(n^3)`.
+pub const MAX_NODES: usize = 4096;
 
 /// The undeformed shape of the rigid body.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -127,6 +147,7 @@ impl SolverOptions {
 
     fn validate(&self) -> Result<()> {
         positive("resolution", self.resolution)?;
+        Allowed::closed(MIN_RESOLUTION, MAX_RESOLUTION).check("resolution", self.resolution)?;
         Allowed::open(2.0, 1e6).check("far_gap", self.far_gap)?;
         Allowed::open(1.3, 1e3).check("start_gap", self.start_gap)?;
         positive("max_load_bar", self.max_load_bar)?;
@@ -143,7 +164,8 @@ impl SolverOptions {
 /// One point of the load–approach curve.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SpherePoint {
-    /// Central gap `H(0)/z0` (the continuation parameter).
+    /// Central gap `H(0)/z0` (the continuation parameter before contact;
+    /// after it, the contact radius is).
     pub central_gap: f64,
     /// Approach (interference) `alpha/z0`; 0 when the rigid sphere's apex
     /// is at `z0` from the undeformed half-space.
@@ -157,9 +179,10 @@ pub struct SpherePoint {
     pub interference_bar: f64,
     /// Contact radius in Maugis units `A = a/(pi w R^2/K)^(1/3)`.
     pub radius_bar: f64,
-    /// `d(alpha/z0)/dH(0)`: > 0 on parts unstable under displacement control.
+    /// `d(alpha/z0)/dH(0)` along the curve (large where `H(0)` nearly
+    /// folds).
     pub d_approach: f64,
-    /// `d(P/(pi w R))/dH(0)`.
+    /// `d(P/(pi w R))/dH(0)` along the curve.
     pub d_load: f64,
     /// Arc length from the start of the trace, `int hypot(dPbar, c dalpha)`
     /// (`c` converts `alpha/z0` to Maugis units when mu is large), trapezoidal
@@ -187,8 +210,8 @@ pub struct Critical {
 pub struct SphereFacts {
     /// Pull-off under load control: the minimum load.
     pub pull_off: Critical,
-    /// Jump-out under displacement control (`d alpha/dH(0) = 0`, local
-    /// minimum of the approach); `None` when the curve has no S (small mu).
+    /// Jump-out under displacement control (local minimum of the approach
+    /// along the curve); `None` when the curve has no S (small mu).
     pub jump_out: Option<Critical>,
     /// Jump-in on approach (local maximum of the approach); `None` without S.
     pub jump_in: Option<Critical>,
@@ -209,6 +232,17 @@ pub struct Profile {
     pub pressure: Vec<f64>,
     /// The curve point.
     pub point: SpherePoint,
+}
+
+/// Estimated size and cost of one solve ([`SphereProblem::cost`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CostEstimate {
+    /// Mesh nodes.
+    pub nodes: usize,
+    /// Peak memory, bytes.
+    pub memory_bytes: f64,
+    /// Wall-clock time of `facts()` in an optimised build, seconds.
+    pub seconds: f64,
 }
 
 /// A single-sphere problem: Tabor parameter, shape and numerical options.
@@ -232,7 +266,45 @@ impl SphereProblem {
             Allowed::closed(MIN_SIZE_RATIO, 1e12).check("rho", rho)?;
         }
         options.validate()?;
-        Ok(SphereProblem { mu, shape, options })
+        let p = SphereProblem { mu, shape, options };
+        let cost = p.cost();
+        if cost.nodes > MAX_NODES {
+            return Err(Error::invalid(
+                "resolution",
+                format!(
+                    "{} gives a mesh of about {} nodes at mu = {mu} (~{:.0} MiB, ~{:.0} s); \
+                     at most {MAX_NODES} nodes are allowed",
+                    options.resolution,
+                    cost.nodes,
+                    cost.memory_bytes / 1048576.0,
+                    cost.seconds
+                ),
+            ));
+        }
+        Ok(p)
+    }
+
+    /// Estimated size and cost of [`facts`](Self::facts), computed without
+    /// building anything: the node count of the mesh at a contact edge of
+    /// JKR's zero-load radius (or at the axis, whichever is larger), memory
+    /// `8 n^2 (2 + 24)` bytes (the Jacobian, its LU and up to 24 live
+    /// compliance matrices), and time `2e-8 n^3 (1 + mu)` s in an
+    /// optimised build on one core (an upper bound of the measured 0.015 s,
+    /// 0.14 s, 0.37-0.62 s at mu = 1, 5, 10 and 2.7 s at mu = 10,
+    /// resolution 2, on a loaded 2-core machine; docs/performance.md).
+    /// Debug builds are 10-30x slower.
+    pub fn cost(&self) -> CostEstimate {
+        let edge = 1.82 * MAUGIS_RADIUS;
+        let n = self
+            .mesh_spec(edge)
+            .node_count()
+            .max(self.mesh_spec(0.0).node_count());
+        let nf = n as f64;
+        CostEstimate {
+            nodes: n,
+            memory_bytes: 8.0 * nf * nf * 26.0,
+            seconds: 2e-8 * nf.powi(3) * (1.0 + self.mu),
+        }
     }
 
     /// Tabor parameter.
@@ -257,9 +329,25 @@ impl SphereProblem {
         (0.75 / (self.mu * self.mu)).min((2.0 / self.mu).sqrt())
     }
 
+    /// Node density multiplier on top of `resolution`: 2 where the zone is
+    /// the rigid scale `sqrt(2/mu)` (mu < ~0.83), 1 otherwise. At resolution
+    /// 1 with density 1 the mu = 0.005 pull-off was -2.000034, beyond
+    /// Bradley's -2 (converged -1.99964), and the mu = 0.5 zero-load radius
+    /// 0.56% small; the error falls as the spacing squared, so density 2 gives
+    /// 6e-5 and 0.13% (tests/sphere_convergence.rs) for 2x the nodes, which
+    /// costs little at small mu.
+    pub(crate) fn density(&self) -> f64 {
+        let mu = self.mu;
+        if 0.75 / (mu * mu) > (2.0 / mu).sqrt() {
+            2.0
+        } else {
+            1.0
+        }
+    }
+
     pub(crate) fn mesh_spec(&self, edge: f64) -> MeshSpec {
         let zone = self.zone();
-        let res = self.options.resolution;
+        let res = self.options.resolution * self.density();
         let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
         let r_max = r_far
             .max(1.5 * edge + 4.0 * zone)
@@ -276,8 +364,8 @@ impl SphereProblem {
 
     /// The whole load–approach curve from far apart (`start_gap`) until the
     /// load exceeds `max_load_bar`, unstable parts included, in the order
-    /// traced (increasing `arc`; `H(0)` decreases except where it folds,
-    /// mu > ~15).
+    /// traced (increasing `arc` and contact radius; `H(0)` decreases on
+    /// every curve traced so far, nearly folding at mu ~ 15-20).
     ///
     /// # Errors
     /// [`Error::NoConvergence`] when Newton fails even with tiny steps.
@@ -321,7 +409,7 @@ impl SphereProblem {
         let step = (4.0 * self.options.arc_step).max(0.05);
         let st = tr.run(step, |s| {
             let last = &s.last().unwrap().sol;
-            last.load > 0.05 && last.radius > 0.0 && last.d_load < 0.0
+            last.load > 0.05 && last.radius > 0.0 && last.dt_load > 0.0
         })?;
         let crit = |s: &State| {
             let p = point(self.mu, s);
@@ -333,11 +421,11 @@ impl SphereProblem {
                 arc: p.arc,
             }
         };
-        // Pull-off: dP/dH0 from > 0 to <= 0 (H0 decreasing); keep the lowest.
+        // Pull-off: dP/dt from < 0 to >= 0 along the curve; keep the lowest.
         let mut pull: Option<State> = None;
         for w in st.windows(2) {
-            if w[0].sol.d_load > 0.0 && w[1].sol.d_load <= 0.0 {
-                let s = tr.refine(&w[0], &w[1], |x| x.d_load)?;
+            if w[0].sol.dt_load < 0.0 && w[1].sol.dt_load >= 0.0 {
+                let s = tr.refine(&w[0], &w[1], |x| x.dt_load)?;
                 if pull.as_ref().is_none_or(|p| s.sol.load < p.sol.load) {
                     pull = Some(s);
                 }
@@ -351,14 +439,16 @@ impl SphereProblem {
                 .unwrap()
                 .clone(),
         };
+        // Jump-in: a local maximum of the approach along the curve; jump-out:
+        // the local minimum after it.
         let mut jump_in = None;
         let mut jump_out = None;
         for w in st.windows(2) {
-            let (a, b) = (w[0].sol.d_approach, w[1].sol.d_approach);
-            if a < 0.0 && b >= 0.0 && jump_in.is_none() {
-                jump_in = Some(tr.refine(&w[0], &w[1], |x| x.d_approach)?);
-            } else if a > 0.0 && b <= 0.0 {
-                jump_out = Some(tr.refine(&w[0], &w[1], |x| x.d_approach)?);
+            let (a, b) = (w[0].sol.dt_approach, w[1].sol.dt_approach);
+            if a > 0.0 && b <= 0.0 && jump_in.is_none() {
+                jump_in = Some(tr.refine(&w[0], &w[1], |x| x.dt_approach)?);
+            } else if a < 0.0 && b >= 0.0 {
+                jump_out = Some(tr.refine(&w[0], &w[1], |x| x.dt_approach)?);
             }
         }
         let mut zero = None;
@@ -386,7 +476,8 @@ impl SphereProblem {
     }
 
     /// Gap and pressure profiles at central gap `central_gap` (units `z0`),
-    /// reached by continuation from far apart.
+    /// reached by continuation from far apart (the first point of the curve
+    /// with that central gap).
     ///
     /// # Errors
     /// [`Error::OutOfRange`] for a gap outside `(min_gap, start_gap]`;
@@ -405,8 +496,11 @@ impl SphereProblem {
             s.last().unwrap().central_gap() <= central_gap
         })?;
         let n = st.len();
-        let from = if n >= 2 { &st[n - 2] } else { &st[0] };
-        let s = tr.goto(from, central_gap)?;
+        let s = if n >= 2 {
+            tr.refine(&st[n - 2], &st[n - 1], |x| x.h[0] - central_gap)?
+        } else {
+            st[0].clone()
+        };
         Ok(Profile {
             radius: s.disc.r.clone(),
             gap: s.sol.h.clone(),

@@ -1,19 +1,32 @@
-//! Continuation in the central gap `H_0` (Greenwood 2009: "taking the minimum
-//! film thickness as the independent variable"), with a mesh that follows
-//! the contact edge, adaptive steps and refinement of the critical points.
+//! Continuation along the load–approach curve in one monotone parameter `t`:
+//! `t = 3^(1/6) - H_0` before contact (the central gap, Greenwood 2009:
+//! "taking the minimum film thickness as the independent variable") and
+//! `t = a`, the contact radius, once the central gap is below `3^(1/6)`.
+//! The two meet at `t = 0`. The contact radius passes the folds of the
+//! approach (jumps), of the load (pull-off) and of the central gap (which
+//! folds back just after contact forms for mu > ~15), so one parameter
+//! traces every mu (the role arc length plays in Feng 2000).
 //!
-//! Mesh following: near the axis the mesh is rebuilt around the edge as it
-//! moves (`O(n^2)` elliptic integrals). Once the edge is beyond
-//! [`SCALABLE_EDGE`] cohesive zones, the mesh is a base mesh assembled with
-//! spacings `1/SCALE_BAND` finer than asked, viewed at the scale
-//! `lambda = a/a_base` that puts its plateau on the edge (`C -> lambda C`, exact,
-//! `O(n)`: the compliance entries are updated, not recomputed); it is
-//! reassembled only when `lambda` leaves `[1/SCALE_BAND, SCALE_BAND]`, so
-//! spacings stay between `1/SCALE_BAND^2` and 1 times the nominal ones. States
-//! on one base mesh share its matrix.
+//! Mesh following: the mesh is chosen from `t` before solving (the contact
+//! radius is prescribed). Near the axis the mesh is rebuilt around the edge
+//! when the edge leaves its plateau (`O(n^2)` elliptic integrals). Once the
+//! edge is beyond [`SCALABLE_EDGE`] cohesive zones, the mesh is a base mesh
+//! assembled with spacings `1/SCALE_BAND` finer than asked, viewed at the
+//! scale `lambda = a/a_base` that puts its plateau centre on the edge
+//! (`C -> lambda C`, exact, `O(n)`: the compliance entries are updated, not
+//! recomputed); it is reassembled only when `lambda` leaves
+//! `[1/SCALE_BAND, SCALE_BAND]`, so spacings stay between `1/SCALE_BAND^2`
+//! and 1 times the nominal ones. States on one base mesh share its matrix,
+//! and the corrector runs chord iterations on the previous point's
+//! factorisation when it lives on the same base mesh.
+//!
+//! Predictor: the previous profile and its tangent, moved with the edge
+//! (`h(r a_new/a_old)`, exact to first order in `dt`), so that the edge
+//! region, narrow at large mu, is not smeared by a fixed-node extrapolation.
 
 use super::disc::{BaseMesh, Discretisation};
-use super::newton::{Constraint, Lu, Metric, Solution};
+use super::force_law::GAP_MAX_TENSION;
+use super::newton::{Constraint, Lu, Solution};
 use super::{Shape, SpherePoint, SphereProblem};
 use crate::error::{Error, Result};
 use std::sync::Arc;
@@ -34,6 +47,8 @@ pub(crate) const MAUGIS_RADIUS: f64 = 1.330_670_039_491_468_8;
 pub(crate) struct State {
     pub disc: Arc<Discretisation>,
     pub sol: Solution,
+    /// The continuation parameter `t` (see the module documentation).
+    pub param: f64,
     /// Arc length from the start in the step metric `hypot(dP, c dalpha)`.
     pub arc: f64,
 }
@@ -45,30 +60,33 @@ impl State {
 }
 
 /// A continuation step whose Newton needs more iterations than this is
-/// retried smaller: a good predictor converges in 2-5, and a long search may
-/// land on a spurious solution of a neighbouring branch.
-const STEP_ITERATIONS: usize = 12;
+/// retried smaller: a good predictor converges in 2-5 (chord iterations
+/// in up to ~10), and a long search may land on a spurious solution of a
+/// neighbouring branch.
+const STEP_ITERATIONS: usize = 14;
 
 pub(crate) struct Tracer<'a, 'b> {
     p: &'a SphereProblem,
-    metric: Metric,
+    /// `c`: `alpha/z0` to the step metric's interference unit.
+    per_alpha: f64,
     progress: Option<&'b mut dyn FnMut(&SpherePoint)>,
+    /// The last factorisation and the base mesh it belongs to.
+    chord: Option<(Arc<BaseMesh>, Lu)>,
     pub meshes_built: usize,
     pub newton_iterations: usize,
+    pub factorisations: usize,
 }
 
 impl<'a, 'b> Tracer<'a, 'b> {
     pub fn new(p: &'a SphereProblem) -> Self {
-        let pa = 1.0 / (p.mu * MAUGIS_INTERFERENCE).max(1.0);
         Tracer {
             p,
-            metric: Metric {
-                gap: 0.0,
-                approach: pa,
-            },
+            per_alpha: 1.0 / (p.mu * MAUGIS_INTERFERENCE).max(1.0),
             progress: None,
+            chord: None,
             meshes_built: 0,
             newton_iterations: 0,
+            factorisations: 0,
         }
     }
 
@@ -93,22 +111,30 @@ impl<'a, 'b> Tracer<'a, 'b> {
         ))
     }
 
-    /// The mesh for a contact edge at `edge`: `cur` rescaled when the edge is
-    /// far enough from the axis and within the scale band, else a new mesh
-    /// (with room to move on in the same direction).
+    /// The mesh for a contact edge at `edge` (0 before contact): `cur`
+    /// itself while the edge stays near its plateau centre; rescaled when the
+    /// edge is far enough from the axis and within the scale band; else a new
+    /// mesh (with room to move on in the same direction).
     fn mesh_for(&mut self, cur: &Arc<Discretisation>, edge: f64) -> Arc<Discretisation> {
         let big = SCALABLE_EDGE * self.p.zone();
         let scalable = matches!(self.p.shape, Shape::Paraboloid) && edge >= big;
+        let spec = cur.spec;
         if !scalable {
+            if (edge - spec.edge).abs() <= 0.5 * spec.inner.min(spec.outer) {
+                return cur.clone();
+            }
             return self.build(edge, false);
         }
         let base_edge = cur.base.spec.edge;
         let lam = edge / base_edge;
         let (mu, shape) = (self.p.mu, self.p.shape);
         if base_edge >= big && (1.0 / SCALE_BAND..=SCALE_BAND).contains(&lam) {
+            if lam == cur.scale {
+                return cur.clone();
+            }
             return Arc::new(Discretisation::view(cur.base.clone(), lam, mu, shape));
         }
-        let target = if edge > cur.spec.edge {
+        let target = if edge > spec.edge {
             edge * SCALE_BAND
         } else {
             edge / SCALE_BAND
@@ -118,29 +144,32 @@ impl<'a, 'b> Tracer<'a, 'b> {
         Arc::new(Discretisation::view(base, lam, mu, shape))
     }
 
+    /// Newton at parameter `t` on `disc` from `guess`.
     fn solve(
         &mut self,
         disc: &Discretisation,
-        h0: f64,
+        t: f64,
         guess: &[f64],
         limit: usize,
     ) -> Result<Solution> {
         let o = &self.p.options;
         let limit = o.max_newton_iterations.min(limit);
-        let con = Constraint::Gap(h0);
-        let (s, _lu): (Solution, Lu) =
-            disc.solve(guess, &con, self.metric, None, o.tolerance, limit)?;
+        let con = if t <= 0.0 {
+            Constraint::Gap(GAP_MAX_TENSION - t)
+        } else {
+            Constraint::radius(&disc.r, t)
+        };
+        let chord = self
+            .chord
+            .as_ref()
+            .filter(|(b, _)| Arc::ptr_eq(b, &disc.base))
+            .map(|(_, lu)| lu);
+        let result = disc.solve(guess, &con, chord, o.tolerance, limit);
+        let (s, lu) = result?;
         self.newton_iterations += s.iterations;
+        self.factorisations += s.factorisations;
+        self.chord = Some((disc.base.clone(), lu));
         Ok(s)
-    }
-
-    fn newton(&mut self, disc: &Discretisation, h0: f64, guess: &[f64]) -> Result<Solution> {
-        self.solve(disc, h0, guess, usize::MAX)
-    }
-
-    /// Newton from a predictor: more than [`STEP_ITERATIONS`] is a failure.
-    fn newton_step(&mut self, disc: &Discretisation, h0: f64, guess: &[f64]) -> Result<Solution> {
-        self.solve(disc, h0, guess, STEP_ITERATIONS)
     }
 
     /// The rigid start at the largest central gap.
@@ -148,113 +177,150 @@ impl<'a, 'b> Tracer<'a, 'b> {
         let h0 = self.p.options.start_gap;
         let disc = self.build(0.0, false);
         let guess: Vec<f64> = disc.f.iter().map(|f| h0 + f).collect();
-        let sol = self.newton(&disc, h0, &guess)?;
-        self.follow_edge(State {
+        let t = GAP_MAX_TENSION - h0;
+        let sol = self.solve(&disc, t, &guess, usize::MAX)?;
+        Ok(State {
             disc,
             sol,
+            param: t,
             arc: 0.0,
         })
     }
 
-    /// Remesh around the current contact edge when it has left the plateau's
-    /// centre by more than half the finest zone.
-    fn follow_edge(&mut self, mut st: State) -> Result<State> {
-        for _ in 0..4 {
-            let spec = st.disc.spec;
-            let a = st.sol.radius;
-            if (a - spec.edge).abs() <= 0.5 * spec.inner.min(spec.outer) {
-                break;
-            }
-            let disc = self.mesh_for(&st.disc, a);
-            let guess = disc.interpolate(&st.disc.r, &st.sol.h);
-            match self.newton_step(&disc, st.central_gap(), &guess) {
-                Ok(sol) => {
-                    st = State {
-                        disc,
-                        sol,
-                        arc: st.arc,
+    /// The predicted gaps at parameter `t` on `disc`, from `from`.
+    fn predict(&self, from: &State, disc: &Discretisation, t: f64) -> Vec<f64> {
+        let (r, h, tan) = (&from.disc.r, &from.sol.h, &from.sol.tangent);
+        let dt = t - from.param;
+        let n = r.len();
+        if from.param > 0.0 && t > 0.0 {
+            // The deformation d = h - f moved with the edge: position r t/t0
+            // gets d(r) + dt (d_t + (r/t0) d_r); the rigid shape f, whose
+            // curvature mu is large, is added exactly at the new nodes.
+            let a0 = from.param;
+            let k = t / a0;
+            let f = &from.disc.f;
+            let d: Vec<f64> = (0..n).map(|i| h[i] - f[i]).collect();
+            let slope = |i: usize| {
+                let (l, u) = (i.saturating_sub(1), (i + 1).min(n - 1));
+                (d[u] - d[l]) / (r[u] - r[l])
+            };
+            let q: Vec<f64> = (0..n)
+                .map(|i| d[i] + dt * (tan[i] + r[i] / a0 * slope(i)))
+                .collect();
+            let mut j = 0;
+            disc.r
+                .iter()
+                .zip(&disc.f)
+                .map(|(&x, &fx)| {
+                    // linear in d, constant beyond the last node (rigid)
+                    let y = x / k;
+                    while j + 2 < n && r[j + 1] < y {
+                        j += 1;
                     }
-                }
-                // Keep the old mesh: the next step's remesh tries again.
-                Err(_) => break,
-            }
-        }
-        Ok(st)
-    }
-
-    /// Solve at central gap `h0` starting from `from`; when Newton fails,
-    /// get there in two halves (recursively, at most 2^8 sub-steps).
-    pub fn goto(&mut self, from: &State, h0: f64) -> Result<State> {
-        self.goto_depth(from, h0, 8)
-    }
-
-    fn goto_depth(&mut self, from: &State, h0: f64, depth: u32) -> Result<State> {
-        match self.goto_once(from, h0) {
-            Ok(s) => Ok(s),
-            Err(e) if depth == 0 => Err(e),
-            Err(_) => {
-                let mid = 0.5 * (from.central_gap() + h0);
-                let half = self.goto_depth(from, mid, depth - 1)?;
-                self.goto_depth(&half, h0, depth - 1)
-            }
+                    let u = ((y - r[j]) / (r[j + 1] - r[j])).min(1.0);
+                    (q[j] + u * (q[j + 1] - q[j]) + fx).max(0.25)
+                })
+                .collect()
+        } else {
+            // before contact (or across t = 0, where dH/dt is not continuous):
+            // fixed nodes, the tangent only before contact
+            let step = if from.param <= 0.0 {
+                dt.min(-from.param)
+            } else {
+                0.0
+            };
+            let q: Vec<f64> = (0..n)
+                .map(|i| (h[i] + tan[i] * step).max(0.5 * h[i]))
+                .collect();
+            disc.interpolate(r, &q)
         }
     }
 
-    /// Solve at central gap `h0` starting from `from` (tangent predictor).
-    fn goto_once(&mut self, from: &State, h0: f64) -> Result<State> {
-        let dh = h0 - from.central_gap();
-        let guess: Vec<f64> = from
-            .sol
-            .h
-            .iter()
-            .zip(&from.sol.tangent)
-            .map(|(h, t)| (h + t * dh).max(0.5 * h))
-            .collect();
-        let sol = self.newton_step(&from.disc, h0, &guess)?;
-        // arc length by the trapezoid on the speed |d(P, c alpha)/dH_0|
-        let speed = |s: &Solution| s.d_load.hypot(s.d_approach * self.metric.approach);
-        let arc = from.arc + 0.5 * (speed(&from.sol) + speed(&sol)) * dh.abs();
-        self.follow_edge(State {
-            disc: from.disc.clone(),
+    /// Solve at parameter `t` from `from`: the mesh for `t`, the predictor,
+    /// a Newton limited to [`STEP_ITERATIONS`].
+    fn goto_once(&mut self, from: &State, t: f64) -> Result<State> {
+        let disc = self.mesh_for(&from.disc, t.max(0.0));
+        let guess = self.predict(from, &disc, t);
+        let sol = self.solve(&disc, t, &guess, STEP_ITERATIONS)?;
+        // arc length by the trapezoid on the speed |d(P, c alpha)/dt|
+        let speed = |s: &Solution| s.dt_load.hypot(s.dt_approach * self.per_alpha);
+        let arc = from.arc + 0.5 * (speed(&from.sol) + speed(&sol)) * (t - from.param).abs();
+        Ok(State {
+            disc,
             sol,
+            param: t,
             arc,
         })
     }
 
-    /// Trace from the start gap down to the stopping rule (`stop` true).
+    /// Solve at parameter `t` starting from `from`; when Newton fails,
+    /// get there in two halves (recursively, at most 2^8 sub-steps).
+    pub fn goto(&mut self, from: &State, t: f64) -> Result<State> {
+        self.goto_depth(from, t, 8)
+    }
+
+    fn goto_depth(&mut self, from: &State, t: f64, depth: u32) -> Result<State> {
+        match self.goto_once(from, t) {
+            Ok(s) => Ok(s),
+            Err(e) if depth == 0 => Err(e),
+            Err(_) => {
+                let mid = 0.5 * (from.param + t);
+                let half = self.goto_depth(from, mid, depth - 1)?;
+                self.goto_depth(&half, t, depth - 1)
+            }
+        }
+    }
+
+    /// The next parameter value from `cur`: a step of `arc_step` in the
+    /// metric `hypot(dP, c dalpha)`, at most doubling the previous step,
+    /// at most 10% of the central gap before contact (landing on `t = 0`
+    /// exactly when crossing it), after it at most 10% of the radius and
+    /// at first a quarter of the cohesive zone.
+    fn next_param(&self, cur: &State, arc_step: f64, prev_dt: f64) -> f64 {
+        let s = &cur.sol;
+        let speed = s.dt_load.hypot(s.dt_approach * self.per_alpha);
+        let t = cur.param;
+        let mut dt = (arc_step / speed.max(1e-300)).min(2.0 * prev_dt);
+        if t < 0.0 {
+            let h0 = GAP_MAX_TENSION - t;
+            dt = dt.min(0.1 * h0);
+            if t + dt > 0.0 {
+                dt = -t;
+            }
+        } else {
+            let zone = self.p.zone();
+            dt = dt.min(0.1 * t.max(2.5 * zone));
+        }
+        t + dt
+    }
+
+    /// Trace from the start gap until `stop` is true (or the central gap
+    /// reaches `min_gap`).
     pub fn run(&mut self, arc_step: f64, stop: impl Fn(&[State]) -> bool) -> Result<Vec<State>> {
-        let mu = self.p.mu;
         let o = self.p.options;
         let mut states = vec![self.start()?];
-        let mut prev_dh = f64::INFINITY;
+        let mut prev_dt = f64::INFINITY;
         while !stop(&states) {
             let cur = states.last().unwrap().clone();
-            let h0 = cur.central_gap();
-            if h0 <= o.min_gap {
+            if cur.central_gap() <= o.min_gap {
                 break;
             }
-            // interference in Maugis units, or in z0 when that is larger
-            // (small mu, where Dbar = alpha/(mu z0 ...) spans hundreds)
-            let per_alpha = 1.0 / (mu * MAUGIS_INTERFERENCE).max(1.0);
-            let speed = cur.sol.d_load.hypot(cur.sol.d_approach * per_alpha);
-            let mut dh = (arc_step / speed.max(1e-300))
-                .min(0.1 * h0)
-                .min(2.0 * prev_dh)
-                .min(h0 - 0.5 * o.min_gap);
+            let mut target = self.next_param(&cur, arc_step, prev_dt);
             let mut next = None;
             let mut last_err = None;
             for _ in 0..40 {
-                match self.goto_once(&cur, h0 - dh) {
-                    Ok(s) => {
+                match self.goto_once(&cur, target) {
+                    Ok(s) if s.central_gap() >= 0.5 * o.min_gap => {
                         next = Some(s);
                         break;
                     }
-                    Err(e) => {
-                        last_err = Some(e);
-                        dh *= 0.5;
+                    Ok(_) => {
+                        last_err = None;
                     }
+                    Err(e) => last_err = Some(e),
                 }
-                if dh < 1e-13 * h0 {
+                target = 0.5 * (cur.param + target);
+                if (target - cur.param).abs() < 1e-13 * (1.0 + cur.param.abs()) {
                     break;
                 }
             }
@@ -265,9 +331,9 @@ impl<'a, 'b> Tracer<'a, 'b> {
                     residual: f64::NAN,
                 }));
             };
-            prev_dh = dh;
+            prev_dt = next.param - cur.param;
             if let Some(f) = self.progress.as_mut() {
-                f(&point(mu, &next));
+                f(&point(self.p.mu, &next));
             }
             states.push(next);
         }
@@ -275,11 +341,11 @@ impl<'a, 'b> Tracer<'a, 'b> {
     }
 
     /// Root of `g` between two states (`g` of opposite signs), by the
-    /// Illinois variant of regula falsi on the central gap.
+    /// Illinois variant of regula falsi on the parameter.
     pub fn refine(&mut self, a: &State, b: &State, g: impl Fn(&Solution) -> f64) -> Result<State> {
-        let (mut xa, mut ga, mut sa) = (a.central_gap(), g(&a.sol), a.clone());
-        let (mut xb, mut gb, mut sb) = (b.central_gap(), g(&b.sol), b.clone());
-        let tol = 1e-9 * xa.abs().max(xb.abs());
+        let (mut xa, mut ga, mut sa) = (a.param, g(&a.sol), a.clone());
+        let (mut xb, mut gb, mut sb) = (b.param, g(&b.sol), b.clone());
+        let tol = 1e-9 * (xa.abs().max(xb.abs()) + 1e-3);
         let mut side = 0i32;
         for _ in 0..60 {
             if (xb - xa).abs() <= tol {

@@ -2,7 +2,10 @@
 //! (Maugis units) and, on request, the traced load–approach curve as CSV.
 
 use crate::CliError;
-use asperity::sphere::{Shape, SolverOptions, SphereProblem, MAX_TABOR, MIN_SIZE_RATIO, MIN_TABOR};
+use asperity::sphere::{
+    Shape, SolverOptions, SpherePoint, SphereProblem, MAX_RESOLUTION, MAX_TABOR, MIN_RESOLUTION,
+    MIN_SIZE_RATIO, MIN_TABOR,
+};
 use clap::Args;
 use serde::Serialize;
 use std::io::Write;
@@ -16,7 +19,8 @@ pub struct SphereArgs {
     /// Size ratio rho = R/z0 (>= 10) for a true sphere; paraboloid if absent.
     #[arg(long, allow_negative_numbers = true)]
     rho: Option<f64>,
-    /// Mesh resolution multiplier (default 1).
+    /// Mesh resolution multiplier (default 1), in [0.5, 64]; runs estimated
+    /// above 120 s or 2 GiB are refused with the estimate.
     #[arg(long, allow_negative_numbers = true)]
     resolution: Option<f64>,
     /// Print one JSON object instead of a table.
@@ -47,6 +51,64 @@ struct SphereFactsOut {
     nodes: usize,
 }
 
+/// Estimated run time above which a run is refused (seconds, optimised build).
+const MAX_SECONDS: f64 = 120.0;
+/// Estimated memory above which a run is refused (MiB).
+const MAX_MIB: f64 = 2048.0;
+/// Progress appears once a run has taken this long (seconds).
+const QUIET_SECONDS: f64 = 2.0;
+
+/// Progress on stderr for runs longer than [`QUIET_SECONDS`]: one line
+/// rewritten in place on a terminal, otherwise a line every 2 s.
+struct Progress {
+    what: &'static str,
+    start: std::time::Instant,
+    last: f64,
+    points: usize,
+    shown: bool,
+    terminal: bool,
+}
+
+impl Progress {
+    fn new(what: &'static str) -> Self {
+        use std::io::IsTerminal;
+        Progress {
+            what,
+            start: std::time::Instant::now(),
+            last: 0.0,
+            points: 0,
+            shown: false,
+            terminal: std::io::stderr().is_terminal(),
+        }
+    }
+
+    fn tick(&mut self, p: &SpherePoint) {
+        self.points += 1;
+        let t = self.start.elapsed().as_secs_f64();
+        let every = if self.terminal { 0.2 } else { QUIET_SECONDS };
+        if t < QUIET_SECONDS || t - self.last < every {
+            return;
+        }
+        self.last = t;
+        self.shown = true;
+        let line = format!(
+            "{}: {} points, {:.1} s, central gap {:.4} z0, load {:.4} pi w R",
+            self.what, self.points, t, p.central_gap, p.load_bar
+        );
+        if self.terminal {
+            eprint!("\r{line}   ");
+        } else {
+            eprintln!("{line}");
+        }
+    }
+
+    fn done(&self) {
+        if self.shown && self.terminal {
+            eprintln!();
+        }
+    }
+}
+
 pub fn run(args: &SphereArgs) -> crate::CliResult {
     asperity::error::Allowed::closed(MIN_TABOR, MAX_TABOR).check("--mu", args.mu)?;
     let shape = match args.rho {
@@ -58,10 +120,29 @@ pub fn run(args: &SphereArgs) -> crate::CliResult {
     };
     let mut opts = SolverOptions::default();
     if let Some(r) = args.resolution {
-        opts.resolution = asperity::error::positive("--resolution", r)?;
+        opts.resolution = asperity::error::Allowed::closed(MIN_RESOLUTION, MAX_RESOLUTION)
+            .check("--resolution", r)?;
     }
-    let problem = SphereProblem::new(args.mu, shape, opts)?;
-    let f = problem.facts()?;
+    let problem = SphereProblem::new(args.mu, shape, opts).map_err(|e| {
+        let e = if e.field() == Some("resolution") {
+            e.renamed("--resolution")
+        } else {
+            e
+        };
+        CliError::from(e)
+    })?;
+    let cost = problem.cost();
+    let mib = cost.memory_bytes / 1048576.0;
+    if cost.seconds > MAX_SECONDS || mib > MAX_MIB {
+        return Err(CliError::Usage(format!(
+            "--resolution {}: estimated {} nodes, ~{:.0} s and ~{:.0} MiB at mu = {}; \
+             the bounds are {MAX_SECONDS} s and {MAX_MIB} MiB (lower --resolution)",
+            opts.resolution, cost.nodes, cost.seconds, mib, args.mu
+        )));
+    }
+    let mut progress = Progress::new("sphere facts");
+    let f = problem.facts_with_progress(Some(&mut |p: &SpherePoint| progress.tick(p)))?;
+    progress.done();
     let out = SphereFactsOut {
         mu: args.mu,
         rho: args.rho,
@@ -73,7 +154,9 @@ pub fn run(args: &SphereArgs) -> crate::CliResult {
         nodes: f.nodes,
     };
     if let Some(path) = &args.curve {
-        let curve = problem.trace()?;
+        let mut progress = Progress::new("sphere curve");
+        let curve = problem.trace_with_progress(Some(&mut |p: &SpherePoint| progress.tick(p)))?;
+        progress.done();
         let mut file = std::fs::File::create(path)
             .map_err(|e| CliError::Usage(format!("--curve {}: {e}", path.display())))?;
         let mut text = String::from(
