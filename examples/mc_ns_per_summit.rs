@@ -1,5 +1,6 @@
 //! CPU nanoseconds per summit of `MonteCarlo::state` on one thread, per law:
-//! `cargo run --release --example mc_ns_per_summit [repeats]`.
+//! `cargo run --release --example mc_ns_per_summit [repeats] [law]` (one law
+//! by name, e.g. `hertz`, for profiling; all by default).
 //!
 //! 1e6 summits (exponential heights, sigma = 5 nm, R = 1 um), every summit
 //! in range (`d = -sigma`), load + area + count, on a 1-thread rayon pool.
@@ -83,7 +84,11 @@ fn main() {
         .build()
         .unwrap();
     println!("law, history, CPU ns/summit (1 thread), wall ns/summit");
+    let only = std::env::args().nth(2);
     for (name, law, k) in laws {
+        if only.as_deref().is_some_and(|o| o != name) {
+            continue;
+        }
         let mc = MonteCarlo::new(pop.clone(), law).unwrap();
         let k = k * repeats;
         for (hname, history) in [
