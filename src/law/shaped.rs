@@ -19,7 +19,7 @@
 //! adhesion of the profile ([`crate::axisym::md`], Dugdale stress `sigma0`).
 
 use super::interpolated::InterpolatedLaw;
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor};
 use crate::axisym::{AxisymJkr, AxisymMd, MdPoint, Profile};
 use crate::error::Result;
 use std::sync::Arc;
@@ -33,6 +33,55 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-11;
 /// for a 41-node table and 2.3 s for 400 nodes at this tolerance;
 /// docs/performance.md).
 pub const TABLE_TOLERANCE: f64 = 1e-9;
+
+/// The evaluations of a tabulated shaped law, all answered by its
+/// [`InterpolatedLaw`] (field `table`), including the GW panel cursor and
+/// the Monte Carlo batch, so shaped summits take the same fast paths as
+/// every other tabulated law.
+macro_rules! table_evaluations {
+    () => {
+        #[inline]
+        fn state(&self, delta: f64, branch: Branch) -> ContactState {
+            self.table.state(delta, branch)
+        }
+
+        #[inline]
+        fn load(&self, delta: f64, branch: Branch) -> f64 {
+            self.table.load(delta, branch)
+        }
+
+        fn state_after(&self, delta: f64, delta_max: f64) -> ContactState {
+            self.table.state_after(delta, delta_max)
+        }
+
+        fn load_after(&self, delta: f64, delta_max: f64) -> f64 {
+            self.table.load_after(delta, delta_max)
+        }
+
+        fn state_near(
+            &self,
+            delta: f64,
+            delta_max: Option<f64>,
+            cursor: &mut LawCursor,
+        ) -> ContactState {
+            self.table.state_near(delta, delta_max, cursor)
+        }
+
+        fn load_near(&self, delta: f64, delta_max: Option<f64>, cursor: &mut LawCursor) -> f64 {
+            self.table.load_near(delta, delta_max, cursor)
+        }
+
+        fn state_batch(
+            &self,
+            delta: &[f64],
+            delta_max: Option<&[f64]>,
+            load: &mut [f64],
+            radius: &mut [f64],
+        ) {
+            self.table.state_batch(delta, delta_max, load, radius)
+        }
+    };
+}
 
 /// JKR for an axisymmetric profile, solved exactly at every call.
 #[derive(Debug, Clone, PartialEq)]
@@ -186,18 +235,7 @@ impl AsperityLaw for Shaped {
         "shaped"
     }
 
-    #[inline]
-    fn state(&self, delta: f64, branch: Branch) -> ContactState {
-        self.table.state(delta, branch)
-    }
-
-    fn state_after(&self, delta: f64, delta_max: f64) -> ContactState {
-        self.table.state_after(delta, delta_max)
-    }
-
-    fn load_after(&self, delta: f64, delta_max: f64) -> f64 {
-        self.table.load_after(delta, delta_max)
-    }
+    table_evaluations!();
 
     fn attach_interference(&self) -> f64 {
         0.0
@@ -380,18 +418,7 @@ impl AsperityLaw for ShapedMd {
         "shaped_md"
     }
 
-    #[inline]
-    fn state(&self, delta: f64, branch: Branch) -> ContactState {
-        self.table.state(delta, branch)
-    }
-
-    fn state_after(&self, delta: f64, delta_max: f64) -> ContactState {
-        self.table.state_after(delta, delta_max)
-    }
-
-    fn load_after(&self, delta: f64, delta_max: f64) -> f64 {
-        self.table.load_after(delta, delta_max)
-    }
+    table_evaluations!();
 
     fn attach_interference(&self) -> f64 {
         self.exact.attach_interference()

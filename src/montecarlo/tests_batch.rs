@@ -34,6 +34,19 @@ fn laws() -> Vec<Arc<dyn AsperityLaw>> {
         Arc::new(InterpolatedLaw::new(md, -3e-9, 2e-8, 1e-9).unwrap()),
         plastic.as_law(),
         Arc::new(AdhesivePlastic::new(loading, 0.5).unwrap()),
+        Arc::new(
+            crate::law::Shaped::new(crate::axisym::Profile::paraboloid(R).unwrap(), E_STAR, 0.5)
+                .unwrap(),
+        ),
+        Arc::new(
+            crate::law::shaped::ShapedMd::new(
+                crate::axisym::Profile::cone(0.01).unwrap(),
+                E_STAR,
+                0.5,
+                3e9,
+            )
+            .unwrap(),
+        ),
     ]
 }
 
