@@ -71,6 +71,11 @@ impl AsperityLaw for Bradley {
         }
     }
 
+    /// The branch is ignored: no hysteresis, no memory.
+    fn reversible(&self) -> bool {
+        true
+    }
+
     fn attach_interference(&self) -> f64 {
         f64::NEG_INFINITY
     }

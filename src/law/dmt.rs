@@ -65,6 +65,11 @@ impl AsperityLaw for Dmt {
         }
     }
 
+    /// The branch is ignored: no hysteresis, no memory.
+    fn reversible(&self) -> bool {
+        true
+    }
+
     fn attach_interference(&self) -> f64 {
         0.0
     }

@@ -97,6 +97,11 @@ impl AsperityLaw for Hertz {
         );
     }
 
+    /// The branch is ignored: no hysteresis, no memory.
+    fn reversible(&self) -> bool {
+        true
+    }
+
     fn attach_interference(&self) -> f64 {
         0.0
     }

@@ -57,33 +57,198 @@ pub fn interference_bar(a: f64) -> f64 {
 /// `Dbar^(1/4) + b^(1/3)` (always an upper bound) and the fold expansion
 /// `x_c + sqrt((Dbar - Dbar_c)/(6 x_c^2))` (an upper bound too, since the
 /// cubic and quartic terms of `f` about `x_c` are positive), which keeps
-/// convergence quadratic near the fold.
+/// convergence quadratic near the fold, improved by one fixed-point step
+/// `x <- min(x, (Dbar + b x)^(1/4))` (still an upper bound, since
+/// `x^4 >= Dbar + b x` above the root; contraction `b/(4 x^3)`, strong in
+/// deep contact): 5 Newton steps instead of 7 over a Monte Carlo
+/// population. The batch ([`Jkr::state_batch`]) takes the same steps.
 #[inline]
 pub fn stable_radius_bar(d: f64) -> Option<f64> {
     if !(d >= JUMP_OUT_INTERFERENCE) {
         return None;
     }
-    // x_c = 6^(-1/6)
-    const XC: f64 = 0.741_836_375_590_402_3;
-    // B^(1/3) = (8/3)^(1/6) (mpmath), a constant rather than a cbrt per call.
-    const B_CBRT: f64 = 1.177_591_843_000_480_9;
-    let bound = d.max(0.0).sqrt().sqrt() + B_CBRT;
-    let fold = XC + ((d - JUMP_OUT_INTERFERENCE) / (6.0 * XC * XC)).sqrt();
-    let mut x = bound.min(fold);
-    for _ in 0..60 {
-        let x2 = x * x;
-        let f = x2 * x2 - B * x - d;
-        let fp = 4.0 * x2 * x - B;
-        if fp <= 0.0 {
-            break;
-        }
-        let step = f / fp;
-        x -= step;
-        if step.abs() <= 4.0 * f64::EPSILON * x {
+    let mut x = newton_start(d);
+    for _ in 0..MAX_NEWTON {
+        let (next, more) = newton_step(x, d);
+        x = next;
+        if !more {
             break;
         }
     }
-    Some(x.max(XC) * x.max(XC))
+    Some(radius_from_root(x))
+}
+
+/// Iteration cap of [`stable_radius_bar`] (quadratic convergence from the
+/// start takes at most ~6).
+const MAX_NEWTON: usize = 60;
+/// `x_c = 6^(-1/6) = sqrt(A_c)`.
+const XC: f64 = 0.741_836_375_590_402_3;
+
+/// Start of the Newton iteration for `x = sqrt(A)` at `Dbar = d`: the
+/// smaller of `Dbar^(1/4) + b^(1/3)` and `x_c + sqrt((Dbar - Dbar_c)/(6 x_c^2))`,
+/// both upper bounds of the largest root, then one fixed-point step
+/// `min(x, (Dbar + b x)^(1/4))`.
+#[inline(always)]
+fn newton_start(d: f64) -> f64 {
+    let (bound, fold) = start_radicands(d);
+    let x = start_from_roots(bound.sqrt().sqrt(), fold.sqrt());
+    x.min((d + B * x).sqrt().sqrt())
+}
+
+/// The radicands of [`newton_start`]: `max(Dbar, 0)` (fourth root) and
+/// `(Dbar - Dbar_c)/(6 x_c^2)` (square root).
+#[inline(always)]
+fn start_radicands(d: f64) -> (f64, f64) {
+    (d.max(0.0), (d - JUMP_OUT_INTERFERENCE) / (6.0 * XC * XC))
+}
+
+/// [`newton_start`] from the roots of its radicands (taken in SIMD lanes
+/// by the batch).
+#[inline(always)]
+fn start_from_roots(fourth_root: f64, fold_root: f64) -> f64 {
+    // B^(1/3) = (8/3)^(1/6) (mpmath), a constant rather than a cbrt per call.
+    const B_CBRT: f64 = 1.177_591_843_000_480_9;
+    (fourth_root + B_CBRT).min(XC + fold_root)
+}
+
+/// One branch-free Newton step on `f(x) = x^4 - b x - Dbar`: the new
+/// iterate (unchanged where `f'(x) <= 0`) and whether to go on (the step
+/// exceeded `4 eps x`). Shared by the scalar and the batch solve, which are
+/// therefore equal bit for bit.
+#[inline(always)]
+fn newton_step(x: f64, d: f64) -> (f64, bool) {
+    let x2 = x * x;
+    let f = x2 * x2 - B * x - d;
+    let fp = 4.0 * x2 * x - B;
+    let descends = !(fp <= 0.0);
+    let step = f / fp;
+    let next = x - step;
+    let more = !(step.abs() <= 4.0 * f64::EPSILON * next);
+    if descends {
+        (next, descends && more)
+    } else {
+        (x, false)
+    }
+}
+
+/// `A = max(x, x_c)^2` from the root `x = sqrt(A)`.
+#[inline(always)]
+fn radius_from_root(x: f64) -> f64 {
+    x.max(XC) * x.max(XC)
+}
+
+/// `v[j] = sqrt(v[j])` in the CPU's SIMD registers (correctly rounded,
+/// as the scalar `f64::sqrt`).
+#[inline(always)]
+fn sqrt_lanes<S: pulp::Simd>(simd: S, v: &mut [f64; GROUP]) {
+    let (head, tail) = S::as_mut_simd_f64s(v);
+    for x in head {
+        *x = simd.sqrt_f64s(*x);
+    }
+    for x in tail {
+        *x = x.sqrt();
+    }
+}
+
+/// Lanes solved together by [`Jkr::state_batch`]: four AVX-512 vectors, so
+/// the divisions of one hide the latency of the others (measured: 16 lanes
+/// 10.0, 32 lanes 7.4, 64 lanes 7.5-8.0 ns per summit).
+const GROUP: usize = 32;
+
+/// [`Jkr::state_batch`] as a [`pulp::WithSimd`] operation (compiled for the
+/// widest SIMD the CPU has): per group of [`GROUP`] asperities, masked
+/// Newton iterations until every lane has stopped; each lane takes exactly
+/// the steps of [`stable_radius_bar`].
+struct JkrBatch<'a> {
+    scales: MaugisScales,
+    delta: &'a [f64],
+    delta_max: Option<&'a [f64]>,
+    load: &'a mut [f64],
+    radius: &'a mut [f64],
+}
+
+impl pulp::WithSimd for JkrBatch<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, simd: S) {
+        let s = self.scales;
+        let n = self.delta.len().min(self.load.len()).min(self.radius.len());
+        let n = self.delta_max.map_or(n, |m| n.min(m.len()));
+        let mut start = 0;
+        while start < n {
+            let len = GROUP.min(n - start);
+            // Padded to a whole group (free lanes), so every loop below
+            // runs over GROUP lanes and vectorises.
+            let mut delta = [-1.0; GROUP];
+            let mut maximum = [-1.0; GROUP];
+            delta[..len].copy_from_slice(&self.delta[start..start + len]);
+            if let Some(m) = self.delta_max {
+                maximum[..len].copy_from_slice(&m[start..start + len]);
+            }
+            let mut d = [0.0; GROUP];
+            let mut live = [false; GROUP];
+            for j in 0..GROUP {
+                // Approach: free below touching; retraction from a
+                // touching maximum follows the attached branch.
+                let attached = !(delta[j] < 0.0) || maximum[j] >= 0.0;
+                let dbar = delta[j] / s.interference;
+                live[j] = attached && dbar >= JUMP_OUT_INTERFERENCE;
+                d[j] = if live[j] { dbar } else { 0.0 };
+            }
+            let ok = live;
+            // newton_start, with its square roots in SIMD lanes.
+            let (mut bound, mut fold) = ([0.0; GROUP], [0.0; GROUP]);
+            for j in 0..GROUP {
+                (bound[j], fold[j]) = start_radicands(d[j]);
+            }
+            sqrt_lanes(simd, &mut bound);
+            sqrt_lanes(simd, &mut bound);
+            sqrt_lanes(simd, &mut fold);
+            let mut x = [0.0; GROUP];
+            for j in 0..GROUP {
+                x[j] = start_from_roots(bound[j], fold[j]);
+                bound[j] = d[j] + B * x[j];
+            }
+            sqrt_lanes(simd, &mut bound);
+            sqrt_lanes(simd, &mut bound);
+            for j in 0..GROUP {
+                x[j] = x[j].min(bound[j]);
+            }
+            for _ in 0..MAX_NEWTON {
+                let mut any = false;
+                for j in 0..GROUP {
+                    let (next, more) = newton_step(x[j], d[j]);
+                    x[j] = if live[j] { next } else { x[j] };
+                    live[j] &= more;
+                    any |= live[j];
+                }
+                if !any {
+                    break;
+                }
+            }
+            // load_bar(A) = A^3 - sqrt(6 A^3), the root in SIMD lanes.
+            let (mut a, mut a3, mut root) = ([0.0; GROUP], [0.0; GROUP], [0.0; GROUP]);
+            for j in 0..GROUP {
+                a[j] = radius_from_root(x[j]);
+                a3[j] = a[j] * a[j] * a[j];
+                root[j] = 6.0 * a3[j];
+            }
+            sqrt_lanes(simd, &mut root);
+            let (mut p, mut r) = ([0.0; GROUP], [0.0; GROUP]);
+            for j in 0..GROUP {
+                p[j] = if ok[j] {
+                    (a3[j] - root[j]) * s.load
+                } else {
+                    0.0
+                };
+                r[j] = if ok[j] { a[j] * s.radius } else { 0.0 };
+            }
+            self.load[start..start + len].copy_from_slice(&p[..len]);
+            self.radius[start..start + len].copy_from_slice(&r[..len]);
+            start += len;
+        }
+    }
 }
 
 /// JKR law for a sphere of radius `R` (m), contact modulus `E*` (Pa) and
@@ -133,6 +298,25 @@ impl AsperityLaw for Jkr {
             Branch::Approach if delta < 0.0 => ContactState::FREE,
             _ => self.attached(delta),
         }
+    }
+
+    /// Masked Newton iterations on groups of asperities in SIMD lanes
+    /// (`JkrBatch`), bit for bit [`state`](AsperityLaw::state) /
+    /// [`state_after`](AsperityLaw::state_after).
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        pulp::Arch::new().dispatch(JkrBatch {
+            scales: self.scales,
+            delta,
+            delta_max,
+            load,
+            radius,
+        });
     }
 
     fn attach_interference(&self) -> f64 {

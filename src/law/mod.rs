@@ -212,6 +212,16 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         }
     }
 
+    /// Whether the law has neither hysteresis nor memory:
+    /// [`state_after`](AsperityLaw::state_after)`(delta, delta_max)` equals
+    /// [`state`](AsperityLaw::state)`(delta, Approach)` bit for bit for every
+    /// `delta` and `delta_max` (Hertz, DMT, Bradley). Monte Carlo sums on
+    /// retraction then skip the maximum interferences. Default `false`
+    /// (always safe).
+    fn reversible(&self) -> bool {
+        false
+    }
+
     /// Whether [`state_after`](AsperityLaw::state_after) depends on the
     /// value of `delta_max` beyond crossing the attach interference (plastic
     /// laws: the permanent flattening). Path-following sums

@@ -419,6 +419,9 @@ impl MonteCarlo {
         let z = &self.population.heights()[a..b];
         let law = self.law.law();
         let closest = match history {
+            // A reversible law retracts along its approach: no maximum
+            // interferences to compute.
+            History::Retract { .. } if law.reversible() => None,
             History::Approach => None,
             History::Retract { closest } => Some(closest),
         };

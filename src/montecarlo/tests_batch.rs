@@ -102,6 +102,30 @@ fn batch_equals_scalar_bit_for_bit_for_every_law() {
     }
 }
 
+/// The laws that say they are reversible (Monte Carlo then skips their
+/// maximum interferences on retraction) retract along their approach bit
+/// for bit; no hysteretic law says so.
+#[test]
+fn reversible_laws_retract_along_their_approach() {
+    let mut all = laws();
+    all.push(Arc::new(crate::law::Bradley::new(R, 0.5, 3e-10).unwrap()));
+    let mut seen = Vec::new();
+    for law in all {
+        if !law.reversible() {
+            continue;
+        }
+        seen.push(law.name());
+        for &x in &interferences() {
+            for m in [x, x + 1e-9, -1e-8, 1e-7] {
+                let (a, b) = (law.state_after(x, m), law.state(x, Branch::Approach));
+                assert_eq!(a.load.to_bits(), b.load.to_bits(), "{} {x:e}", law.name());
+                assert_eq!(a.radius.to_bits(), b.radius.to_bits(), "{}", law.name());
+            }
+        }
+    }
+    assert_eq!(seen, ["hertz", "dmt", "bradley"]);
+}
+
 /// Sequential brute force (one accumulator, summit order) against the
 /// lane sums: the orders differ, so the totals agree to rounding; for n
 /// terms of one sign both are within `n eps sum|x|` of the exact sum.
