@@ -24,6 +24,7 @@
 use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor};
 use crate::error::{Allowed, Error, Result};
 use crate::numeric::chebyshev::clenshaw;
+use crate::numeric::lanes::sqrt_lanes;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -305,6 +306,13 @@ fn fit_piece(
     Ok(())
 }
 
+/// Local coordinate `t = (2 delta - l - r)/(r - l)` in `[-1, 1]` of
+/// `delta` on the panel `[l, r]`.
+#[inline(always)]
+fn local_coordinate(delta: f64, l: f64, r: f64) -> f64 {
+    ((2.0 * delta - l - r) / (r - l)).clamp(-1.0, 1.0)
+}
+
 impl BranchTable {
     /// Panel index and local coordinate `t` in `[-1, 1]`, inside the table.
     #[inline]
@@ -315,13 +323,21 @@ impl BranchTable {
         }
         let i = self.edges.partition_point(|&e| e <= delta).clamp(1, n) - 1;
         let (l, r) = (self.edges[i], self.edges[i + 1]);
-        Some((i, ((2.0 * delta - l - r) / (r - l)).clamp(-1.0, 1.0)))
+        Some((i, local_coordinate(delta, l, r)))
     }
 
     /// As [`locate`](Self::locate), walking from panel `*hint` (updated):
     /// the same panel, found in O(1) when consecutive calls are close.
     #[inline]
     fn locate_from(&self, delta: f64, hint: &mut usize) -> Option<(usize, f64)> {
+        let i = self.panel_from(delta, hint)?;
+        let (l, r) = (self.edges[i], self.edges[i + 1]);
+        Some((i, local_coordinate(delta, l, r)))
+    }
+
+    /// The panel of [`locate_from`](Self::locate_from) alone.
+    #[inline]
+    fn panel_from(&self, delta: f64, hint: &mut usize) -> Option<usize> {
         let n = self.load.len();
         if n == 0 || !(delta >= self.edges[0] && delta <= self.edges[n]) {
             return None;
@@ -336,8 +352,7 @@ impl BranchTable {
             i -= 1;
         }
         *hint = i;
-        let (l, r) = (self.edges[i], self.edges[i + 1]);
-        Some((i, ((2.0 * delta - l - r) / (r - l)).clamp(-1.0, 1.0)))
+        Some(i)
     }
 
     #[inline]
@@ -372,6 +387,158 @@ impl BranchTable {
     fn eval(&self, delta: f64) -> Option<ContactState> {
         let (i, t) = self.locate(delta)?;
         Some(self.eval_at(i, t))
+    }
+}
+
+/// Asperities evaluated together by [`InterpolatedLaw::state_batch`]
+/// (four AVX-512 vectors).
+const GROUP: usize = 32;
+
+/// [`InterpolatedLaw::state_batch`] as a [`pulp::WithSimd`] operation: per
+/// group of [`GROUP`] asperities, the panels are found by a scalar walk,
+/// then the two Clenshaw sums (load, `a^2`) and the square root run in
+/// SIMD lanes with each lane's own coefficients, in the operation order of
+/// [`clenshaw`] (so bit for bit the scalar evaluation).
+struct TableBatch<'a> {
+    law: &'a InterpolatedLaw,
+    delta: &'a [f64],
+    delta_max: Option<&'a [f64]>,
+    load: &'a mut [f64],
+    radius: &'a mut [f64],
+}
+
+/// For every lane `j`: the load `clenshaw(load_j, t_j)` and the squared
+/// radius `max(clenshaw(r2_j, t_j), 0)` (0 outside contact; the caller takes
+/// the root), with coefficient `k` of lane `j` given by `load(j, k)`,
+/// `r2(j, k)`: the operations of [`clenshaw`] in its order, lane by lane.
+#[inline(always)]
+fn clenshaw_lanes(
+    t: &[f64; GROUP],
+    load: impl Fn(usize, usize) -> f64,
+    r2: impl Fn(usize, usize) -> f64,
+    contact: impl Fn(usize) -> bool,
+) -> ([f64; GROUP], [f64; GROUP]) {
+    let (mut b1l, mut b2l, mut b1r, mut b2r) =
+        ([0.0; GROUP], [0.0; GROUP], [0.0; GROUP], [0.0; GROUP]);
+    for k in (1..=DEG).rev() {
+        for j in 0..GROUP {
+            let x2 = 2.0 * t[j];
+            let bl = x2 * b1l[j] - b2l[j] + load(j, k);
+            let br = x2 * b1r[j] - b2r[j] + r2(j, k);
+            (b2l[j], b1l[j]) = (b1l[j], bl);
+            (b2r[j], b1r[j]) = (b1r[j], br);
+        }
+    }
+    let (mut p, mut q) = ([0.0; GROUP], [0.0; GROUP]);
+    for j in 0..GROUP {
+        p[j] = t[j] * b1l[j] - b2l[j] + load(j, 0);
+        let s = t[j] * b1r[j] - b2r[j] + r2(j, 0);
+        q[j] = if contact(j) { s.max(0.0) } else { 0.0 };
+    }
+    (p, q)
+}
+
+impl TableBatch<'_> {
+    /// The branch table and panel holding every lane of a group, if one
+    /// does (a sorted population's group nearly always lies on one panel):
+    /// one branch, no NaN, and the least and greatest interference on the
+    /// same panel (the panel index is monotone in `delta`).
+    #[inline(always)]
+    fn common_panel(
+        &self,
+        d: &[f64; GROUP],
+        retract: &[bool; GROUP],
+        hint: &mut [usize; 2],
+    ) -> Option<(usize, usize)> {
+        if retract.iter().any(|&x| x != retract[0]) {
+            return None;
+        }
+        let (mut lo, mut hi, mut nan) = (d[0], d[0], false);
+        for &x in d {
+            lo = if x < lo { x } else { lo };
+            hi = if x > hi { x } else { hi };
+            nan |= x.is_nan();
+        }
+        let k = usize::from(retract[0]);
+        let table = &self.law.tables[k];
+        let i = table.panel_from(lo, &mut hint[k])?;
+        let mut upper = i;
+        (!nan && table.panel_from(hi, &mut upper)? == i).then_some((k, i))
+    }
+}
+
+impl pulp::WithSimd for TableBatch<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, simd: S) {
+        const ZERO: [f64; DEG + 1] = [0.0; DEG + 1];
+        let law = self.law;
+        let n = self.delta.len().min(self.load.len()).min(self.radius.len());
+        let n = self.delta_max.map_or(n, |m| n.min(m.len()));
+        let mut hint = [0usize; 2];
+        let mut start = 0;
+        while start < n {
+            let len = GROUP.min(n - start);
+            // The group's interferences and branches, padded with its
+            // first lane.
+            let mut d = [self.delta[start]; GROUP];
+            d[..len].copy_from_slice(&self.delta[start..start + len]);
+            let mut retract = [false; GROUP];
+            if let Some(m) = self.delta_max {
+                for j in 0..GROUP {
+                    retract[j] = law.branch_after(m[start + j.min(len - 1)]) == Branch::Retract;
+                }
+            }
+            let mut t = [0.0; GROUP];
+            let mut inside = [true; GROUP];
+            let (p, mut q) = if let Some((k, i)) = self.common_panel(&d, &retract, &mut hint) {
+                // One panel: its coefficients broadcast to every lane.
+                let table = &law.tables[k];
+                let (l, r) = (table.edges[i], table.edges[i + 1]);
+                for j in 0..GROUP {
+                    t[j] = local_coordinate(d[j], l, r);
+                }
+                let (a, b, c) = (&table.load[i], &table.r2[i], table.contact[i]);
+                clenshaw_lanes(&t, |_, k| a[k], |_, k| b[k], |_| c)
+            } else {
+                // Each lane its own panel (found by a walk from the last
+                // one) or, outside the table, the wrapped law.
+                let (mut l, mut r) = ([-1.0; GROUP], [1.0; GROUP]);
+                let mut cl = [&ZERO; GROUP];
+                let mut cr = [&ZERO; GROUP];
+                let mut contact = [false; GROUP];
+                for j in 0..len {
+                    let k = usize::from(retract[j]);
+                    let table = &law.tables[k];
+                    match table.panel_from(d[j], &mut hint[k]) {
+                        Some(i) => {
+                            (l[j], r[j]) = (table.edges[i], table.edges[i + 1]);
+                            (cl[j], cr[j]) = (&table.load[i], &table.r2[i]);
+                            contact[j] = table.contact[i];
+                        }
+                        None => {
+                            let branch = [Branch::Approach, Branch::Retract][k];
+                            let s = law.inner.state(d[j], branch);
+                            (self.load[start + j], self.radius[start + j]) = (s.load, s.radius);
+                            (inside[j], d[j]) = (false, 0.0);
+                        }
+                    }
+                }
+                for j in 0..GROUP {
+                    t[j] = local_coordinate(d[j], l[j], r[j]);
+                }
+                clenshaw_lanes(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j])
+            };
+            sqrt_lanes(simd, &mut q);
+            for j in 0..len {
+                if inside[j] {
+                    self.load[start + j] = p[j];
+                    self.radius[start + j] = q[j];
+                }
+            }
+            start += len;
+        }
     }
 }
 
@@ -443,7 +610,8 @@ impl AsperityLaw for InterpolatedLaw {
     /// Sorted input (a population's heights) finds each panel by walking
     /// from the previous one (amortised O(1)) instead of a binary search;
     /// the panel found, and so every value, is the one
-    /// [`state`](AsperityLaw::state) finds (bit for bit).
+    /// [`state`](AsperityLaw::state) finds (bit for bit). The Clenshaw sums
+    /// of a group of asperities run in SIMD lanes (`TableBatch`).
     fn state_batch(
         &self,
         delta: &[f64],
@@ -451,28 +619,13 @@ impl AsperityLaw for InterpolatedLaw {
         load: &mut [f64],
         radius: &mut [f64],
     ) {
-        let mut hint = [0usize; 2];
-        let out = load.iter_mut().zip(radius.iter_mut());
-        let mut one = |d: f64, branch: Branch| {
-            let k = usize::from(branch == Branch::Retract);
-            self.tables[k]
-                .eval_from(d, &mut hint[k])
-                .unwrap_or_else(|| self.inner.state(d, branch))
-        };
-        match delta_max {
-            None => {
-                for (&d, (l, r)) in delta.iter().zip(out) {
-                    let s = one(d, Branch::Approach);
-                    (*l, *r) = (s.load, s.radius);
-                }
-            }
-            Some(m) => {
-                for ((&d, &m), (l, r)) in delta.iter().zip(m).zip(out) {
-                    let s = one(d, self.branch_after(m));
-                    (*l, *r) = (s.load, s.radius);
-                }
-            }
-        }
+        pulp::Arch::new().dispatch(TableBatch {
+            law: self,
+            delta,
+            delta_max,
+            load,
+            radius,
+        });
     }
 
     fn attach_interference(&self) -> f64 {

@@ -18,6 +18,7 @@
 use super::{AsperityLaw, Branch, ContactState, Control, Instability};
 use crate::error::Result;
 use crate::material::MaugisScales;
+use crate::numeric::lanes::sqrt_lanes;
 
 /// `sqrt(8/3)`.
 const B: f64 = 1.632_993_161_855_452_1;
@@ -135,19 +136,6 @@ fn newton_step(x: f64, d: f64) -> (f64, bool) {
 #[inline(always)]
 fn radius_from_root(x: f64) -> f64 {
     x.max(XC) * x.max(XC)
-}
-
-/// `v[j] = sqrt(v[j])` in the CPU's SIMD registers (correctly rounded,
-/// as the scalar `f64::sqrt`).
-#[inline(always)]
-fn sqrt_lanes<S: pulp::Simd>(simd: S, v: &mut [f64; GROUP]) {
-    let (head, tail) = S::as_mut_simd_f64s(v);
-    for x in head {
-        *x = simd.sqrt_f64s(*x);
-    }
-    for x in tail {
-        *x = x.sqrt();
-    }
 }
 
 /// Lanes solved together by [`Jkr::state_batch`]: four AVX-512 vectors, so

@@ -102,6 +102,51 @@ fn batch_equals_scalar_bit_for_bit_for_every_law() {
     }
 }
 
+/// A tabulated law's batch on dense sorted input (whole groups on one
+/// panel: coefficients broadcast) and on groups that straddle panels, hold
+/// a NaN or change branch (coefficients per lane), against the scalar law
+/// bit for bit.
+#[test]
+fn tabulated_batch_on_one_panel_and_across_panels_equals_scalar() {
+    let md = Arc::new(Maugis::new(R, E_STAR, 0.5, 0.3).unwrap());
+    let law = InterpolatedLaw::new(md, -3e-9, 2e-8, 1e-9).unwrap();
+    let mut d: Vec<f64> = (0..20_000)
+        .map(|k| -2e-9 + 2e-8 * k as f64 / 19_999.0)
+        .collect();
+    d[5_000] = f64::NAN;
+    // Maxima on both sides of the attach interference within a group.
+    let m: Vec<f64> = d
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| {
+            if i % 97 == 0 {
+                -5e-9
+            } else {
+                x.max(0.0) + 1e-9
+            }
+        })
+        .collect();
+    let (mut load, mut radius) = (vec![0.0; d.len()], vec![0.0; d.len()]);
+    for history in [None, Some(&m[..])] {
+        law.state_batch(&d, history, &mut load, &mut radius);
+        for (i, &x) in d.iter().enumerate() {
+            let s = match history {
+                None => law.state(x, Branch::Approach),
+                Some(m) => law.state_after(x, m[i]),
+            };
+            assert!(
+                load[i].to_bits() == s.load.to_bits() || (load[i].is_nan() && s.load.is_nan()),
+                "{i} {x:e}"
+            );
+            assert!(
+                radius[i].to_bits() == s.radius.to_bits()
+                    || (radius[i].is_nan() && s.radius.is_nan()),
+                "{i} {x:e}"
+            );
+        }
+    }
+}
+
 /// The laws that say they are reversible (Monte Carlo then skips their
 /// maximum interferences on retraction) retract along their approach bit
 /// for bit; no hysteretic law says so.
