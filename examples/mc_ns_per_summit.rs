@@ -1,8 +1,9 @@
 //! CPU nanoseconds per summit of `MonteCarlo::state` on one thread, per law:
-//! `cargo run --release --example mc_ns_per_summit [repeats] [law]` (one law
-//! by name, e.g. `hertz`, for profiling; all by default).
+//! `cargo run --release --example mc_ns_per_summit [repeats] [law] [summits]`
+//! (one law by name, e.g. `hertz`, for profiling, or `all`, the default;
+//! 1e6 summits by default).
 //!
-//! 1e6 summits (exponential heights, sigma = 5 nm, R = 1 um), every summit
+//! Summits with exponential heights (sigma = 5 nm, R = 1 um), every summit
 //! in range (`d = -sigma`), load + area + count, on a 1-thread rayon pool.
 //! Process CPU time from `/proc/self/stat` (Linux; utime + stime) around
 //! the repeated states, so other processes' load does not count; the
@@ -21,7 +22,6 @@ use std::time::Instant;
 
 const R: f64 = 1e-6;
 const SIGMA: f64 = 5e-9;
-const N: usize = 1_000_000;
 
 /// utime + stime of this process (s), from /proc/self/stat.
 fn cpu_seconds() -> f64 {
@@ -38,7 +38,11 @@ fn main() {
         .nth(1)
         .and_then(|a| a.parse().ok())
         .unwrap_or(1);
-    let spec = PopulationSpec::new(N, SIGMA, RadiusSpec::Fixed(R), 1).unwrap();
+    let n_summits: usize = std::env::args()
+        .nth(3)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(1_000_000);
+    let spec = PopulationSpec::new(n_summits, SIGMA, RadiusSpec::Fixed(R), 1).unwrap();
     let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
     let contact = AsperityContact::new(R, 4.8e10, Adhesion::new(0.5, 3e-10).unwrap()).unwrap();
     let laws: Vec<(&str, SummitLaw, usize)> = vec![
@@ -86,11 +90,11 @@ fn main() {
     println!("law, history, CPU ns/summit (1 thread), wall ns/summit");
     let only = std::env::args().nth(2);
     for (name, law, k) in laws {
-        if only.as_deref().is_some_and(|o| o != name) {
+        if only.as_deref().is_some_and(|o| o != name && o != "all") {
             continue;
         }
         let mc = MonteCarlo::new(pop.clone(), law).unwrap();
-        let k = k * repeats;
+        let k = (k * repeats * 1_000_000).div_ceil(n_summits);
         for (hname, history) in [
             ("approach", History::Approach),
             (
@@ -110,7 +114,7 @@ fn main() {
                     );
                 }
                 let (cpu, wall) = (cpu_seconds() - c0, t0.elapsed().as_secs_f64());
-                let per = 1e9 / (k * N) as f64;
+                let per = 1e9 / (k * n_summits) as f64;
                 println!("{name:14} {hname:9} {:8.2} {:8.2}", cpu * per, wall * per);
             });
         }
