@@ -289,7 +289,6 @@ impl GwModel {
         let sigma = self.surface.sigma;
         let law = self.law.as_ref();
         let dist = self.distribution.as_ref();
-        let accuracy = &self.accuracy;
         let (sup_lo, sup_hi) = dist.numerical_support(SUPPORT_EPS);
         // Below the cutoff every branch gives exactly zero: skip.
         let s_lo = ((d + law.cutoff_interference()) / sigma).max(sup_lo);
@@ -314,57 +313,42 @@ impl GwModel {
             });
         }
         let points = self.split_points(d, history, s_lo, s_hi);
-        // Load alone needs no contact radius: cheaper for tabulated laws.
         let load_only = obs.load_only();
         // Consecutive nodes lie in one quadrature panel: a tabulated law
         // finds its own panel by a short walk from the previous one
         // (`state_near`, the same values as `state`).
         let mut cursor = LawCursor::default();
-        let eval = |s: f64| -> [f64; SLOTS] {
-            let delta = sigma * s - d;
-            let w = match far {
-                Some(r) => dist.pdf_ratio(s, r),
-                None => dist.pdf(s),
-            };
-            let delta_max = match history {
-                History::Approach => None,
-                History::Retract { closest } => Some(sigma * s - closest),
-            };
-            if load_only {
-                let mut v = [0.0; SLOTS];
-                v[0] = law.load_near(delta, delta_max, &mut cursor) * w;
-                return v;
-            }
-            let st = law.state_near(delta, delta_max, &mut cursor);
-            obs.evaluate(&st).map(|x| x * w)
+        let weight = |s: f64| match far {
+            Some(r) => dist.pdf_ratio(s, r),
+            None => dist.pdf(s),
         };
-        let opts = QuadOptions {
-            rel_tol: accuracy.rel_tol,
-            abs_tol: 0.0,
-            max_intervals: accuracy.max_intervals,
-            relative_to_magnitude: true,
+        let delta_max = |s: f64| match history {
+            History::Approach => None,
+            History::Retract { closest } => Some(sigma * s - closest),
         };
         let n_total = match far {
             Some(r) => FarTailScale::new(self.surface.summits(), dist.log_pdf(r)),
             None => FarTailScale::new(self.surface.summits(), 0.0),
         };
-        let (value, error, evaluations, method) = if let Method::Fixed { panels } = accuracy.method
-        {
-            let (v, e, n) = fixed_rule(eval, &points, panels.max(1));
-            (v, e, n, MethodUsed::Fixed)
+        // Load alone needs no contact radius (cheaper for tabulated laws),
+        // and a one-component integrand spares the rule the four empty
+        // slots: every operation on the load is the same, so the same bits.
+        let (value, error, evaluations, method) = if load_only {
+            let eval = |s: f64| -> [f64; 1] {
+                [law.load_near(sigma * s - d, delta_max(s), &mut cursor) * weight(s)]
+            };
+            let (v, e, n, m) = self.integrate(eval, &points, d)?;
+            let mut value = [0.0; SLOTS];
+            let mut error = [0.0; SLOTS];
+            (value[0], error[0]) = (v[0], e[0]);
+            (value, error, n, m)
         } else {
-            let q = integrate_pieces_n(eval, &points, &opts);
-            if !q.converged {
-                let worst = (0..SLOTS)
-                    .map(|i| q.error[i] / q.value[i].abs().max(f64::MIN_POSITIVE))
-                    .fold(0.0, f64::max);
-                return Err(Error::NoConvergence {
-                    what: format!("GW quadrature of {} at separation {d:e} m", law.name()),
-                    iterations: q.evaluations,
-                    residual: worst,
-                });
-            }
-            (q.value, q.error, q.evaluations, MethodUsed::Quadrature)
+            let eval = |s: f64| -> [f64; SLOTS] {
+                let st = law.state_near(sigma * s - d, delta_max(s), &mut cursor);
+                let w = weight(s);
+                obs.evaluate(&st).map(|x| x * w)
+            };
+            self.integrate(eval, &points, d)?
         };
         Ok(State {
             separation: d,
@@ -376,6 +360,42 @@ impl GwModel {
             method,
             evaluations,
         })
+    }
+
+    /// The accuracy's rule over the pieces `points`: values, error
+    /// estimates, evaluations and the method used.
+    ///
+    /// # Errors
+    /// [`Error::NoConvergence`] when adaptive quadrature misses the
+    /// tolerance (at separation `d`, for the message).
+    fn integrate<const N: usize, F: FnMut(f64) -> [f64; N]>(
+        &self,
+        eval: F,
+        points: &[f64],
+        d: f64,
+    ) -> Result<([f64; N], [f64; N], usize, MethodUsed)> {
+        if let Method::Fixed { panels } = self.accuracy.method {
+            let (v, e, n) = fixed_rule(eval, points, panels.max(1));
+            return Ok((v, e, n, MethodUsed::Fixed));
+        }
+        let opts = QuadOptions {
+            rel_tol: self.accuracy.rel_tol,
+            abs_tol: 0.0,
+            max_intervals: self.accuracy.max_intervals,
+            relative_to_magnitude: true,
+        };
+        let q = integrate_pieces_n(eval, points, &opts);
+        if !q.converged {
+            let worst = (0..N)
+                .map(|i| q.error[i] / q.value[i].abs().max(f64::MIN_POSITIVE))
+                .fold(0.0, f64::max);
+            return Err(Error::NoConvergence {
+                what: format!("GW quadrature of {} at separation {d:e} m", self.law.name()),
+                iterations: q.evaluations,
+                residual: worst,
+            });
+        }
+        Ok((q.value, q.error, q.evaluations, MethodUsed::Quadrature))
     }
 
     /// Panel ends in `s`: the range, every law breakpoint (both branches),
@@ -481,12 +501,12 @@ impl FarTailScale {
 
 /// The fixed composite rule: `panels` K21 panels on every piece; returns
 /// values, error estimates and evaluations.
-fn fixed_rule<F: FnMut(f64) -> [f64; SLOTS]>(
+fn fixed_rule<const N: usize, F: FnMut(f64) -> [f64; N]>(
     mut eval: F,
     points: &[f64],
     panels: usize,
-) -> ([f64; SLOTS], [f64; SLOTS], usize) {
-    let (mut value, mut error) = ([0.0; SLOTS], [0.0; SLOTS]);
+) -> ([f64; N], [f64; N], usize) {
+    let (mut value, mut error) = ([0.0; N], [0.0; N]);
     let mut evaluations = 0;
     for w in points.windows(2) {
         let step = (w[1] - w[0]) / panels as f64;
@@ -495,7 +515,7 @@ fn fixed_rule<F: FnMut(f64) -> [f64; SLOTS]>(
             let b = if k + 1 == panels { w[1] } else { a + step };
             let (v, e, _) = kronrod21_n(&mut eval, a, b);
             evaluations += 21;
-            for i in 0..SLOTS {
+            for i in 0..N {
                 value[i] += v[i];
                 error[i] += e[i];
             }
