@@ -27,7 +27,7 @@ use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
 use crate::law::{AsperityLaw, Branch, LawCursor};
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
-use crate::numeric::quadrature::{integrate_pieces_n, kronrod21_n, QuadOptions};
+use crate::numeric::quadrature::{integrate_pieces_batch, kronrod21_batch, QuadOptions};
 use rayon::prelude::*;
 use std::sync::Arc;
 
@@ -333,9 +333,23 @@ impl GwModel {
         // Load alone needs no contact radius (cheaper for tabulated laws),
         // and a one-component integrand spares the rule the four empty
         // slots: every operation on the load is the same, so the same bits.
+        // A panel's 21 nodes are evaluated in one call, ascending: one walk
+        // through a table's panels, and a tabulated law's sums interleaved
+        // (`load_near_batch`, the same values as `load_near`).
         let (value, error, evaluations, method) = if load_only {
-            let eval = |s: f64| -> [f64; 1] {
-                [law.load_near(sigma * s - d, delta_max(s), &mut cursor) * weight(s)]
+            let eval = |x: &[f64; 21], out: &mut [[f64; 1]; 21]| {
+                let delta = x.map(|s| sigma * s - d);
+                let mut load = [0.0; 21];
+                match history {
+                    History::Approach => law.load_near_batch(&delta, None, &mut load, &mut cursor),
+                    History::Retract { closest } => {
+                        let dm = x.map(|s| sigma * s - closest);
+                        law.load_near_batch(&delta, Some(&dm), &mut load, &mut cursor)
+                    }
+                }
+                for k in 0..21 {
+                    out[k] = [load[k] * weight(x[k])];
+                }
             };
             let (v, e, n, m) = self.integrate(eval, &points, d)?;
             let mut value = [0.0; SLOTS];
@@ -343,10 +357,12 @@ impl GwModel {
             (value[0], error[0]) = (v[0], e[0]);
             (value, error, n, m)
         } else {
-            let eval = |s: f64| -> [f64; SLOTS] {
-                let st = law.state_near(sigma * s - d, delta_max(s), &mut cursor);
-                let w = weight(s);
-                obs.evaluate(&st).map(|x| x * w)
+            let eval = |x: &[f64; 21], out: &mut [[f64; SLOTS]; 21]| {
+                for (o, &s) in out.iter_mut().zip(x) {
+                    let st = law.state_near(sigma * s - d, delta_max(s), &mut cursor);
+                    let w = weight(s);
+                    *o = obs.evaluate(&st).map(|x| x * w);
+                }
             };
             self.integrate(eval, &points, d)?
         };
@@ -368,7 +384,7 @@ impl GwModel {
     /// # Errors
     /// [`Error::NoConvergence`] when adaptive quadrature misses the
     /// tolerance (at separation `d`, for the message).
-    fn integrate<const N: usize, F: FnMut(f64) -> [f64; N]>(
+    fn integrate<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N]; 21])>(
         &self,
         eval: F,
         points: &[f64],
@@ -384,7 +400,7 @@ impl GwModel {
             max_intervals: self.accuracy.max_intervals,
             relative_to_magnitude: true,
         };
-        let q = integrate_pieces_n(eval, points, &opts);
+        let q = integrate_pieces_batch(eval, points, &opts);
         if !q.converged {
             let worst = (0..N)
                 .map(|i| q.error[i] / q.value[i].abs().max(f64::MIN_POSITIVE))
@@ -501,7 +517,7 @@ impl FarTailScale {
 
 /// The fixed composite rule: `panels` K21 panels on every piece; returns
 /// values, error estimates and evaluations.
-fn fixed_rule<const N: usize, F: FnMut(f64) -> [f64; N]>(
+fn fixed_rule<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N]; 21])>(
     mut eval: F,
     points: &[f64],
     panels: usize,
@@ -513,7 +529,7 @@ fn fixed_rule<const N: usize, F: FnMut(f64) -> [f64; N]>(
         for k in 0..panels {
             let a = w[0] + step * k as f64;
             let b = if k + 1 == panels { w[1] } else { a + step };
-            let (v, e, _) = kronrod21_n(&mut eval, a, b);
+            let (v, e, _) = kronrod21_batch(&mut eval, a, b);
             evaluations += 21;
             for i in 0..N {
                 value[i] += v[i];
