@@ -114,9 +114,11 @@ impl InterpolatedLaw {
         Allowed::open(lo, inner.max_interference()).check("hi", hi)?;
         let p_scale = inner.pull_off(Control::Load).map_or(0.0, |p| p.load.abs());
         let a_scale = inner.zero_load_radius().unwrap_or(0.0);
-        let mut evaluations = 0;
-        let mut tables = [BranchTable::default(), BranchTable::default()];
-        for (t, branch) in tables.iter_mut().zip([Branch::Approach, Branch::Retract]) {
+        // The two branches are independent: built side by side (rayon), each
+        // by the same serial code, so the tables do not depend on threads.
+        let build = |branch: Branch| -> Result<(BranchTable, usize)> {
+            let mut evaluations = 0;
+            let mut t = BranchTable::default();
             let mut cuts = vec![lo.max(inner.cutoff_interference().max(f64::MIN)), hi];
             cuts.extend(
                 inner
@@ -149,11 +151,17 @@ impl InterpolatedLaw {
                     tol,
                     p_scale,
                     a_scale,
-                    t,
+                    &mut t,
                     &mut evaluations,
                 )?;
             }
-        }
+            Ok((t, evaluations))
+        };
+        let (approach, retract) =
+            rayon::join(|| build(Branch::Approach), || build(Branch::Retract));
+        let ((approach, ea), (retract, er)) = (approach?, retract?);
+        let tables = [approach, retract];
+        let evaluations = ea + er;
         Ok(InterpolatedLaw {
             attach: inner.attach_interference(),
             inner,
