@@ -109,6 +109,8 @@ pub struct GwModel {
     distribution: Arc<dyn HeightDistribution>,
     law: Arc<dyn AsperityLaw>,
     accuracy: Accuracy,
+    /// `distribution.numerical_support(SUPPORT_EPS)`, computed once.
+    support: (f64, f64),
 }
 
 impl GwModel {
@@ -136,11 +138,13 @@ impl GwModel {
                 ),
             ));
         }
+        let support = distribution.numerical_support(SUPPORT_EPS);
         Ok(GwModel {
             surface,
             distribution,
             law,
             accuracy: Accuracy::DEFAULT,
+            support,
         })
     }
 
@@ -204,7 +208,7 @@ impl GwModel {
     /// whole program.
     pub fn reachable_interferences(&self, closest: f64) -> (f64, f64) {
         let sigma = self.surface.sigma;
-        let (_, s_top) = self.distribution.numerical_support(SUPPORT_EPS);
+        let (_, s_top) = self.support;
         let lo = self
             .law
             .cutoff_interference()
@@ -289,7 +293,7 @@ impl GwModel {
         let sigma = self.surface.sigma;
         let law = self.law.as_ref();
         let dist = self.distribution.as_ref();
-        let (sup_lo, sup_hi) = dist.numerical_support(SUPPORT_EPS);
+        let (sup_lo, sup_hi) = self.support;
         // Below the cutoff every branch gives exactly zero: skip.
         let s_lo = ((d + law.cutoff_interference()) / sigma).max(sup_lo);
         // Far in the upper tail the density is factored out at `s_lo` (so
@@ -420,7 +424,8 @@ impl GwModel {
     fn split_points(&self, d: f64, history: History, s_lo: f64, s_hi: f64) -> Vec<f64> {
         let sigma = self.surface.sigma;
         let law = self.law.as_ref();
-        let mut pts = vec![s_lo, s_hi];
+        let mut pts = Vec::with_capacity(16);
+        pts.extend([s_lo, s_hi]);
         let mut add = |s: f64| {
             if s > s_lo && s < s_hi {
                 pts.push(s);
@@ -601,7 +606,7 @@ impl LoadingModel for GwModel {
     /// beyond it every total is exactly zero (laws whose load vanishes) or
     /// negligible (long-range laws, which are never cut).
     fn interaction_onset(&self) -> f64 {
-        let (_, s_hi) = self.distribution.numerical_support(SUPPORT_EPS);
+        let (_, s_hi) = self.support;
         self.surface.sigma * s_hi - self.law.interaction_range()
     }
 

@@ -115,29 +115,30 @@ pub fn kronrod21_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
     let c = 0.5 * (a + b);
     let h = 0.5 * (b - a);
     let mut fv = [[0.0; N]; 21];
-    fv[20] = f(c);
+    fv[10] = f(c);
     for j in 0..10 {
         let dx = h * XGK[j];
-        fv[2 * j] = f(c - dx);
-        fv[2 * j + 1] = f(c + dx);
+        fv[j] = f(c - dx);
+        fv[20 - j] = f(c + dx);
     }
     kronrod21_sums(&fv, h)
 }
 
-/// The K21 sums of one panel of half-width `h` from its values `fv`
-/// (`fv[2j]`, `fv[2j + 1]` at `c -+ h XGK[j]`, `fv[20]` at the centre).
+/// The K21 sums of one panel of half-width `h` from its values `fv` at
+/// the ascending abscissae ([`kronrod21_nodes`]: `fv[j]`, `fv[20 - j]` at
+/// `c -+ h XGK[j]`, `fv[10]` at the centre).
 #[inline]
 fn kronrod21_sums<const N: usize>(fv: &[[f64; N]; 21], h: f64) -> ([f64; N], [f64; N], [f64; N]) {
     let mut value = [0.0; N];
     let mut error = [0.0; N];
     let mut magnitude = [0.0; N];
     for i in 0..N {
-        let fc = fv[20][i];
+        let fc = fv[10][i];
         let mut resk = WGK[10] * fc;
         let mut resg = 0.0;
         let mut resabs = resk.abs();
         for j in 0..10 {
-            let (f1, f2) = (fv[2 * j][i], fv[2 * j + 1][i]);
+            let (f1, f2) = (fv[j][i], fv[20 - j][i]);
             resk += WGK[j] * (f1 + f2);
             resabs += WGK[j] * (f1.abs() + f2.abs());
             if j % 2 == 1 {
@@ -147,16 +148,28 @@ fn kronrod21_sums<const N: usize>(fv: &[[f64; N]; 21], h: f64) -> ([f64; N], [f6
         let mean = 0.5 * resk;
         let mut resasc = WGK[10] * (fc - mean).abs();
         for j in 0..10 {
-            resasc += WGK[j] * ((fv[2 * j][i] - mean).abs() + (fv[2 * j + 1][i] - mean).abs());
+            resasc += WGK[j] * ((fv[j][i] - mean).abs() + (fv[20 - j][i] - mean).abs());
         }
         let resabs = resabs * h.abs();
         let resasc = resasc * h.abs();
+        let floored = resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON);
+        let floor = 50.0 * f64::EPSILON * resabs;
         let mut err = ((resk - resg) * h).abs();
         if resasc != 0.0 && err != 0.0 {
-            err = resasc * (200.0 * err / resasc).powf(1.5).min(1.0);
+            let x = 200.0 * err / resasc;
+            // `resasc min(1, x^1.5)` without the power where its value is
+            // known: `resasc` for `x >= 1`; for `x < 1`, `x^1.5 <= x`
+            // (rounded too), so below the floor when `resasc x` is.
+            err = if x >= 1.0 {
+                resasc
+            } else if floored && resasc * x <= floor {
+                floor
+            } else {
+                resasc * x.powf(1.5).min(1.0)
+            };
         }
-        if resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON) {
-            err = err.max(50.0 * f64::EPSILON * resabs);
+        if floored {
+            err = err.max(floor);
         }
         value[i] = resk * h;
         error[i] = err;
@@ -194,15 +207,8 @@ pub fn kronrod21_batch<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N]; 21])
     b: f64,
 ) -> ([f64; N], [f64; N], [f64; N]) {
     let x = kronrod21_nodes(a, b);
-    let mut sorted = [[0.0; N]; 21];
-    f(&x, &mut sorted);
-    // Back to kronrod21_n's layout: centre last, then (left, right) pairs.
     let mut fv = [[0.0; N]; 21];
-    fv[20] = sorted[10];
-    for j in 0..10 {
-        fv[2 * j] = sorted[j];
-        fv[2 * j + 1] = sorted[20 - j];
-    }
+    f(&x, &mut fv);
     kronrod21_sums(&fv, 0.5 * (b - a))
 }
 
