@@ -92,3 +92,45 @@ fn state_near_is_state_bit_for_bit_from_any_cursor() {
         }
     }
 }
+
+#[test]
+fn load_near_batch_is_load_bit_for_bit() {
+    let s = RoughSurface::gold_microswitch();
+    let (t, e) = (table(), exact());
+    let (lo, hi) = (e.cutoff_interference(), 40.0 * s.sigma);
+    let laws: [&dyn AsperityLaw; 2] = [&t, e.as_ref()];
+    for law in laws {
+        // Batches of every length up to 3 lanes' worth, ascending (a
+        // quadrature panel), shuffled, and reaching beyond both ends.
+        for n in [1, 5, 8, 9, 21, 24] {
+            for shuffled in [false, true] {
+                let x: Vec<f64> = (0..n)
+                    .map(|i| {
+                        let k = if shuffled { i * 7 % n } else { i };
+                        (k as f64 + 0.5) / n as f64
+                    })
+                    .collect();
+                let d: Vec<f64> = x
+                    .iter()
+                    .map(|x| lo - 0.1 * (hi - lo) + 1.2 * (hi - lo) * x)
+                    .collect();
+                // Both branches on retraction: a maximum either side of attach.
+                let dm: Vec<f64> = d
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &d)| if i % 3 == 0 { d } else { d + 0.3 * (hi - lo) })
+                    .collect();
+                let mut cursor = LawCursor { panels: [n; 2] };
+                let mut got = vec![f64::NAN; n];
+                law.load_near_batch(&d, None, &mut got, &mut cursor);
+                for (g, &d) in got.iter().zip(&d) {
+                    assert_eq!(g.to_bits(), law.load(d, Branch::Approach).to_bits());
+                }
+                law.load_near_batch(&d, Some(&dm), &mut got, &mut cursor);
+                for ((g, &d), &m) in got.iter().zip(&d).zip(&dm) {
+                    assert_eq!(g.to_bits(), law.load_after(d, m).to_bits());
+                }
+            }
+        }
+    }
+}

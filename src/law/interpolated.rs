@@ -33,6 +33,28 @@ const DEG: usize = 6;
 /// Panels below this fraction of the interval are accepted as they are.
 const MIN_WIDTH: f64 = 1e-12;
 
+/// Lanes of the interleaved Clenshaw sums of
+/// [`load_near_batch`](AsperityLaw::load_near_batch).
+const LANES: usize = 8;
+
+/// `clenshaw(&c[l], x[l])` for every lane with the recurrences interleaved
+/// (independent chains in flight instead of one latency-bound chain): the
+/// same operations per lane, so the same bits.
+#[inline(always)]
+fn clenshaw_lanes(c: &[[f64; DEG + 1]; LANES], x: &[f64; LANES]) -> [f64; LANES] {
+    let mut b1 = [0.0; LANES];
+    let mut b2 = [0.0; LANES];
+    let x2 = x.map(|t| 2.0 * t);
+    for j in (1..=DEG).rev() {
+        for l in 0..LANES {
+            let b = x2[l] * b1[l] - b2[l] + c[l][j];
+            b2[l] = b1[l];
+            b1[l] = b;
+        }
+    }
+    std::array::from_fn(|l| x[l] * b1[l] - b2[l] + c[l][0])
+}
+
 #[derive(Debug, Clone, Default)]
 struct BranchTable {
     /// Panel edges, ascending (`panels + 1` values).
@@ -93,9 +115,11 @@ impl InterpolatedLaw {
         Allowed::open(lo, inner.max_interference()).check("hi", hi)?;
         let p_scale = inner.pull_off(Control::Load).map_or(0.0, |p| p.load.abs());
         let a_scale = inner.zero_load_radius().unwrap_or(0.0);
-        let mut evaluations = 0;
-        let mut tables = [BranchTable::default(), BranchTable::default()];
-        for (t, branch) in tables.iter_mut().zip([Branch::Approach, Branch::Retract]) {
+        // The two branches are independent: built side by side (rayon), each
+        // by the same serial code, so the tables do not depend on threads.
+        let build = |branch: Branch| -> Result<(BranchTable, usize)> {
+            let mut evaluations = 0;
+            let mut t = BranchTable::default();
             let mut cuts = vec![lo.max(inner.cutoff_interference().max(f64::MIN)), hi];
             cuts.extend(
                 inner
@@ -128,11 +152,17 @@ impl InterpolatedLaw {
                     tol,
                     p_scale,
                     a_scale,
-                    t,
+                    &mut t,
                     &mut evaluations,
                 )?;
             }
-        }
+            Ok((t, evaluations))
+        };
+        let (approach, retract) =
+            rayon::join(|| build(Branch::Approach), || build(Branch::Retract));
+        let ((approach, ea), (retract, er)) = (approach?, retract?);
+        let tables = [approach, retract];
+        let evaluations = ea + er;
         Ok(InterpolatedLaw {
             attach: inner.attach_interference(),
             inner,
@@ -605,6 +635,51 @@ impl AsperityLaw for InterpolatedLaw {
         self.tables[k]
             .load_from(delta, &mut cursor.panels[k])
             .unwrap_or_else(|| self.inner.load(delta, branch))
+    }
+
+    /// Panels found by walking from the cursor (one walk for ascending
+    /// input), then up to eight Clenshaw sums interleaved; the same panel
+    /// and the same operations as [`load_near`](AsperityLaw::load_near),
+    /// so the same bits.
+    fn load_near_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        cursor: &mut LawCursor,
+    ) {
+        let n = delta
+            .len()
+            .min(load.len())
+            .min(delta_max.map_or(usize::MAX, <[f64]>::len));
+        let mut start = 0;
+        while start < n {
+            let m = (n - start).min(LANES);
+            let mut coef = [[0.0; DEG + 1]; LANES];
+            let mut t = [0.0; LANES];
+            let mut tabled = [false; LANES];
+            for l in 0..m {
+                let i = start + l;
+                let branch = delta_max.map_or(Branch::Approach, |dm| self.branch_after(dm[i]));
+                let k = usize::from(branch == Branch::Retract);
+                let table = &self.tables[k];
+                match table.locate_from(delta[i], &mut cursor.panels[k]) {
+                    Some((p, x)) => {
+                        coef[l] = table.load[p];
+                        t[l] = x;
+                        tabled[l] = true;
+                    }
+                    None => load[i] = self.inner.load(delta[i], branch),
+                }
+            }
+            let v = clenshaw_lanes(&coef, &t);
+            for l in 0..m {
+                if tabled[l] {
+                    load[start + l] = v[l];
+                }
+            }
+            start += m;
+        }
     }
 
     /// Sorted input (a population's heights) finds each panel by walking

@@ -179,6 +179,33 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         }
     }
 
+    /// [`load_near`](AsperityLaw::load_near) for each `delta[i]` (m), with
+    /// `delta_max[i]` (m) on retraction, into `load[i]` (N), bit for bit;
+    /// the slices have the same length (the shortest bounds the work).
+    /// Ascending `delta` (a quadrature panel's nodes) lets a tabulated law
+    /// find its panels by one walk and keep several evaluations in flight.
+    /// Default: one [`load_near`](AsperityLaw::load_near) after another.
+    fn load_near_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        cursor: &mut LawCursor,
+    ) {
+        match delta_max {
+            None => {
+                for (&d, l) in delta.iter().zip(load.iter_mut()) {
+                    *l = self.load_near(d, None, cursor);
+                }
+            }
+            Some(m) => {
+                for ((&d, &m), l) in delta.iter().zip(m).zip(load.iter_mut()) {
+                    *l = self.load_near(d, Some(m), cursor);
+                }
+            }
+        }
+    }
+
     /// Many asperities in one call (the Monte Carlo hot loop): for each `i`,
     /// `(load[i], radius[i])` (N, m) is `state(delta[i], Approach)` when
     /// `delta_max` is `None` and `state_after(delta[i], delta_max[i])`

@@ -80,6 +80,16 @@ macro_rules! table_evaluations {
         ) {
             self.table.state_batch(delta, delta_max, load, radius)
         }
+
+        fn load_near_batch(
+            &self,
+            delta: &[f64],
+            delta_max: Option<&[f64]>,
+            load: &mut [f64],
+            cursor: &mut LawCursor,
+        ) {
+            self.table.load_near_batch(delta, delta_max, load, cursor)
+        }
     };
 }
 

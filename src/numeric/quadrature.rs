@@ -115,22 +115,30 @@ pub fn kronrod21_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
     let c = 0.5 * (a + b);
     let h = 0.5 * (b - a);
     let mut fv = [[0.0; N]; 21];
-    fv[20] = f(c);
+    fv[10] = f(c);
     for j in 0..10 {
         let dx = h * XGK[j];
-        fv[2 * j] = f(c - dx);
-        fv[2 * j + 1] = f(c + dx);
+        fv[j] = f(c - dx);
+        fv[20 - j] = f(c + dx);
     }
+    kronrod21_sums(&fv, h)
+}
+
+/// The K21 sums of one panel of half-width `h` from its values `fv` at
+/// the ascending abscissae ([`kronrod21_nodes`]: `fv[j]`, `fv[20 - j]` at
+/// `c -+ h XGK[j]`, `fv[10]` at the centre).
+#[inline]
+fn kronrod21_sums<const N: usize>(fv: &[[f64; N]; 21], h: f64) -> ([f64; N], [f64; N], [f64; N]) {
     let mut value = [0.0; N];
     let mut error = [0.0; N];
     let mut magnitude = [0.0; N];
     for i in 0..N {
-        let fc = fv[20][i];
+        let fc = fv[10][i];
         let mut resk = WGK[10] * fc;
         let mut resg = 0.0;
         let mut resabs = resk.abs();
         for j in 0..10 {
-            let (f1, f2) = (fv[2 * j][i], fv[2 * j + 1][i]);
+            let (f1, f2) = (fv[j][i], fv[20 - j][i]);
             resk += WGK[j] * (f1 + f2);
             resabs += WGK[j] * (f1.abs() + f2.abs());
             if j % 2 == 1 {
@@ -140,22 +148,68 @@ pub fn kronrod21_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
         let mean = 0.5 * resk;
         let mut resasc = WGK[10] * (fc - mean).abs();
         for j in 0..10 {
-            resasc += WGK[j] * ((fv[2 * j][i] - mean).abs() + (fv[2 * j + 1][i] - mean).abs());
+            resasc += WGK[j] * ((fv[j][i] - mean).abs() + (fv[20 - j][i] - mean).abs());
         }
         let resabs = resabs * h.abs();
         let resasc = resasc * h.abs();
+        let floored = resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON);
+        let floor = 50.0 * f64::EPSILON * resabs;
         let mut err = ((resk - resg) * h).abs();
         if resasc != 0.0 && err != 0.0 {
-            err = resasc * (200.0 * err / resasc).powf(1.5).min(1.0);
+            let x = 200.0 * err / resasc;
+            // `resasc min(1, x^1.5)` without the power where its value is
+            // known: `resasc` for `x >= 1`; for `x < 1`, `x^1.5 <= x`
+            // (rounded too), so below the floor when `resasc x` is.
+            err = if x >= 1.0 {
+                resasc
+            } else if floored && resasc * x <= floor {
+                floor
+            } else {
+                resasc * x.powf(1.5).min(1.0)
+            };
         }
-        if resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON) {
-            err = err.max(50.0 * f64::EPSILON * resabs);
+        if floored {
+            err = err.max(floor);
         }
         value[i] = resk * h;
         error[i] = err;
         magnitude[i] = resabs;
     }
     (value, error, magnitude)
+}
+
+/// The 21 K21 abscissae on `[a, b]`, ascending (the order
+/// [`kronrod21_batch`] hands them to its evaluator), computed as
+/// [`kronrod21_n`] computes them.
+#[inline]
+pub fn kronrod21_nodes(a: f64, b: f64) -> [f64; 21] {
+    let c = 0.5 * (a + b);
+    let h = 0.5 * (b - a);
+    let mut x = [c; 21];
+    for j in 0..10 {
+        let dx = h * XGK[j];
+        x[j] = c - dx;
+        x[20 - j] = c + dx;
+    }
+    x
+}
+
+/// [`kronrod21_n`] with the integrand evaluated at all 21 abscissae in one
+/// call: `f(x, out)` fills `out[k]` with the integrand at `x[k]`, the
+/// abscissae ascending ([`kronrod21_nodes`]). The same abscissae and the
+/// same sums in the same order as [`kronrod21_n`]: bit for bit the same
+/// panel. An evaluator can then search a table once for sorted nodes and
+/// keep several independent evaluations in flight.
+#[inline]
+pub fn kronrod21_batch<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N]; 21])>(
+    f: &mut F,
+    a: f64,
+    b: f64,
+) -> ([f64; N], [f64; N], [f64; N]) {
+    let x = kronrod21_nodes(a, b);
+    let mut fv = [[0.0; N]; 21];
+    f(&x, &mut fv);
+    kronrod21_sums(&fv, 0.5 * (b - a))
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -232,13 +286,38 @@ pub fn integrate_pieces_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
     points: &[f64],
     opts: &QuadOptions,
 ) -> QuadratureN<N> {
+    adapt(|a, b| kronrod21_n(&mut f, a, b), points, opts)
+}
+
+/// [`integrate_pieces_n`] with the integrand evaluated a panel at a time
+/// ([`kronrod21_batch`]: `f(x, out)` for the 21 ascending abscissae `x`):
+/// the same panels, sums and decisions, so bit for bit the same result
+/// as [`integrate_pieces_n`] on the same (pure) integrand.
+pub fn integrate_pieces_batch<const N: usize, F>(
+    mut f: F,
+    points: &[f64],
+    opts: &QuadOptions,
+) -> QuadratureN<N>
+where
+    F: FnMut(&[f64; 21], &mut [[f64; N]; 21]),
+{
+    adapt(|a, b| kronrod21_batch(&mut f, a, b), points, opts)
+}
+
+/// The adaptive bisection over the pieces, with `rule(a, b)` one K21
+/// panel's (value, error, `int |f|`).
+#[inline]
+fn adapt<const N: usize, R>(mut rule: R, points: &[f64], opts: &QuadOptions) -> QuadratureN<N>
+where
+    R: FnMut(f64, f64) -> ([f64; N], [f64; N], [f64; N]),
+{
     let mut heap: BinaryHeap<Panel<N>> = BinaryHeap::new();
     let mut evaluations = 0;
     let mut sums = Sums::<N>::default();
     let mut fresh = Vec::with_capacity(points.len());
     for w in points.windows(2) {
         if w[1] > w[0] {
-            let (value, error, magnitude) = kronrod21_n(&mut f, w[0], w[1]);
+            let (value, error, magnitude) = rule(w[0], w[1]);
             evaluations += 21;
             let p = Panel {
                 a: w[0],
@@ -269,7 +348,7 @@ pub fn integrate_pieces_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
         sums.add(&worst, -1.0);
         let mut halves = [worst; 2];
         for (half, (a, b)) in halves.iter_mut().zip([(worst.a, mid), (mid, worst.b)]) {
-            let (value, error, magnitude) = kronrod21_n(&mut f, a, b);
+            let (value, error, magnitude) = rule(a, b);
             *half = Panel {
                 a,
                 b,
@@ -412,6 +491,31 @@ mod tests {
         let exact = [1f64.exp() - 1.0, 1e-9 * 2.0 / 3.0, 10f64.sin() / 10.0];
         for (v, e) in q.value.iter().zip(exact) {
             assert!((v - e).abs() <= 1e-12 * e.abs(), "{v} vs {e}");
+        }
+    }
+
+    #[test]
+    fn batch_evaluation_is_the_pointwise_rule_bit_for_bit() {
+        let f = |x: f64| [x.sin() * (-x * x).exp(), (3.0 * x).cos().abs().sqrt()];
+        let opts = QuadOptions::relative(1e-12);
+        let pts = [-2.0, -0.3, 0.1, 4.0];
+        let a = integrate_pieces_n(f, &pts, &opts);
+        let b = integrate_pieces_batch(
+            |x: &[f64; 21], out: &mut [[f64; 2]; 21]| {
+                assert!(x.windows(2).all(|w| w[0] < w[1]), "ascending");
+                for (o, &x) in out.iter_mut().zip(x) {
+                    *o = f(x);
+                }
+            },
+            &pts,
+            &opts,
+        );
+        assert!(a.evaluations > 21 * 3, "refined: {}", a.evaluations);
+        assert_eq!(a.evaluations, b.evaluations);
+        assert_eq!(a.converged, b.converged);
+        for i in 0..2 {
+            assert_eq!(a.value[i].to_bits(), b.value[i].to_bits());
+            assert_eq!(a.error[i].to_bits(), b.error[i].to_bits());
         }
     }
 
