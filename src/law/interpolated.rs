@@ -37,22 +37,24 @@ const MIN_WIDTH: f64 = 1e-12;
 /// [`load_near_batch`](AsperityLaw::load_near_batch).
 const LANES: usize = 8;
 
-/// `clenshaw(&c[l], x[l])` for every lane with the recurrences interleaved
-/// (independent chains in flight instead of one latency-bound chain): the
-/// same operations per lane, so the same bits.
+/// `clenshaw(c_l, x[l])` for every lane `l`, coefficient `j` of lane `l`
+/// given by `c(l, j)`, with the recurrences interleaved (independent
+/// chains in flight instead of one latency-bound chain; in SIMD lanes
+/// inside a `pulp` operation): the same operations per lane as
+/// [`clenshaw`], so the same bits.
 #[inline(always)]
-fn clenshaw_lanes(c: &[[f64; DEG + 1]; LANES], x: &[f64; LANES]) -> [f64; LANES] {
-    let mut b1 = [0.0; LANES];
-    let mut b2 = [0.0; LANES];
+fn clenshaw_lanes<const L: usize>(x: &[f64; L], c: impl Fn(usize, usize) -> f64) -> [f64; L] {
+    let mut b1 = [0.0; L];
+    let mut b2 = [0.0; L];
     let x2 = x.map(|t| 2.0 * t);
     for j in (1..=DEG).rev() {
-        for l in 0..LANES {
-            let b = x2[l] * b1[l] - b2[l] + c[l][j];
+        for l in 0..L {
+            let b = x2[l] * b1[l] - b2[l] + c(l, j);
             b2[l] = b1[l];
             b1[l] = b;
         }
     }
-    std::array::from_fn(|l| x[l] * b1[l] - b2[l] + c[l][0])
+    std::array::from_fn(|l| x[l] * b1[l] - b2[l] + c(l, 0))
 }
 
 #[derive(Debug, Clone, Default)]
@@ -437,35 +439,22 @@ struct TableBatch<'a> {
     radius: &'a mut [f64],
 }
 
-/// For every lane `j`: the load `clenshaw(load_j, t_j)` and the squared
-/// radius `max(clenshaw(r2_j, t_j), 0)` (0 outside contact; the caller takes
-/// the root), with coefficient `k` of lane `j` given by `load(j, k)`,
-/// `r2(j, k)`: the operations of [`clenshaw`] in its order, lane by lane.
+/// The loads and squared radii (`max(a^2, 0)`, 0 outside contact; the
+/// caller takes the root) of a group at local coordinates `t`, lane `j`'s
+/// coefficient `k` given by `load(j, k)`, `r2(j, k)`.
 #[inline(always)]
-fn clenshaw_lanes(
+fn group_values(
     t: &[f64; GROUP],
     load: impl Fn(usize, usize) -> f64,
     r2: impl Fn(usize, usize) -> f64,
     contact: impl Fn(usize) -> bool,
 ) -> ([f64; GROUP], [f64; GROUP]) {
-    let (mut b1l, mut b2l, mut b1r, mut b2r) =
-        ([0.0; GROUP], [0.0; GROUP], [0.0; GROUP], [0.0; GROUP]);
-    for k in (1..=DEG).rev() {
-        for j in 0..GROUP {
-            let x2 = 2.0 * t[j];
-            let bl = x2 * b1l[j] - b2l[j] + load(j, k);
-            let br = x2 * b1r[j] - b2r[j] + r2(j, k);
-            (b2l[j], b1l[j]) = (b1l[j], bl);
-            (b2r[j], b1r[j]) = (b1r[j], br);
-        }
-    }
-    let (mut p, mut q) = ([0.0; GROUP], [0.0; GROUP]);
-    for j in 0..GROUP {
-        p[j] = t[j] * b1l[j] - b2l[j] + load(j, 0);
-        let s = t[j] * b1r[j] - b2r[j] + r2(j, 0);
-        q[j] = if contact(j) { s.max(0.0) } else { 0.0 };
-    }
-    (p, q)
+    let p = clenshaw_lanes(t, load);
+    let s = clenshaw_lanes(t, r2);
+    (
+        p,
+        std::array::from_fn(|j| if contact(j) { s[j].max(0.0) } else { 0.0 }),
+    )
 }
 
 impl TableBatch<'_> {
@@ -530,7 +519,7 @@ impl pulp::WithSimd for TableBatch<'_> {
                     t[j] = local_coordinate(d[j], l, r);
                 }
                 let (a, b, c) = (&table.load[i], &table.r2[i], table.contact[i]);
-                clenshaw_lanes(&t, |_, k| a[k], |_, k| b[k], |_| c)
+                group_values(&t, |_, k| a[k], |_, k| b[k], |_| c)
             } else {
                 // Each lane its own panel (found by a walk from the last
                 // one) or, outside the table, the wrapped law.
@@ -558,7 +547,7 @@ impl pulp::WithSimd for TableBatch<'_> {
                 for j in 0..GROUP {
                     t[j] = local_coordinate(d[j], l[j], r[j]);
                 }
-                clenshaw_lanes(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j])
+                group_values(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j])
             };
             sqrt_lanes(simd, &mut q);
             for j in 0..len {
@@ -672,7 +661,7 @@ impl AsperityLaw for InterpolatedLaw {
                     None => load[i] = self.inner.load(delta[i], branch),
                 }
             }
-            let v = clenshaw_lanes(&coef, &t);
+            let v = clenshaw_lanes(&t, |l, j| coef[l][j]);
             for l in 0..m {
                 if tabled[l] {
                     load[start + l] = v[l];
