@@ -46,7 +46,7 @@ use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
 
 /// Bump when a change alters solver results: calibrations cached on disk are
 /// keyed by it.
-pub const SOLVER_VERSION: u32 = 4;
+pub const SOLVER_VERSION: u32 = 5;
 
 /// Smallest Tabor parameter accepted (the rigid Bradley limit is within
 /// 0.01% there).
@@ -61,6 +61,10 @@ pub const MIN_TABOR: f64 = 0.005;
 /// so accuracy above 10 is not established (docs/performance.md). At
 /// mu = 10 the pull-off is within 0.7% of JKR.
 pub const MAX_TABOR: f64 = 10.0;
+
+/// `H(0) = JUMP_IN_START mu^(3/7)`: the smallest central gap where tracing
+/// starts ([`SphereProblem::start_gap`]).
+const JUMP_IN_START: f64 = 2.2;
 
 /// Smallest size ratio `rho = R/z0` accepted for the true sphere.
 pub const MIN_SIZE_RATIO: f64 = 10.0;
@@ -104,6 +108,9 @@ pub struct SolverOptions {
     /// added in closed form. Default 60.
     pub far_gap: f64,
     /// Central gap `H(0)/z0` where tracing starts (far apart). Default 6.
+    /// Raised to [`SphereProblem::start_gap`] `= 2.2 mu^(3/7)` when that is
+    /// larger (mu > 10 at the default), so that the trace starts on the
+    /// stable approach branch, before the jump-in.
     pub start_gap: f64,
     /// Tracing stops once the load exceeds this, in units of `pi w R`. Default 2.
     pub max_load_bar: f64,
@@ -307,6 +314,21 @@ impl SphereProblem {
         }
     }
 
+    /// Central gap `H(0)/z0` where tracing starts: the option `start_gap`,
+    /// raised to `2.2 mu^(3/7)` when that is larger. The jump-in on approach
+    /// happens at `H(0) = 1.69 mu^(3/7)` (measured 2.70, 4.53, 7.26, 12.16 at
+    /// mu = 3, 10, 30, 100, solver version 5; the exponent follows from the
+    /// centre deflection under the far-field attraction,
+    /// `2 mu^2 int sigma_hat ds ~ mu^(3/2) H^(-5/2)`, whose slope reaches 1
+    /// there), so the start stays 1.3x outside it; a start inside it traces
+    /// the curve from its unstable part and misses the jump-in (the default 6
+    /// did so above mu ~ 15).
+    pub fn start_gap(&self) -> f64 {
+        self.options
+            .start_gap
+            .max(JUMP_IN_START * self.mu.powf(3.0 / 7.0))
+    }
+
     /// Tabor parameter.
     pub fn mu(&self) -> f64 {
         self.mu
@@ -345,12 +367,19 @@ impl SphereProblem {
         }
     }
 
+    /// Outer mesh radius for a contact edge at `edge` before the true
+    /// sphere's equator caps it: where the rigid gap is `far_gap`, or
+    /// `1.5 edge + 4 zone` when that is further.
+    pub(crate) fn mesh_reach(&self, edge: f64) -> f64 {
+        let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
+        r_far.max(1.5 * edge + 4.0 * self.zone())
+    }
+
     pub(crate) fn mesh_spec(&self, edge: f64) -> MeshSpec {
         let zone = self.zone();
         let res = self.options.resolution * self.density();
-        let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
-        let r_max = r_far
-            .max(1.5 * edge + 4.0 * zone)
+        let r_max = self
+            .mesh_reach(edge)
             .min(disc::sphere_edge(self.shape, self.mu));
         MeshSpec {
             edge,
@@ -480,14 +509,15 @@ impl SphereProblem {
     /// with that central gap).
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] for a gap outside `(min_gap, start_gap]`;
+    /// [`Error::OutOfRange`] for a gap outside `(min_gap, start_gap]`
+    /// ([`start_gap`](Self::start_gap));
     /// [`Error::NoConvergence`].
     pub fn profile(&self, central_gap: f64) -> Result<Profile> {
         let o = self.options;
         Allowed {
             lo: o.min_gap,
             lo_inclusive: false,
-            hi: o.start_gap,
+            hi: self.start_gap(),
             hi_inclusive: true,
         }
         .check("central_gap", central_gap)?;
