@@ -52,15 +52,16 @@ pub const SOLVER_VERSION: u32 = 5;
 /// 0.01% there).
 pub const MIN_TABOR: f64 = 0.005;
 
-/// Largest Tabor parameter accepted. Since solver version 4 the tracer
-/// continues in the contact radius and passes the near-fold of the central
-/// gap `H(0)` that stopped it at mu = 15-20; it traces mu = 15, 20, 30
-/// (pull-offs -1.5051, -1.5032, -1.5012 at the default resolution), but the
-/// jump-out load then drifts away from JKR's -5/6 (-0.8525 at mu = 30) and
-/// at mu = 50-100 the trace completes with wrong pull-offs (-1.493, -1.386),
-/// so accuracy above 10 is not established (docs/performance.md). At
-/// mu = 10 the pull-off is within 0.7% of JKR.
-pub const MAX_TABOR: f64 = 10.0;
+/// Largest Tabor parameter accepted. Since solver version 5 (tangents
+/// along the meshes that move with the contact edge, start outside the
+/// jump-in) mu = 10-100 traces in about 0.3-1.2 s at the default resolution
+/// and converges toward JKR: at mu = 100 pull-off -1.50044, jump-out load
+/// -0.83347 and interference -0.90881, zero-load radius 1.81712 (JKR -1.5,
+/// -5/6, -0.90856, 6^(1/3) = 1.81712), each within 2e-4 of resolution 2
+/// (docs/performance.md, tests/sphere_large_mu.rs). Versions 1-4 stopped at
+/// 10: the jump-out drifted from JKR above mu ~ 20 and mu = 50-100 gave
+/// wrong pull-offs.
+pub const MAX_TABOR: f64 = 100.0;
 
 /// `H(0) = JUMP_IN_START mu^(3/7)`: the smallest central gap where tracing
 /// starts ([`SphereProblem::start_gap`]).
@@ -68,6 +69,16 @@ const JUMP_IN_START: f64 = 2.2;
 
 /// Smallest size ratio `rho = R/z0` accepted for the true sphere.
 pub const MIN_SIZE_RATIO: f64 = 10.0;
+
+/// Above mu = 10 the true sphere needs `rho >= SIZE_RATIO_PER_TABOR mu`:
+/// the contact radius is then at most `2.4 sqrt(mu/rho) R ~ 0.24 R` at the
+/// zero-load radius (in units of `R`, the solver radius `a` is
+/// `a sqrt(mu/rho)`), where the Derjaguin approximation holds, and the
+/// meshes stay inside the equator so that they can move with the edge
+/// (`rho = 100 mu` traces in ~1 s; smaller `rho` falls back to meshes rebuilt
+/// as the edge moves, 50-100 s at mu = 100 with contacts wider than `R`).
+/// mu <= 10 keeps [`MIN_SIZE_RATIO`].
+pub const SIZE_RATIO_PER_TABOR: f64 = 100.0;
 
 /// Coarsest mesh resolution accepted. Coarser meshes do not resolve the
 /// contact edge: at 0.2 the mu = 1 jump-out load is 72% off and at 0.05 the
@@ -261,8 +272,10 @@ pub struct SphereProblem {
 }
 
 impl SphereProblem {
-    /// A problem with Tabor parameter `mu` in `[0.005, 10]` ([`MAX_TABOR`]) and a
-    /// shape (true sphere: `rho >= 10`).
+    /// A problem with Tabor parameter `mu` in `[0.005, 100]`
+    /// ([`MIN_TABOR`], [`MAX_TABOR`]) and a shape (true sphere:
+    /// `rho >= 10`, and `rho >= 100 mu` when mu > 10,
+    /// [`SphereProblem::min_size_ratio`]).
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `mu`, `rho` or the bad option.
@@ -270,7 +283,7 @@ impl SphereProblem {
         positive("mu", mu)?;
         Allowed::closed(MIN_TABOR, MAX_TABOR).check("mu", mu)?;
         if let Shape::Sphere { rho } = shape {
-            Allowed::closed(MIN_SIZE_RATIO, 1e12).check("rho", rho)?;
+            Allowed::closed(Self::min_size_ratio(mu), 1e12).check("rho", rho)?;
         }
         options.validate()?;
         let p = SphereProblem { mu, shape, options };
@@ -291,15 +304,30 @@ impl SphereProblem {
         Ok(p)
     }
 
+    /// Smallest size ratio `rho = R/z0` accepted for a true sphere at
+    /// Tabor parameter `mu`: [`MIN_SIZE_RATIO`] up to mu = 10,
+    /// [`SIZE_RATIO_PER_TABOR`]` mu` above.
+    pub fn min_size_ratio(mu: f64) -> f64 {
+        if mu > 10.0 {
+            SIZE_RATIO_PER_TABOR * mu
+        } else {
+            MIN_SIZE_RATIO
+        }
+    }
+
     /// Estimated size and cost of [`facts`](Self::facts), computed without
     /// building anything: the node count of the mesh at a contact edge of
     /// JKR's zero-load radius (or at the axis, whichever is larger), memory
-    /// `8 n^2 (2 + 24)` bytes (the Jacobian, its LU and up to 24 live
-    /// compliance matrices), and time `2e-8 n^3 (1 + mu)` s in an
-    /// optimised build on one core (an upper bound of the measured 0.015 s,
-    /// 0.14 s, 0.37-0.62 s at mu = 1, 5, 10 and 2.7 s at mu = 10,
-    /// resolution 2, on a loaded 2-core machine; docs/performance.md).
-    /// Debug builds are 10-30x slower.
+    /// `8 n^2 (2 + 32)` bytes (the Jacobian, its LU and up to 32 live
+    /// compliance matrices: the trace keeps one per scale band of the edge,
+    /// ~30 at mu = 100), and time `1e-5 n^2 (1 + n/500) (1 + mu)^0.15` s in
+    /// an optimised build (solver version 5; an upper bound of the measured
+    /// 0.02 s, 0.3 s, 0.4 s, 1.2 s at mu = 1, 5, 10, 100 at the default
+    /// resolution, 21 s at mu = 100, resolution 4, 18 s and 113 s at
+    /// mu = 10 and 30, resolution 8, on a loaded 2-core machine;
+    /// docs/performance.md). The work per traced point is mostly `O(n^2)`
+    /// (residuals, Jacobian fill, compliance assembly), the `O(n^3)` LU
+    /// taking over above ~500 nodes. Debug builds are 10-30x slower.
     pub fn cost(&self) -> CostEstimate {
         let edge = 1.82 * MAUGIS_RADIUS;
         let n = self
@@ -309,8 +337,8 @@ impl SphereProblem {
         let nf = n as f64;
         CostEstimate {
             nodes: n,
-            memory_bytes: 8.0 * nf * nf * 26.0,
-            seconds: 2e-8 * nf.powi(3) * (1.0 + self.mu),
+            memory_bytes: 8.0 * nf * nf * 34.0,
+            seconds: 1e-5 * nf * nf * (1.0 + nf / 500.0) * (1.0 + self.mu).powf(0.15),
         }
     }
 
