@@ -179,12 +179,19 @@ fn jump_in_lies_inside_the_start() {
 
 /// The calibrated law at mu = 100 (coarse options, to keep the table short):
 /// the table splits into a detached branch up to the jump-in and an attached
-/// one from the jump-out, and its law reproduces the solver's pull-off.
+/// one from the jump-out, and its law reproduces the solver's pull-off. The
+/// split is by central gap, which decreases monotonically along the trace
+/// (as the contact radius grows).
 #[test]
 fn calibration_at_mu_100() {
     use asperity::law::{AsperityLaw, Control};
     use asperity::sphere::Calibration;
     let p = SphereProblem::new(100.0, Shape::Paraboloid, SolverOptions::coarse()).unwrap();
+    let curve = p.trace().unwrap();
+    for w in curve.windows(2) {
+        assert!(w[1].central_gap < w[0].central_gap, "{w:?}");
+        assert!(w[1].radius >= w[0].radius, "{w:?}");
+    }
     let c = Calibration::compute(&p).unwrap();
     let t = &c.table;
     assert!(t.detached.interference_bar.len() >= 2, "{:?}", t.detached);
