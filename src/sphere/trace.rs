@@ -3,9 +3,10 @@
 //! "taking the minimum film thickness as the independent variable") and
 //! `t = a`, the contact radius, once the central gap is below `3^(1/6)`.
 //! The two meet at `t = 0`. The contact radius passes the folds of the
-//! approach (jumps), of the load (pull-off) and of the central gap (which
-//! folds back just after contact forms for mu > ~15), so one parameter
-//! traces every mu (the role arc length plays in Feng 2000).
+//! approach (jumps), of the load (pull-off) and the near-fold of the central
+//! gap (just after contact forms, mu ~ 15-20), so one parameter traces every
+//! mu (the role arc length plays in Feng 2000). Tracing starts outside the
+//! jump-in ([`SphereProblem::start_gap`]).
 //!
 //! Mesh following: the mesh is chosen from `t` before solving (the contact
 //! radius is prescribed). Near the axis the mesh is rebuilt around the edge
@@ -18,11 +19,18 @@
 //! `[1/SCALE_BAND, SCALE_BAND]`, so spacings stay between `1/SCALE_BAND^2`
 //! and 1 times the nominal ones. States on one base mesh share its matrix,
 //! and the corrector runs chord iterations on the previous point's
-//! factorisation when it lives on the same base mesh.
+//! factorisation when it lives on the same base mesh. Such views move with
+//! the edge (`Discretisation::moving`): their tangents are taken along the
+//! moving nodes (solver version 5, `newton.rs`), so that `dP/dt` and
+//! `dalpha/dt`, whose sign changes locate the pull-off and the jumps, are
+//! the derivatives of the curve actually traced. A true sphere's meshes
+//! move only while every view stays inside its equator.
 //!
 //! Predictor: the previous profile and its tangent, moved with the edge
 //! (`h(r a_new/a_old)`, exact to first order in `dt`), so that the edge
-//! region, narrow at large mu, is not smeared by a fixed-node extrapolation.
+//! region, narrow at large mu, is not smeared by a fixed-node extrapolation;
+//! on moving meshes the gap itself is extrapolated inside the contact (flat
+//! on the repulsive wall) and the deformation outside it.
 
 use super::disc::{shape_gap, sphere_edge, BaseMesh, Discretisation};
 use super::force_law::GAP_MAX_TENSION;
