@@ -80,7 +80,8 @@ fn bad_input_exits_2_naming_the_argument() {
         (vec!["--mu", "1", "--rho", "5"], "--rho"),
         (vec!["--mu", "1", "--rho", "nan"], "--rho"),
         (vec!["--mu", "abc"], "--mu"),
-        (vec!["--mu", "11"], "--mu"),
+        (vec!["--mu", "101"], "--mu"),
+        (vec!["--mu", "20", "--rho", "1000"], "--rho"),
     ] {
         let out = run(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");

@@ -109,7 +109,8 @@ fn too_coarse_or_too_large_meshes_are_refused() {
 }
 
 /// The cost estimate: nodes grow linearly with the resolution and match the
-/// mesh actually used at the pull-off within a factor 1.5; time grows as n^3.
+/// mesh actually used at the pull-off within a factor 1.5; time grows faster
+/// than n^2 (n^2 per traced point, plus the n^3 factorisations).
 #[test]
 fn cost_estimate_tracks_the_mesh() {
     let at = |mu: f64, res: f64| {
@@ -132,16 +133,17 @@ fn cost_estimate_tracks_the_mesh() {
         let c4 = at(mu, 4.0).cost();
         let r = c4.nodes as f64 / c.nodes as f64;
         assert!((3.0..5.0).contains(&r), "{r}");
-        assert!(c4.seconds > 20.0 * c.seconds && c4.memory_bytes > 8.0 * c.memory_bytes);
+        assert!(c4.seconds > 16.0 * c.seconds && c4.memory_bytes > 8.0 * c.memory_bytes);
     }
 }
 
 /// Item 5: the mu = 10 jump-out load at the default resolution was about
-/// 0.9 % off (-0.8468, solver version 1; -0.8428 in version 2-3). Converged
-/// (resolutions 4 and 8, Richardson; uncertainty 7e-5): -0.83906. Version 4
-/// gives -0.84121 at resolution 1 (0.26 %); asserted within 0.3 %. The
-/// pull-off (-1.509312) within 2e-4 and the zero-load radius (1.812754)
-/// within 1e-4 ride along.
+/// 0.9 % off (-0.8468, solver version 1; -0.8428 in version 2-3; -0.84121,
+/// 0.26 %, in version 4). Converged (resolutions 4 and 8, Richardson,
+/// version 5; uncertainty 1.2e-6): -0.839057. Version 5 (tangents along the
+/// moving mesh) gives -0.839137 at resolution 1 (0.0095 %); asserted within
+/// 0.03 %. The pull-off (-1.509310; 1.8e-4 at resolution 1) within 2e-4 and
+/// the zero-load radius (1.812754) within 1e-4 ride along.
 #[test]
 fn mu_ten_jump_out_matches_converged() {
     let v: serde_json::Value =
@@ -156,7 +158,7 @@ fn mu_ten_jump_out_matches_converged() {
     let f = facts(10.0, Shape::Paraboloid);
     let rel = |x: f64, r: f64| ((x - r) / r).abs();
     let jo = f.jump_out.unwrap().load_bar;
-    assert!(rel(jo, get("jump_out_load")) < 3e-3, "{jo}");
+    assert!(rel(jo, get("jump_out_load")) < 3e-4, "{jo}");
     let p = f.pull_off.load_bar;
     assert!(rel(p, get("pull_off_load_control")) < 2e-4, "{p}");
     let a = f.zero_load_radius_bar.unwrap();

@@ -56,6 +56,10 @@ pub(crate) struct Discretisation {
     pub f: Vec<f64>,
     pub mu: f64,
     pub shape: Shape,
+    /// Whether the tracer moves this mesh with the contact edge (a view
+    /// whose scale puts the base's plateau centre on the edge): tangents are
+    /// then taken along the moving nodes (`newton.rs`).
+    pub moving: bool,
     tail_rule: Rule,
 }
 
@@ -104,7 +108,30 @@ impl Discretisation {
             f,
             mu,
             shape,
+            moving: false,
             tail_rule: gauss_legendre(16),
+        }
+    }
+
+    /// `base` at scale `lambda`, moving with the contact edge.
+    pub fn moving_view(base: Arc<BaseMesh>, scale: f64, mu: f64, shape: Shape) -> Self {
+        Discretisation {
+            moving: true,
+            ..Self::view(base, scale, mu, shape)
+        }
+    }
+
+    /// `r f'(r)` in units of `z0` (the change of the shape at a node that
+    /// moves with the mesh scale, per unit `ln lambda`): `2 f` for the
+    /// paraboloid, `mu r^2/sqrt(1 - mu r^2/rho)` for the true sphere.
+    pub fn shape_scale_rate(&self, i: usize) -> f64 {
+        let r = self.r[i];
+        match self.shape {
+            Shape::Paraboloid => 2.0 * self.f[i],
+            Shape::Sphere { rho } => {
+                let x = self.mu * r * r;
+                x / (1.0 - x / rho).max(f64::MIN_POSITIVE).sqrt()
+            }
         }
     }
 
@@ -122,10 +149,14 @@ impl Discretisation {
     /// Far-field load `2 int_{r_m}^{r_end} sigma_hat r dr` with the rigid
     /// continuation from the last gap `hm`.
     pub fn tail_load(&self, hm: f64) -> f64 {
+        self.tail_load_at(hm, *self.r.last().unwrap())
+    }
+
+    /// [`tail_load`](Self::tail_load) for a last node at `rm`.
+    pub fn tail_load_at(&self, hm: f64, rm: f64) -> f64 {
         match self.shape {
             Shape::Paraboloid => 2.0 * tail_integral(hm),
             Shape::Sphere { rho } => {
-                let rm = *self.r.last().unwrap();
                 let fm = shape_gap(self.shape, self.mu, rm);
                 let c = hm - fm;
                 let hr = c + rho;
@@ -142,7 +173,13 @@ impl Discretisation {
     /// Far-field displacement at the centre, `2 mu^2 int_{r_m}^{r_end} sigma_hat ds`,
     /// with `s = r_m / t`.
     pub fn tail_centre_displacement(&self, hm: f64) -> f64 {
-        let rm = *self.r.last().unwrap();
+        self.tail_centre_displacement_at(hm, *self.r.last().unwrap())
+    }
+
+    /// [`tail_centre_displacement`](Self::tail_centre_displacement) for a
+    /// last node at `rm` (its derivative in `rm` enters the moving-mesh
+    /// tangent).
+    pub fn tail_centre_displacement_at(&self, hm: f64, rm: f64) -> f64 {
         let r_end = sphere_edge(self.shape, self.mu);
         if r_end <= rm * (1.0 + 1e-12) {
             return 0.0;

@@ -46,24 +46,39 @@ use trace::{point, State, Tracer, MAUGIS_INTERFERENCE, MAUGIS_RADIUS};
 
 /// Bump when a change alters solver results: calibrations cached on disk are
 /// keyed by it.
-pub const SOLVER_VERSION: u32 = 4;
+pub const SOLVER_VERSION: u32 = 5;
 
 /// Smallest Tabor parameter accepted (the rigid Bradley limit is within
 /// 0.01% there).
 pub const MIN_TABOR: f64 = 0.005;
 
-/// Largest Tabor parameter accepted. Since solver version 4 the tracer
-/// continues in the contact radius and passes the near-fold of the central
-/// gap `H(0)` that stopped it at mu = 15-20; it traces mu = 15, 20, 30
-/// (pull-offs -1.5051, -1.5032, -1.5012 at the default resolution), but the
-/// jump-out load then drifts away from JKR's -5/6 (-0.8525 at mu = 30) and
-/// at mu = 50-100 the trace completes with wrong pull-offs (-1.493, -1.386),
-/// so accuracy above 10 is not established (docs/performance.md). At
-/// mu = 10 the pull-off is within 0.7% of JKR.
-pub const MAX_TABOR: f64 = 10.0;
+/// Largest Tabor parameter accepted. Since solver version 5 (tangents
+/// along the meshes that move with the contact edge, start outside the
+/// jump-in) mu = 10-100 traces in about 0.3-1.2 s at the default resolution
+/// and converges toward JKR: at mu = 100 pull-off -1.50044, jump-out load
+/// -0.83347 and interference -0.90881, zero-load radius 1.81712 (JKR -1.5,
+/// -5/6, -0.90856, 6^(1/3) = 1.81712), each within 2e-4 of resolution 2
+/// (docs/performance.md, tests/sphere_large_mu.rs). Versions 1-4 stopped at
+/// 10: the jump-out drifted from JKR above mu ~ 20 and mu = 50-100 gave
+/// wrong pull-offs.
+pub const MAX_TABOR: f64 = 100.0;
+
+/// `H(0) = JUMP_IN_START mu^(3/7)`: the smallest central gap where tracing
+/// starts ([`SphereProblem::start_gap`]).
+const JUMP_IN_START: f64 = 2.2;
 
 /// Smallest size ratio `rho = R/z0` accepted for the true sphere.
 pub const MIN_SIZE_RATIO: f64 = 10.0;
+
+/// Above mu = 10 the true sphere needs `rho >= SIZE_RATIO_PER_TABOR mu`:
+/// the contact radius is then at most `2.4 sqrt(mu/rho) R ~ 0.24 R` at the
+/// zero-load radius (in units of `R`, the solver radius `a` is
+/// `a sqrt(mu/rho)`), where the Derjaguin approximation holds, and the
+/// meshes stay inside the equator so that they can move with the edge
+/// (`rho = 100 mu` traces in ~1 s; smaller `rho` falls back to meshes rebuilt
+/// as the edge moves, 50-100 s at mu = 100 with contacts wider than `R`).
+/// mu <= 10 keeps [`MIN_SIZE_RATIO`].
+pub const SIZE_RATIO_PER_TABOR: f64 = 100.0;
 
 /// Coarsest mesh resolution accepted. Coarser meshes do not resolve the
 /// contact edge: at 0.2 the mu = 1 jump-out load is 72% off and at 0.05 the
@@ -104,6 +119,9 @@ pub struct SolverOptions {
     /// added in closed form. Default 60.
     pub far_gap: f64,
     /// Central gap `H(0)/z0` where tracing starts (far apart). Default 6.
+    /// Raised to [`SphereProblem::start_gap`] `= 2.2 mu^(3/7)` when that is
+    /// larger (mu > 10 at the default), so that the trace starts on the
+    /// stable approach branch, before the jump-in.
     pub start_gap: f64,
     /// Tracing stops once the load exceeds this, in units of `pi w R`. Default 2.
     pub max_load_bar: f64,
@@ -254,8 +272,10 @@ pub struct SphereProblem {
 }
 
 impl SphereProblem {
-    /// A problem with Tabor parameter `mu` in `[0.005, 10]` ([`MAX_TABOR`]) and a
-    /// shape (true sphere: `rho >= 10`).
+    /// A problem with Tabor parameter `mu` in `[0.005, 100]`
+    /// ([`MIN_TABOR`], [`MAX_TABOR`]) and a shape (true sphere:
+    /// `rho >= 10`, and `rho >= 100 mu` when mu > 10,
+    /// [`SphereProblem::min_size_ratio`]).
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `mu`, `rho` or the bad option.
@@ -263,7 +283,7 @@ impl SphereProblem {
         positive("mu", mu)?;
         Allowed::closed(MIN_TABOR, MAX_TABOR).check("mu", mu)?;
         if let Shape::Sphere { rho } = shape {
-            Allowed::closed(MIN_SIZE_RATIO, 1e12).check("rho", rho)?;
+            Allowed::closed(Self::min_size_ratio(mu), 1e12).check("rho", rho)?;
         }
         options.validate()?;
         let p = SphereProblem { mu, shape, options };
@@ -284,15 +304,30 @@ impl SphereProblem {
         Ok(p)
     }
 
+    /// Smallest size ratio `rho = R/z0` accepted for a true sphere at
+    /// Tabor parameter `mu`: [`MIN_SIZE_RATIO`] up to mu = 10,
+    /// [`SIZE_RATIO_PER_TABOR`]` mu` above.
+    pub fn min_size_ratio(mu: f64) -> f64 {
+        if mu > 10.0 {
+            SIZE_RATIO_PER_TABOR * mu
+        } else {
+            MIN_SIZE_RATIO
+        }
+    }
+
     /// Estimated size and cost of [`facts`](Self::facts), computed without
     /// building anything: the node count of the mesh at a contact edge of
     /// JKR's zero-load radius (or at the axis, whichever is larger), memory
-    /// `8 n^2 (2 + 24)` bytes (the Jacobian, its LU and up to 24 live
-    /// compliance matrices), and time `2e-8 n^3 (1 + mu)` s in an
-    /// optimised build on one core (an upper bound of the measured 0.015 s,
-    /// 0.14 s, 0.37-0.62 s at mu = 1, 5, 10 and 2.7 s at mu = 10,
-    /// resolution 2, on a loaded 2-core machine; docs/performance.md).
-    /// Debug builds are 10-30x slower.
+    /// `8 n^2 (2 + 32)` bytes (the Jacobian, its LU and up to 32 live
+    /// compliance matrices: the trace keeps one per scale band of the edge,
+    /// ~30 at mu = 100), and time `1e-5 n^2 (1 + n/500) (1 + mu)^0.15` s in
+    /// an optimised build (solver version 5; an upper bound of the measured
+    /// 0.02 s, 0.3 s, 0.4 s, 1.2 s at mu = 1, 5, 10, 100 at the default
+    /// resolution, 21 s at mu = 100, resolution 4, 18 s and 113 s at
+    /// mu = 10 and 30, resolution 8, on a loaded 2-core machine;
+    /// docs/performance.md). The work per traced point is mostly `O(n^2)`
+    /// (residuals, Jacobian fill, compliance assembly), the `O(n^3)` LU
+    /// taking over above ~500 nodes. Debug builds are 10-30x slower.
     pub fn cost(&self) -> CostEstimate {
         let edge = 1.82 * MAUGIS_RADIUS;
         let n = self
@@ -302,9 +337,24 @@ impl SphereProblem {
         let nf = n as f64;
         CostEstimate {
             nodes: n,
-            memory_bytes: 8.0 * nf * nf * 26.0,
-            seconds: 2e-8 * nf.powi(3) * (1.0 + self.mu),
+            memory_bytes: 8.0 * nf * nf * 34.0,
+            seconds: 1e-5 * nf * nf * (1.0 + nf / 500.0) * (1.0 + self.mu).powf(0.15),
         }
+    }
+
+    /// Central gap `H(0)/z0` where tracing starts: the option `start_gap`,
+    /// raised to `2.2 mu^(3/7)` when that is larger. The jump-in on approach
+    /// happens at `H(0) = 1.69 mu^(3/7)` (measured 2.70, 4.53, 7.26, 12.16 at
+    /// mu = 3, 10, 30, 100, solver version 5; the exponent follows from the
+    /// centre deflection under the far-field attraction,
+    /// `2 mu^2 int sigma_hat ds ~ mu^(3/2) H^(-5/2)`, whose slope reaches 1
+    /// there), so the start stays 1.3x outside it; a start inside it traces
+    /// the curve from its unstable part and misses the jump-in (the default 6
+    /// did so above mu ~ 15).
+    pub fn start_gap(&self) -> f64 {
+        self.options
+            .start_gap
+            .max(JUMP_IN_START * self.mu.powf(3.0 / 7.0))
     }
 
     /// Tabor parameter.
@@ -345,12 +395,19 @@ impl SphereProblem {
         }
     }
 
+    /// Outer mesh radius for a contact edge at `edge` before the true
+    /// sphere's equator caps it: where the rigid gap is `far_gap`, or
+    /// `1.5 edge + 4 zone` when that is further.
+    pub(crate) fn mesh_reach(&self, edge: f64) -> f64 {
+        let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
+        r_far.max(1.5 * edge + 4.0 * self.zone())
+    }
+
     pub(crate) fn mesh_spec(&self, edge: f64) -> MeshSpec {
         let zone = self.zone();
         let res = self.options.resolution * self.density();
-        let r_far = (2.0 * self.options.far_gap / self.mu).sqrt();
-        let r_max = r_far
-            .max(1.5 * edge + 4.0 * zone)
+        let r_max = self
+            .mesh_reach(edge)
             .min(disc::sphere_edge(self.shape, self.mu));
         MeshSpec {
             edge,
@@ -480,14 +537,15 @@ impl SphereProblem {
     /// with that central gap).
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] for a gap outside `(min_gap, start_gap]`;
+    /// [`Error::OutOfRange`] for a gap outside `(min_gap, start_gap]`
+    /// ([`start_gap`](Self::start_gap));
     /// [`Error::NoConvergence`].
     pub fn profile(&self, central_gap: f64) -> Result<Profile> {
         let o = self.options;
         Allowed {
             lo: o.min_gap,
             lo_inclusive: false,
-            hi: o.start_gap,
+            hi: self.start_gap(),
             hi_inclusive: true,
         }
         .check("central_gap", central_gap)?;

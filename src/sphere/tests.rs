@@ -157,8 +157,9 @@ fn bad_inputs_name_the_field() {
         (f64::NAN, Shape::Paraboloid, "mu"),
         (f64::INFINITY, Shape::Paraboloid, "mu"),
         (1e3, Shape::Paraboloid, "mu"),
-        (10.5, Shape::Paraboloid, "mu"),
+        (100.5, Shape::Paraboloid, "mu"),
         (1.0, Shape::Sphere { rho: 9.0 }, "rho"),
+        (20.0, Shape::Sphere { rho: 1999.0 }, "rho"),
         (1.0, Shape::Sphere { rho: f64::NAN }, "rho"),
         (1.0, Shape::Sphere { rho: -10.0 }, "rho"),
     ] {
@@ -237,16 +238,12 @@ fn failure_is_an_error_not_a_hang() {
 
 /// Issue 12: continuation in the contact radius passes the (near-)fold of
 /// the central gap where continuation in `H(0)` stopped (mu = 15-20): at
-/// mu = 20 (above `MAX_TABOR`, so built directly) the trace goes through a
-/// part where `|dP/dH(0)|` exceeds 1000 and the pull-off lies between JKR's
-/// -1.5 and the mu = 10 value -1.5095 (measured -1.5032).
+/// mu = 20 the trace goes through a part where `|dP/dH(0)|` exceeds 1000
+/// and the pull-off lies between JKR's -1.5 and the mu = 10 value -1.5095
+/// (measured -1.5033).
 #[test]
 fn radius_continuation_passes_the_central_gap_fold() {
-    let p = SphereProblem {
-        mu: 20.0,
-        shape: Shape::Paraboloid,
-        options: SolverOptions::default(),
-    };
+    let p = SphereProblem::new(20.0, Shape::Paraboloid, SolverOptions::default()).unwrap();
     let curve = p.trace().unwrap();
     let steep = curve.iter().map(|q| q.d_load.abs()).fold(0.0f64, f64::max);
     assert!(steep > 1e3, "{steep}");

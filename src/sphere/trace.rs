@@ -3,9 +3,10 @@
 //! "taking the minimum film thickness as the independent variable") and
 //! `t = a`, the contact radius, once the central gap is below `3^(1/6)`.
 //! The two meet at `t = 0`. The contact radius passes the folds of the
-//! approach (jumps), of the load (pull-off) and of the central gap (which
-//! folds back just after contact forms for mu > ~15), so one parameter
-//! traces every mu (the role arc length plays in Feng 2000).
+//! approach (jumps), of the load (pull-off) and the near-fold of the central
+//! gap (just after contact forms, mu ~ 15-20), so one parameter traces every
+//! mu (the role arc length plays in Feng 2000). Tracing starts outside the
+//! jump-in ([`SphereProblem::start_gap`]).
 //!
 //! Mesh following: the mesh is chosen from `t` before solving (the contact
 //! radius is prescribed). Near the axis the mesh is rebuilt around the edge
@@ -18,16 +19,23 @@
 //! `[1/SCALE_BAND, SCALE_BAND]`, so spacings stay between `1/SCALE_BAND^2`
 //! and 1 times the nominal ones. States on one base mesh share its matrix,
 //! and the corrector runs chord iterations on the previous point's
-//! factorisation when it lives on the same base mesh.
+//! factorisation when it lives on the same base mesh. Such views move with
+//! the edge (`Discretisation::moving`): their tangents are taken along the
+//! moving nodes (solver version 5, `newton.rs`), so that `dP/dt` and
+//! `dalpha/dt`, whose sign changes locate the pull-off and the jumps, are
+//! the derivatives of the curve actually traced. A true sphere's meshes
+//! move only while every view stays inside its equator.
 //!
 //! Predictor: the previous profile and its tangent, moved with the edge
 //! (`h(r a_new/a_old)`, exact to first order in `dt`), so that the edge
-//! region, narrow at large mu, is not smeared by a fixed-node extrapolation.
+//! region, narrow at large mu, is not smeared by a fixed-node extrapolation;
+//! on moving meshes the gap itself is extrapolated inside the contact (flat
+//! on the repulsive wall) and the deformation outside it.
 
-use super::disc::{BaseMesh, Discretisation};
+use super::disc::{shape_gap, sphere_edge, BaseMesh, Discretisation};
 use super::force_law::GAP_MAX_TENSION;
 use super::newton::{Constraint, Lu, Solution};
-use super::{Shape, SpherePoint, SphereProblem};
+use super::{SpherePoint, SphereProblem};
 use crate::error::{Error, Result};
 use std::sync::Arc;
 
@@ -112,15 +120,25 @@ impl<'a, 'b> Tracer<'a, 'b> {
     }
 
     /// The mesh for a contact edge at `edge` (0 before contact): `cur`
-    /// itself while the edge stays near its plateau centre; rescaled when the
-    /// edge is far enough from the axis and within the scale band; else a new
-    /// mesh (with room to move on in the same direction).
+    /// itself while the edge stays near its plateau centre; a rescaled view
+    /// moving with the edge when the edge is far enough from the axis and
+    /// within the scale band; else a new mesh (with room to move on in the
+    /// same direction). A true sphere's meshes are rescaled only while they
+    /// stay inside its equator `r = R` (every view of the base at most
+    /// `sphere_edge`).
     fn mesh_for(&mut self, cur: &Arc<Discretisation>, edge: f64) -> Arc<Discretisation> {
         let big = SCALABLE_EDGE * self.p.zone();
-        let scalable = matches!(self.p.shape, Shape::Paraboloid) && edge >= big;
+        let r_end = sphere_edge(self.p.shape, self.p.mu);
         let spec = cur.spec;
+        let target = if edge > spec.edge {
+            edge * SCALE_BAND
+        } else {
+            edge / SCALE_BAND
+        };
+        let fits = |r_max: f64| r_max * SCALE_BAND * SCALE_BAND <= r_end;
+        let scalable = edge >= big && fits(self.p.mesh_reach(target));
         if !scalable {
-            if (edge - spec.edge).abs() <= 0.5 * spec.inner.min(spec.outer) {
+            if !cur.moving && (edge - spec.edge).abs() <= 0.5 * spec.inner.min(spec.outer) {
                 return cur.clone();
             }
             return self.build(edge, false);
@@ -128,20 +146,20 @@ impl<'a, 'b> Tracer<'a, 'b> {
         let base_edge = cur.base.spec.edge;
         let lam = edge / base_edge;
         let (mu, shape) = (self.p.mu, self.p.shape);
-        if base_edge >= big && (1.0 / SCALE_BAND..=SCALE_BAND).contains(&lam) {
+        if cur.moving && (1.0 / SCALE_BAND..=SCALE_BAND).contains(&lam) {
             if lam == cur.scale {
                 return cur.clone();
             }
-            return Arc::new(Discretisation::view(cur.base.clone(), lam, mu, shape));
+            return Arc::new(Discretisation::moving_view(
+                cur.base.clone(),
+                lam,
+                mu,
+                shape,
+            ));
         }
-        let target = if edge > spec.edge {
-            edge * SCALE_BAND
-        } else {
-            edge / SCALE_BAND
-        };
         let base = self.build(target, true).base.clone();
         let lam = edge / base.spec.edge;
-        Arc::new(Discretisation::view(base, lam, mu, shape))
+        Arc::new(Discretisation::moving_view(base, lam, mu, shape))
     }
 
     /// Newton at parameter `t` on `disc` from `guess`.
@@ -174,7 +192,7 @@ impl<'a, 'b> Tracer<'a, 'b> {
 
     /// The rigid start at the largest central gap.
     pub fn start(&mut self) -> Result<State> {
-        let h0 = self.p.options.start_gap;
+        let h0 = self.p.start_gap();
         let disc = self.build(0.0, false);
         let guess: Vec<f64> = disc.f.iter().map(|f| h0 + f).collect();
         let t = GAP_MAX_TENSION - h0;
@@ -200,25 +218,63 @@ impl<'a, 'b> Tracer<'a, 'b> {
             let k = t / a0;
             let f = &from.disc.f;
             let d: Vec<f64> = (0..n).map(|i| h[i] - f[i]).collect();
-            let slope = |i: usize| {
-                let (l, u) = (i.saturating_sub(1), (i + 1).min(n - 1));
-                (d[u] - d[l]) / (r[u] - r[l])
+            let q: Vec<f64> = if from.disc.moving {
+                // The tangent is along the moving nodes, which become
+                // r_i k. Inside the contact h is nearly constant (the
+                // repulsive wall), so h + dt h' is right to second order
+                // there, whereas d follows -f, which is quadratic in the
+                // scale: predicting d would put an error ~ f (dt/a)^2 into
+                // the stiff contact (residuals of 1e4 at mu = 100). Outside,
+                // d + dt d' with d' = h' - r f'/a.
+                let shape = from.disc.shape;
+                (0..n)
+                    .map(|i| {
+                        if r[i] < a0 {
+                            h[i] + dt * tan[i] - shape_gap(shape, self.p.mu, r[i] * k)
+                        } else {
+                            d[i] + dt * (tan[i] - from.disc.shape_scale_rate(i) / a0)
+                        }
+                    })
+                    .collect()
+            } else {
+                let slope = |i: usize| {
+                    let (l, u) = (i.saturating_sub(1), (i + 1).min(n - 1));
+                    (d[u] - d[l]) / (r[u] - r[l])
+                };
+                (0..n)
+                    .map(|i| d[i] + dt * (tan[i] + r[i] / a0 * slope(i)))
+                    .collect()
             };
-            let q: Vec<f64> = (0..n)
-                .map(|i| d[i] + dt * (tan[i] + r[i] / a0 * slope(i)))
-                .collect();
             let mut j = 0;
             disc.r
                 .iter()
                 .zip(&disc.f)
                 .map(|(&x, &fx)| {
-                    // linear in d, constant beyond the last node (rigid)
+                    // quadratic in d through the three nearest nodes (exact
+                    // inside the contact, where h is nearly flat and d
+                    // follows -f: a linear one is off by mu dr^2/8 there, a
+                    // large residual at large mu), constant beyond the
+                    // last node (rigid)
                     let y = x / k;
                     while j + 2 < n && r[j + 1] < y {
                         j += 1;
                     }
-                    let u = ((y - r[j]) / (r[j + 1] - r[j])).min(1.0);
-                    (q[j] + u * (q[j + 1] - q[j]) + fx).max(0.25)
+                    if y >= r[n - 1] || n < 3 {
+                        let u = ((y - r[j]) / (r[j + 1] - r[j])).min(1.0);
+                        return (q[j] + u * (q[j + 1] - q[j]) + fx).max(0.25);
+                    }
+                    let s = if j == 0 {
+                        0
+                    } else if j + 2 >= n || y - r[j] < r[j + 1] - y {
+                        j - 1
+                    } else {
+                        j
+                    };
+                    let (x0, x1, x2) = (r[s], r[s + 1], r[s + 2]);
+                    let l0 = (y - x1) * (y - x2) / ((x0 - x1) * (x0 - x2));
+                    let l1 = (y - x0) * (y - x2) / ((x1 - x0) * (x1 - x2));
+                    let l2 = (y - x0) * (y - x1) / ((x2 - x0) * (x2 - x1));
+                    (l0 * q[s] + l1 * q[s + 1] + l2 * q[s + 2] + fx).max(0.25)
                 })
                 .collect()
         } else {

@@ -8,7 +8,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 rows = [json.loads(l) for l in open(os.path.join(here, "sphere_converged.raw"))]
 out = {"provenance": "tests/data/sphere_converged.sh: release CLI, resolutions 4 and 8, "
        "Richardson x8 + (x8 - x4)/3", "cases": []}
-keys = ["pull_off_load_control", "contact_radius_zero_load", "jump_out_load"]
+keys = ["pull_off_load_control", "contact_radius_zero_load", "jump_out_load",
+        "jump_out_interference"]
 for case in dict.fromkeys(r["case"] for r in rows):
     f = {r["resolution"]: r["facts"] for r in rows if r["case"] == case}
     e = {"mu": f[8]["mu"], "rho": f[8]["rho"]}

@@ -6,16 +6,17 @@
 # pull-off and the zero-load radius change by a factor 3.7-4.4 per doubling,
 # docs/performance.md), then writes sphere_converged.json.
 #   cargo build --release && sh tests/data/sphere_converged.sh
-# The two mu = 10 lines (jump-out load, issue 11 item 5) are from solver
-# version 4 through the library, since the CLI refuses resolution 8 at mu = 10
-# by its 120 s estimate (it took 18 s):
-#   RES=4 cargo run --release --example sphere_timing -- 10   (and RES=8)
+# The mu = 10, 30 and 100 lines (jump-out, issue 11 item 5; large mu, issue
+# 12) are from solver version 5 through the library, since the CLI refuses
+# resolution 8 there by its 120 s estimate (mu = 10, 30, 100 took 18 s,
+# 113 s and ~4 min):
+#   cargo run --release --example sphere_large_mu -- --raw --res 4,8 10 30 100
 # and are kept when the loop below is rerun (they are appended last).
 set -e
 BIN=${BIN:-target/release/asperity}
 cd "$(dirname "$0")/../.."
 out=tests/data/sphere_converged.raw
-grep '"case":"10"' $out > $out.mu10 || true
+grep -E '"case":"(10|30|100)"' $out > $out.mu10 || true
 : > $out
 for case in "0.005" "0.01" "0.5" "1" "0.01 --rho 10"; do
   for res in 4 8; do

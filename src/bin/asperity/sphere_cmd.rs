@@ -4,7 +4,7 @@
 use crate::CliError;
 use asperity::sphere::{
     Shape, SolverOptions, SpherePoint, SphereProblem, MAX_RESOLUTION, MAX_TABOR, MIN_RESOLUTION,
-    MIN_SIZE_RATIO, MIN_TABOR,
+    MIN_TABOR,
 };
 use clap::Args;
 use serde::Serialize;
@@ -13,10 +13,11 @@ use std::io::Write;
 /// Arguments of `asperity sphere`.
 #[derive(Args, Debug)]
 pub struct SphereArgs {
-    /// Tabor parameter mu = (R w^2/(E*^2 z0^3))^(1/3), in [0.005, 10].
+    /// Tabor parameter mu = (R w^2/(E*^2 z0^3))^(1/3), in [0.005, 100].
     #[arg(long, allow_negative_numbers = true)]
     mu: f64,
-    /// Size ratio rho = R/z0 (>= 10) for a true sphere; paraboloid if absent.
+    /// Size ratio rho = R/z0 (>= 10, and >= 100 mu when mu > 10) for a true
+    /// sphere; paraboloid if absent.
     #[arg(long, allow_negative_numbers = true)]
     rho: Option<f64>,
     /// Mesh resolution multiplier (default 1), in [0.5, 64]; runs estimated
@@ -113,7 +114,8 @@ pub fn run(args: &SphereArgs) -> crate::CliResult {
     asperity::error::Allowed::closed(MIN_TABOR, MAX_TABOR).check("--mu", args.mu)?;
     let shape = match args.rho {
         Some(rho) => {
-            asperity::error::Allowed::closed(MIN_SIZE_RATIO, 1e12).check("--rho", rho)?;
+            asperity::error::Allowed::closed(SphereProblem::min_size_ratio(args.mu), 1e12)
+                .check("--rho", rho)?;
             Shape::Sphere { rho }
         }
         None => Shape::Paraboloid,
