@@ -8,20 +8,16 @@ use asperity::sphere::{
 };
 use asperity::Error;
 
+#[allow(dead_code)] // not every helper is used here
+mod common;
+
 struct Reference {
     pull_off: f64,
     radius: f64,
 }
 
 fn reference(mu: f64, rho: Option<f64>) -> Reference {
-    let v: serde_json::Value =
-        serde_json::from_str(include_str!("data/sphere_converged.json")).unwrap();
-    let case = v["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|c| c["mu"].as_f64() == Some(mu) && c["rho"].as_f64() == rho)
-        .unwrap_or_else(|| panic!("no reference for mu {mu}, rho {rho:?}"));
+    let case = common::sphere_converged(mu, rho);
     Reference {
         pull_off: case["pull_off_load_control"].as_f64().unwrap(),
         radius: case["contact_radius_zero_load"].as_f64().unwrap(),

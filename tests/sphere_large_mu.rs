@@ -8,6 +8,9 @@
 use asperity::sphere::{Shape, SolverOptions, SphereFacts, SphereProblem};
 use std::sync::OnceLock;
 
+#[allow(dead_code)] // not every helper is used here
+mod common;
+
 const JKR_PULL_OFF: f64 = -1.5;
 const JKR_JUMP_OUT_LOAD: f64 = -5.0 / 6.0;
 /// `6^(-2/3) - (2/3) 6^(1/3)`.
@@ -25,14 +28,7 @@ struct Reference {
 }
 
 fn reference(mu: f64) -> Reference {
-    let v: serde_json::Value =
-        serde_json::from_str(include_str!("data/sphere_converged.json")).unwrap();
-    let case = v["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|c| c["mu"].as_f64() == Some(mu) && c["rho"].is_null())
-        .unwrap_or_else(|| panic!("no reference for mu {mu}"));
+    let case = common::sphere_converged(mu, None);
     let get = |k: &str| case[k].as_f64().unwrap_or_else(|| panic!("{k}"));
     Reference {
         pull_off: get("pull_off_load_control"),

@@ -35,3 +35,18 @@ pub fn rel(a: f64, b: f64) -> f64 {
         ((a - b) / b).abs()
     }
 }
+
+/// The converged sphere-solver case of `tests/data/sphere_converged.json`
+/// at Tabor parameter `mu` and size ratio `rho` (`None`: paraboloid); panics
+/// naming the case when it is missing.
+#[allow(dead_code)] // used by the sphere tests only
+pub fn sphere_converged(mu: f64, rho: Option<f64>) -> Value {
+    let v = local("sphere_converged.json");
+    v["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["mu"].as_f64() == Some(mu) && c["rho"].as_f64() == rho)
+        .unwrap_or_else(|| panic!("no reference for mu {mu}, rho {rho:?}"))
+        .clone()
+}
