@@ -37,6 +37,7 @@ pub mod law;
 pub mod loading;
 pub mod material;
 pub mod montecarlo;
+pub mod named;
 pub mod numeric;
 pub mod punch;
 pub mod special;

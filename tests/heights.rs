@@ -6,6 +6,7 @@ use asperity::heights::{
     DistributionKind, DistributionParams, Empirical, Exponential, Gaussian, HeightDistribution,
     TruncatedGaussian, Weibull,
 };
+use asperity::named::Named;
 use proptest::prelude::*;
 
 mod common;

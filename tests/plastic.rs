@@ -14,6 +14,7 @@ use asperity::law::plastic::{build, AdhesivePlastic, PlasticLaw};
 use asperity::law::{AsperityLaw, Branch, Control, Hertz};
 use asperity::loading::{History, LoadingModel, Observables};
 use asperity::material::plastic::{Plasticity, Variant};
+use asperity::named::Named;
 use serde_json::Value;
 use std::sync::Arc;
 

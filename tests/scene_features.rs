@@ -5,6 +5,7 @@
 use asperity::electrical::{GwSpots, Interaction, SpotResistance, Spreading};
 use asperity::heights::Gaussian;
 use asperity::law::{Branch, Jkr};
+use asperity::named::Named;
 use asperity::study::{Plan, PlanMode, Scene, Summary};
 use serde_json::Value;
 use std::path::{Path, PathBuf};

@@ -4,7 +4,7 @@
 use asperity::gw::{Accuracy, GwModel, Method};
 use asperity::law::LawKind;
 use asperity::loading::{History, LoadingModel, Observables};
-use asperity::study::scene::{build_contact, build_distribution, build_surface};
+use asperity::study::scene::{build_contact, build_distribution, build_surface, LawName};
 use asperity::study::{Plan, PlanMode, Scene};
 use std::sync::Arc;
 
@@ -40,9 +40,9 @@ fn every_example_scene_runs_and_matches_library_calls() {
         // The same numbers straight from the library.
         let contact = build_contact(&scene).unwrap();
         // The calibrated law is tested against the solver in src/sphere.
-        let law: Arc<dyn asperity::law::AsperityLaw> = match LawKind::parse(&plan.law.name) {
-            Ok(kind) => Arc::from(kind.build(&contact).unwrap()),
-            Err(_) => plan.law.law.clone(),
+        let law: Arc<dyn asperity::law::AsperityLaw> = match plan.law.source {
+            LawName::Analytic(kind) => Arc::from(kind.build(&contact).unwrap()),
+            _ => plan.law.law.clone(),
         };
         let model = GwModel::new(
             build_surface(&scene).unwrap(),
@@ -248,7 +248,7 @@ fn radius_spread_needs_a_law_that_scales_with_the_radius() {
     scene.montecarlo.as_mut().unwrap().radius_log_std = 0.2;
     let e = Plan::new(&scene, PlanMode::Planned).unwrap_err();
     assert_eq!(e.field(), Some("montecarlo.radius_log_std"), "{e}");
-    scene.law.kind = "jkr".into();
+    scene.law.kind = LawName::Analytic(LawKind::Jkr);
     let res = Plan::new(&scene, PlanMode::Planned).unwrap().run().unwrap();
     assert!(res.montecarlo.unwrap().max_abs_z.is_some());
 }

@@ -25,5 +25,5 @@ pub mod tabulated;
 pub use dmt::AxisymDmt;
 pub use jkr::AxisymJkr;
 pub use md::{AxisymMd, MdPoint};
-pub use profile::Profile;
+pub use profile::{Profile, ProfileKind, ProfileParams};
 pub use tabulated::TabulatedProfile;

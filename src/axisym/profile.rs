@@ -68,6 +68,146 @@ pub enum Profile {
     Tabulated(TabulatedProfile),
 }
 
+/// The kinds of [`Profile`], by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ProfileKind {
+    /// [`Profile::Paraboloid`].
+    Paraboloid,
+    /// [`Profile::Sphere`].
+    Sphere,
+    /// [`Profile::Cone`].
+    Cone,
+    /// [`Profile::Flat`].
+    Flat,
+    /// [`Profile::Power`].
+    Power,
+    /// [`Profile::Tabulated`].
+    Tabulated,
+}
+
+impl ProfileKind {
+    /// Every kind.
+    pub const ALL: [ProfileKind; 6] = [
+        ProfileKind::Paraboloid,
+        ProfileKind::Sphere,
+        ProfileKind::Cone,
+        ProfileKind::Flat,
+        ProfileKind::Power,
+        ProfileKind::Tabulated,
+    ];
+
+    /// Short name: `paraboloid`, `sphere`, `cone`, `flat`, `power`, `tabulated`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ProfileKind::Paraboloid => "paraboloid",
+            ProfileKind::Sphere => "sphere",
+            ProfileKind::Cone => "cone",
+            ProfileKind::Flat => "flat",
+            ProfileKind::Power => "power",
+            ProfileKind::Tabulated => "tabulated",
+        }
+    }
+
+    /// The parameters the kind is built from, by their argument names in
+    /// the constructors ([`Profile::paraboloid`], ...): `radius`;
+    /// `tan_angle`; `exponent`, `coefficient`; `r`, `f`.
+    pub fn parameters(self) -> &'static [&'static str] {
+        match self {
+            ProfileKind::Paraboloid | ProfileKind::Sphere | ProfileKind::Flat => &["radius"],
+            ProfileKind::Cone => &["tan_angle"],
+            ProfileKind::Power => &["exponent", "coefficient"],
+            ProfileKind::Tabulated => &["r", "f"],
+        }
+    }
+}
+
+/// The parameters of a profile; each kind uses some of them
+/// ([`ProfileKind::parameters`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+#[non_exhaustive]
+pub struct ProfileParams {
+    /// Radius (m) of a paraboloid, sphere or flat punch.
+    pub radius: Option<f64>,
+    /// `tan(beta)` of a cone.
+    pub tan_angle: Option<f64>,
+    /// Exponent `n` of a power law.
+    pub exponent: Option<f64>,
+    /// Coefficient `A` (m^(1-n)) of a power law.
+    pub coefficient: Option<f64>,
+    /// Radii (m) of a tabulated profile.
+    pub r: Option<Vec<f64>>,
+    /// Heights (m) of a tabulated profile at `r`.
+    pub f: Option<Vec<f64>>,
+}
+
+impl ProfileParams {
+    /// The parameters given, by name.
+    pub fn given(&self) -> Vec<&'static str> {
+        [
+            ("radius", self.radius.is_some()),
+            ("tan_angle", self.tan_angle.is_some()),
+            ("exponent", self.exponent.is_some()),
+            ("coefficient", self.coefficient.is_some()),
+            ("r", self.r.is_some()),
+            ("f", self.f.is_some()),
+        ]
+        .into_iter()
+        .filter_map(|(n, g)| g.then_some(n))
+        .collect()
+    }
+}
+
+impl ProfileKind {
+    /// Builds the profile from `p`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming a parameter the kind needs and `p` lacks,
+    /// or one it does not use (it would be silently ignored); the
+    /// constructor's [`Error::OutOfRange`] for a bad value.
+    pub fn build(self, p: &ProfileParams) -> Result<Profile> {
+        let uses = self.parameters();
+        if let Some(k) = p.given().into_iter().find(|k| !uses.contains(k)) {
+            return Err(Error::invalid(
+                k,
+                format!(
+                    "does not apply to profile {:?} (it uses {})",
+                    self.name(),
+                    uses.join(", ")
+                ),
+            ));
+        }
+        let need = |name: &str, x: Option<f64>| {
+            x.ok_or_else(|| Error::invalid(name, format!("required for profile {:?}", self.name())))
+        };
+        match self {
+            ProfileKind::Paraboloid => Profile::paraboloid(need("radius", p.radius)?),
+            ProfileKind::Sphere => Profile::sphere(need("radius", p.radius)?),
+            ProfileKind::Flat => Profile::flat(need("radius", p.radius)?),
+            ProfileKind::Cone => Profile::cone(need("tan_angle", p.tan_angle)?),
+            ProfileKind::Power => Profile::power(
+                need("coefficient", p.coefficient)?,
+                need("exponent", p.exponent)?,
+            ),
+            ProfileKind::Tabulated => {
+                let missing =
+                    |n: &str| Error::invalid(n, "required for profile \"tabulated\"".to_string());
+                let r = p.r.clone().ok_or_else(|| missing("r"))?;
+                let f = p.f.clone().ok_or_else(|| missing("f"))?;
+                Profile::tabulated(r, f)
+            }
+        }
+    }
+}
+
+impl crate::named::Named for ProfileKind {
+    const ALL: &'static [Self] = &ProfileKind::ALL;
+    const WHAT: &'static str = "profile";
+    fn name(self) -> &'static str {
+        ProfileKind::name(self)
+    }
+}
+crate::serde_by_name!(ProfileKind);
+
 /// `k_n = n sqrt(pi) Gamma(n/2) / (2 Gamma((n+1)/2))`: `delta_0 = k_n A a^n`
 /// for `f = A r^n`.
 pub fn power_law_factor(n: f64) -> f64 {
@@ -144,16 +284,21 @@ impl Profile {
         Ok(Profile::Tabulated(TabulatedProfile::new(r, f)?))
     }
 
-    /// Short name: `paraboloid`, `sphere`, `cone`, `flat`, `power`, `tabulated`.
-    pub fn name(&self) -> &'static str {
+    /// The profile's kind.
+    pub fn kind(&self) -> ProfileKind {
         match self {
-            Profile::Paraboloid { .. } => "paraboloid",
-            Profile::Sphere { .. } => "sphere",
-            Profile::Cone { .. } => "cone",
-            Profile::Flat { .. } => "flat",
-            Profile::Power { .. } => "power",
-            Profile::Tabulated(_) => "tabulated",
+            Profile::Paraboloid { .. } => ProfileKind::Paraboloid,
+            Profile::Sphere { .. } => ProfileKind::Sphere,
+            Profile::Cone { .. } => ProfileKind::Cone,
+            Profile::Flat { .. } => ProfileKind::Flat,
+            Profile::Power { .. } => ProfileKind::Power,
+            Profile::Tabulated(_) => ProfileKind::Tabulated,
         }
+    }
+
+    /// Short name ([`ProfileKind::name`]).
+    pub fn name(&self) -> &'static str {
+        self.kind().name()
     }
 
     /// Largest admissible contact radius (m): `R` for the sphere (excluded),

@@ -49,7 +49,7 @@ impl TabulatedProfile {
         let n = r.len();
         if n < 3 || f.len() != n {
             return Err(Error::invalid(
-                "profile.r",
+                "r",
                 format!(
                     "needs >= 3 points and as many f values (got {n} r, {} f)",
                     f.len()
@@ -57,34 +57,31 @@ impl TabulatedProfile {
             ));
         }
         if let Some(i) = r.iter().position(|v| !v.is_finite()) {
-            return Err(Error::invalid("profile.r", format!("r[{i}] is not finite")));
+            return Err(Error::invalid("r", format!("r[{i}] is not finite")));
         }
         if let Some(i) = f.iter().position(|v| !v.is_finite()) {
-            return Err(Error::invalid("profile.f", format!("f[{i}] is not finite")));
+            return Err(Error::invalid("f", format!("f[{i}] is not finite")));
         }
         if r[0] != 0.0 || f[0] != 0.0 {
             return Err(Error::invalid(
-                "profile.r",
+                "r",
                 "the table must start at the apex: r[0] = 0 and f[0] = 0",
             ));
         }
         if let Some(i) = (1..n).find(|&i| !(r[i] > r[i - 1])) {
             return Err(Error::invalid(
-                "profile.r",
+                "r",
                 format!("r must increase strictly (r[{i}] = {})", r[i]),
             ));
         }
         if let Some(i) = (1..n).find(|&i| f[i] < f[i - 1]) {
             return Err(Error::invalid(
-                "profile.f",
+                "f",
                 format!("f must not decrease (f[{i}] = {} < f[{}])", f[i], i - 1),
             ));
         }
         if !(f[n - 1] > 0.0) {
-            return Err(Error::invalid(
-                "profile.f",
-                "the profile is flat everywhere",
-            ));
+            return Err(Error::invalid("f", "the profile is flat everywhere"));
         }
         let h: Vec<f64> = r.windows(2).map(|w| w[1] - w[0]).collect();
         let del: Vec<f64> = (0..n - 1).map(|k| (f[k + 1] - f[k]) / h[k]).collect();
@@ -93,7 +90,7 @@ impl TabulatedProfile {
             (1..n - 1).find(|&k| (del[k] - del[k - 1]).abs() > MAX_SLOPE_JUMP * max_del)
         {
             return Err(Error::invalid(
-                "profile.f",
+                "f",
                 format!(
                     "not smooth enough: the slope jumps from {} to {} at r = {} m; \
                      tabulate more finely",
@@ -408,19 +405,19 @@ mod tests {
     #[test]
     fn rejects_bad_tables_naming_the_column() {
         let e = TabulatedProfile::new(vec![0.0, 1.0], vec![0.0, 1.0]).unwrap_err();
-        assert_eq!(e.field(), Some("profile.r"));
+        assert_eq!(e.field(), Some("r"));
         let e = TabulatedProfile::new(vec![0.0, 1.0, 2.0], vec![0.0, 1.0, 0.5]).unwrap_err();
-        assert_eq!(e.field(), Some("profile.f"));
+        assert_eq!(e.field(), Some("f"));
         let e = TabulatedProfile::new(vec![0.0, 2.0, 1.0], vec![0.0, 1.0, 2.0]).unwrap_err();
-        assert_eq!(e.field(), Some("profile.r"));
+        assert_eq!(e.field(), Some("r"));
         let e = TabulatedProfile::new(vec![1.0, 2.0, 3.0], vec![0.0, 1.0, 2.0]).unwrap_err();
-        assert_eq!(e.field(), Some("profile.r"));
+        assert_eq!(e.field(), Some("r"));
         // A step: flat then steep.
         let r = vec![0.0, 1.0, 2.0, 3.0, 4.0];
         let f = vec![0.0, 0.0, 0.0, 5.0, 5.1];
         let e = TabulatedProfile::new(r, f).unwrap_err();
         assert!(e.to_string().contains("smooth"), "{e}");
         let e = TabulatedProfile::new(vec![0.0, 1.0, 2.0], vec![0.0, 0.0, 0.0]).unwrap_err();
-        assert_eq!(e.field(), Some("profile.f"));
+        assert_eq!(e.field(), Some("f"));
     }
 }

@@ -21,7 +21,7 @@
 //! `a_i / sum a`, Greenwood's form `1 - sum a^2/(sum a)^2` (physics.md).
 
 use super::spot::{SpotResistance, Spreading};
-use crate::error::{positive, Error, Result};
+use crate::error::{positive, Result};
 use crate::heights::HeightDistribution;
 use crate::law::{AsperityLaw, Branch};
 use crate::numeric::quadrature::{integrate_pieces_n, QuadOptions};
@@ -49,21 +49,26 @@ pub enum Interaction {
 }
 
 impl Interaction {
+    /// Both choices.
+    pub const ALL: [Interaction; 2] = [Interaction::None, Interaction::Greenwood];
+
     /// `"none"` or `"greenwood"` (the scene's `interaction`).
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `interaction` otherwise.
-    pub fn parse(name: &str) -> Result<Self> {
-        match name {
-            "none" => Ok(Interaction::None),
-            "greenwood" => Ok(Interaction::Greenwood),
-            other => Err(Error::invalid(
-                "interaction",
-                format!("unknown interaction {other:?}; known: none, greenwood"),
-            )),
+    pub fn name(self) -> &'static str {
+        match self {
+            Interaction::None => "none",
+            Interaction::Greenwood => "greenwood",
         }
     }
 }
+
+impl crate::named::Named for Interaction {
+    const ALL: &'static [Self] = &Interaction::ALL;
+    const WHAT: &'static str = "interaction";
+    fn name(self) -> &'static str {
+        Interaction::name(self)
+    }
+}
+crate::serde_by_name!(Interaction);
 
 /// Sums over the spots of one state.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -399,9 +404,5 @@ mod tests {
         assert!(!near.interaction_skipped);
         assert!(near.interaction.unwrap() > 0.0);
         assert!(near.resistance > near.parallel);
-        assert_eq!(
-            Interaction::parse("x").unwrap_err().field(),
-            Some("interaction")
-        );
     }
 }

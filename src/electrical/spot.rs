@@ -35,24 +35,8 @@ pub enum Spreading {
 }
 
 impl Spreading {
-    /// Names accepted by [`Spreading::parse`] (the scene's `spreading`).
-    pub const NAMES: [&'static str; 3] = ["maxwell", "sharvin", "wexler"];
-
-    /// The model called `name` (`"maxwell"`, `"sharvin"`, `"wexler"`).
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `spreading` for any other name.
-    pub fn parse(name: &str) -> Result<Self> {
-        match name {
-            "maxwell" => Ok(Spreading::Maxwell),
-            "sharvin" => Ok(Spreading::Sharvin),
-            "wexler" => Ok(Spreading::Wexler),
-            other => Err(Error::invalid(
-                "spreading",
-                format!("unknown model {other:?}; known: maxwell, sharvin, wexler"),
-            )),
-        }
-    }
+    /// Every model.
+    pub const ALL: [Spreading; 3] = [Spreading::Maxwell, Spreading::Sharvin, Spreading::Wexler];
 
     /// Lower-case name.
     pub fn name(self) -> &'static str {
@@ -63,6 +47,15 @@ impl Spreading {
         }
     }
 }
+
+impl crate::named::Named for Spreading {
+    const ALL: &'static [Self] = &Spreading::ALL;
+    const WHAT: &'static str = "spreading";
+    fn name(self) -> &'static str {
+        Spreading::name(self)
+    }
+}
+crate::serde_by_name!(Spreading);
 
 /// Mikrajuddin et al. (1999) fit of Wexler's `Gamma(K)`,
 /// `(1 + 0.83 K)/(1 + 1.33 K)`: 1 at `K = 0`, `0.83/1.33` as `K -> inf`.
@@ -325,12 +318,5 @@ mod tests {
         let c = Conductor::new(RHO, None).unwrap();
         let e = SpotResistance::new(Spreading::Maxwell, c, c, -1.0).unwrap_err();
         assert_eq!(e.field(), Some("film_resistance"));
-        assert_eq!(
-            Spreading::parse("ohm").unwrap_err().field(),
-            Some("spreading")
-        );
-        for n in Spreading::NAMES {
-            assert_eq!(Spreading::parse(n).unwrap().name(), n);
-        }
     }
 }

@@ -31,6 +31,15 @@ pub struct DistributionParams {
     pub heights: Option<Vec<f64>>,
 }
 
+impl crate::named::Named for DistributionKind {
+    const ALL: &'static [Self] = &DistributionKind::ALL;
+    const WHAT: &'static str = "distribution";
+    fn name(self) -> &'static str {
+        DistributionKind::name(self)
+    }
+}
+crate::serde_by_name!(DistributionKind);
+
 impl DistributionKind {
     /// Every kind, in the order tables list them.
     pub const ALL: [DistributionKind; 5] = [
@@ -50,23 +59,6 @@ impl DistributionKind {
             DistributionKind::TruncatedGaussian => "truncated-gaussian",
             DistributionKind::Empirical => "empirical",
         }
-    }
-
-    /// Parses a name.
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `distribution`, listing the known names.
-    pub fn parse(name: &str) -> Result<Self> {
-        Self::ALL
-            .into_iter()
-            .find(|k| k.name() == name)
-            .ok_or_else(|| {
-                let known: Vec<_> = Self::ALL.iter().map(|k| k.name()).collect();
-                Error::invalid(
-                    "distribution",
-                    format!("unknown distribution {name:?}; known: {}", known.join(", ")),
-                )
-            })
     }
 
     /// The one parameter this kind needs, by its name in
@@ -150,7 +142,6 @@ mod tests {
     #[test]
     fn every_kind_round_trips_and_builds_with_its_parameter() {
         for k in DistributionKind::ALL {
-            assert_eq!(DistributionKind::parse(k.name()).unwrap(), k);
             let params = DistributionParams {
                 weibull_shape: (k.parameter() == Some("weibull_shape")).then_some(1.5),
                 truncation: (k.parameter() == Some("truncation")).then_some(3.0),
@@ -171,10 +162,6 @@ mod tests {
                 assert_eq!(e.field(), Some(p));
             }
         }
-        assert_eq!(
-            DistributionKind::parse("gauss").unwrap_err().field(),
-            Some("distribution")
-        );
     }
 
     #[test]

@@ -59,6 +59,14 @@ impl Bradley {
 }
 
 impl AsperityLaw for Bradley {
+    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
+        super::LawKind::Bradley.radius_scaling()
+    }
+
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Bradley.cost_ns()
+    }
+
     fn name(&self) -> &'static str {
         "bradley"
     }

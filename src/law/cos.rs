@@ -236,6 +236,14 @@ impl Cos {
 }
 
 impl AsperityLaw for Cos {
+    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
+        super::LawKind::Cos.radius_scaling()
+    }
+
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Cos.cost_ns()
+    }
+
     fn name(&self) -> &'static str {
         "cos"
     }

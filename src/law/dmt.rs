@@ -49,6 +49,14 @@ impl Dmt {
 }
 
 impl AsperityLaw for Dmt {
+    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
+        super::LawKind::Dmt.radius_scaling()
+    }
+
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Dmt.cost_ns()
+    }
+
     fn name(&self) -> &'static str {
         "dmt"
     }

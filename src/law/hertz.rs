@@ -55,6 +55,14 @@ impl Hertz {
 }
 
 impl AsperityLaw for Hertz {
+    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
+        super::LawKind::Hertz.radius_scaling()
+    }
+
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Hertz.cost_ns()
+    }
+
     fn name(&self) -> &'static str {
         "hertz"
     }

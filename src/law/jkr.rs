@@ -276,6 +276,14 @@ impl Jkr {
 }
 
 impl AsperityLaw for Jkr {
+    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
+        super::LawKind::Jkr.radius_scaling()
+    }
+
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Jkr.cost_ns()
+    }
+
     fn name(&self) -> &'static str {
         "jkr"
     }

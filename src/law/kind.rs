@@ -55,6 +55,15 @@ impl LawInputs {
     }
 }
 
+impl crate::named::Named for LawKind {
+    const ALL: &'static [Self] = &LawKind::ALL;
+    const WHAT: &'static str = "law";
+    fn name(self) -> &'static str {
+        LawKind::name(self)
+    }
+}
+crate::serde_by_name!(LawKind);
+
 /// Evaluation cost (ns) above which a law is replaced by a Chebyshev table
 /// on a curve: a table lookup costs ~20 ns and pays for its few thousand
 /// build evaluations within one 1000-point curve (docs/performance.md).
@@ -83,22 +92,25 @@ impl LawKind {
         }
     }
 
-    /// Parses a lower-case name.
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `law` and listing the known names.
-    pub fn parse(name: &str) -> Result<Self> {
-        LawKind::ALL
-            .iter()
-            .copied()
-            .find(|k| k.name() == name)
-            .ok_or_else(|| {
-                let known: Vec<_> = LawKind::ALL.iter().map(|k| k.name()).collect();
-                Error::invalid(
-                    "law",
-                    format!("unknown law {name:?}; known: {}", known.join(", ")),
-                )
-            })
+    /// Whether the law applies to a rough surface of unbounded summit
+    /// heights ([`LawKind::rough_surface_limit`] says why not).
+    pub fn on_rough_surfaces(self) -> bool {
+        self.rough_surface_limit().is_none()
+    }
+
+    /// Why the law does not apply to a rough surface, if it does not:
+    /// Bradley's rigid spheres have a load that diverges as the gap closes,
+    /// so any height distribution with summits beyond the flat gives an
+    /// infinite total.
+    pub fn rough_surface_limit(self) -> Option<&'static str> {
+        match self {
+            LawKind::Bradley => Some(
+                "rigid spheres (Bradley) carry a load that diverges as the gap closes; \
+                 summits that reach the flat make the total infinite (use it for one summit, \
+                 asperity law --law bradley)",
+            ),
+            _ => None,
+        }
     }
 
     /// Whether the law needs a work of adhesion `w > 0`.
@@ -190,6 +202,7 @@ mod tests {
 
     #[test]
     fn law_kind_round_trips_and_rejects_unknown() {
+        use crate::named::Named;
         for k in LawKind::ALL {
             assert_eq!(LawKind::parse(k.name()).unwrap(), k);
         }

@@ -759,6 +759,14 @@ impl Maugis {
 }
 
 impl AsperityLaw for Maugis {
+    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
+        super::LawKind::Maugis.radius_scaling()
+    }
+
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Maugis.cost_ns()
+    }
+
     fn name(&self) -> &'static str {
         "maugis"
     }

@@ -46,7 +46,7 @@ pub use cursor::LawCursor;
 pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
-pub use kind::{LawInputs, LawKind};
+pub use kind::{LawInputs, LawKind, TABULATE_ABOVE_NS};
 pub use maugis::{Maugis, MaugisCurve};
 pub use scaling::RadiusScaling;
 pub use shaped::Shaped;
@@ -330,7 +330,42 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     fn power_form(&self) -> Option<PowerForm> {
         None
     }
+
+    /// Whether a retracting asperity can differ from an approaching one at
+    /// the same interference: adhesive hysteresis (attach and detach
+    /// interferences differ) or memory of the maximum interference (the
+    /// permanent flattening of plastic laws). Without history the
+    /// retraction leg of a program equals its approach leg.
+    fn has_history(&self) -> bool {
+        self.remembers_maximum() || self.attach_interference() != self.detach_interference()
+    }
+
+    /// How the law scales with the asperity radius ([`RadiusScaling`]): the
+    /// law at radius `k R` is this one with interference, load and area
+    /// multiplied by the scaling's factors. `None` (the default) for laws
+    /// that depend on `R` otherwise (Maugis–Dugdale: `lambda ~ R^(1/3)`),
+    /// or are tables of one radius.
+    fn radius_scaling(&self) -> Option<RadiusScaling> {
+        None
+    }
+
+    /// Cost of one evaluation on the approach branch (ns; criterion medians
+    /// of `cargo bench --bench laws`, docs/performance.md). The default is
+    /// a table lookup, [`TABLE_LOOKUP_NS`].
+    fn cost_ns(&self) -> f64 {
+        TABLE_LOOKUP_NS
+    }
+
+    /// Whether a loading program should evaluate a Chebyshev table of the
+    /// law instead ([`AsperityLaw::cost_ns`] above [`TABULATE_ABOVE_NS`]).
+    fn worth_tabulating(&self) -> bool {
+        self.cost_ns() > TABULATE_ABOVE_NS
+    }
 }
+
+/// Cost (ns) of one evaluation of a tabulated law (Chebyshev panel or
+/// cubic table): the default [`AsperityLaw::cost_ns`].
+pub const TABLE_LOOKUP_NS: f64 = 20.0;
 
 /// A law that is zero for `delta < onset` and, for `delta >= onset` on both
 /// branches, `P = sum c_k (delta - onset)^n_k`, `pi a^2 = sum d_k (delta -

@@ -194,24 +194,6 @@ impl Variant {
         }
     }
 
-    /// Parses a scene name.
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `law` and listing the known names.
-    pub fn parse(name: &str) -> Result<Self> {
-        Variant::ALL
-            .iter()
-            .copied()
-            .find(|v| v.name() == name)
-            .ok_or_else(|| {
-                let known: Vec<_> = Variant::ALL.iter().map(|v| v.name()).collect();
-                Error::invalid(
-                    "law",
-                    format!("unknown plastic law {name:?}; known: {}", known.join(", ")),
-                )
-            })
-    }
-
     /// Regime limits in units of the variant's critical interference:
     /// `(elastic up to, fully plastic beyond)`. KE: `(1, 110)`; CEB: `(1, 1)`
     /// (no elastic-plastic range: plastic as soon as it yields); ZMC:
@@ -226,6 +208,15 @@ impl Variant {
         }
     }
 }
+
+impl crate::named::Named for Variant {
+    const ALL: &'static [Self] = &Variant::ALL;
+    const WHAT: &'static str = "law";
+    fn name(self) -> &'static str {
+        Variant::name(self)
+    }
+}
+crate::serde_by_name!(Variant);
 
 /// Deformation regime of one contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -371,9 +362,5 @@ mod tests {
         assert_eq!(l.classify(0.5 * l.elastic), Regime::Elastic);
         assert_eq!(l.classify(2.0 * l.elastic), Regime::ElasticPlastic);
         assert_eq!(l.classify(111.0 * l.elastic), Regime::FullyPlastic);
-        for v in Variant::ALL {
-            assert_eq!(Variant::parse(v.name()).unwrap(), v);
-        }
-        assert_eq!(Variant::parse("ke").unwrap_err().field(), Some("law"));
     }
 }

@@ -1,8 +1,7 @@
 //! Executing a [`Plan`]: the loading program, pull-off and hysteresis energy.
 
-use super::plan::LawSource;
 use super::plan::{McPlan, Plan};
-use super::scene::ProgramTarget;
+use super::scene::{LawName, ProgramTarget};
 use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction};
 use crate::error::Result;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
@@ -385,33 +384,17 @@ impl Plan {
         r.listed = model.states(&steps, &outputs)?;
         let closest = r.curve.program.closest;
         if let Some(p) = self.plasticity {
-            let limits = match self.law.source {
-                LawSource::Plastic(v) => {
-                    let c = p.critical_interference(
-                        v,
-                        self.contact.radius,
-                        self.contact.contact_modulus,
-                    );
-                    let (e, f) = v.regime_multiples();
-                    RegimeLimits {
-                        elastic: e * c,
-                        fully_plastic: f * c,
-                    }
-                }
-                // An elastic law: the Kogut–Etsion regimes as the diagnostic.
-                _ => {
-                    let c = p.critical_interference(
-                        Variant::KogutEtsion,
-                        self.contact.radius,
-                        self.contact.contact_modulus,
-                    );
-                    let (e, f) = Variant::KogutEtsion.regime_multiples();
-                    RegimeLimits {
-                        elastic: e * c,
-                        fully_plastic: f * c,
-                    }
-                }
+            // An elastic law: the Kogut–Etsion regimes as the diagnostic.
+            let variant = match self.law.source {
+                LawName::Plastic(v) => v,
+                _ => Variant::KogutEtsion,
             };
+            let limits = RegimeLimits::new(
+                variant,
+                &p,
+                self.contact.radius,
+                self.contact.contact_modulus,
+            );
             r.regimes = Some(contact_fractions(
                 &limits,
                 self.surface.sigma,
@@ -419,7 +402,7 @@ impl Plan {
                 self.distribution.as_ref(),
             ));
         }
-        if matches!(self.law.source, LawSource::Plastic(_)) {
+        if matches!(self.law.source, LawName::Plastic(_)) {
             // The elastic law the plastic one reduces to as psi -> 0: JKR
             // with adhesion, Hertz without.
             let kind = if self.contact.adhesion.work() > 0.0 {

@@ -2,6 +2,7 @@
 
 use crate::CliError;
 use asperity::law::LawKind;
+use asperity::named::Named;
 use asperity::prelude::*;
 use clap::Args;
 use serde::Serialize;

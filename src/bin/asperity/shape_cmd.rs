@@ -4,15 +4,18 @@
 //! Maugis–Dugdale instead of JKR. SI units.
 
 use crate::CliError;
-use asperity::axisym::{sphere_exact, AxisymJkr, AxisymMd, MdPoint, Profile};
+use asperity::axisym::{
+    sphere_exact, AxisymJkr, AxisymMd, MdPoint, Profile, ProfileKind, ProfileParams,
+};
 use asperity::law::Instability;
+use asperity::named::Named;
 use clap::Args;
 use serde::Serialize;
 
 /// Arguments of `asperity shape`.
 #[derive(Args, Debug)]
 pub struct ShapeArgs {
-    /// Profile: paraboloid, sphere, cone, flat or power.
+    /// Profile: paraboloid, sphere, cone, flat or power (tabulated only in scenes).
     #[arg(long)]
     profile: String,
     /// Sphere radius (paraboloid, sphere) or punch radius (flat), m.
@@ -80,10 +83,6 @@ fn point(i: Instability) -> Point {
     }
 }
 
-fn need(v: Option<f64>, flag: &str, profile: &str) -> Result<f64, CliError> {
-    v.ok_or_else(|| CliError::Usage(format!("{flag} is required for --profile {profile}")))
-}
-
 /// Core parameter names to the flags as the command line spells them.
 fn flag(e: asperity::Error) -> CliError {
     let name = match e.field() {
@@ -104,23 +103,20 @@ fn flag(e: asperity::Error) -> CliError {
 }
 
 fn profile(args: &ShapeArgs) -> Result<Profile, CliError> {
-    let p = args.profile.as_str();
-    match p {
-        "paraboloid" => Profile::paraboloid(need(args.radius, "--radius", p)?),
-        "sphere" => Profile::sphere(need(args.radius, "--radius", p)?),
-        "flat" => Profile::flat(need(args.radius, "--radius", p)?),
-        "cone" => Profile::cone(need(args.tan_angle, "--tan-angle", p)?),
-        "power" => Profile::power(
-            need(args.coefficient, "--coefficient", p)?,
-            need(args.exponent, "--exponent", p)?,
-        ),
-        other => {
-            return Err(CliError::Usage(format!(
-                "--profile: unknown profile {other:?}; known: paraboloid, sphere, cone, flat, power"
-            )))
-        }
+    let kind = ProfileKind::parse(&args.profile).map_err(|e| flag(e.renamed("profile")))?;
+    if kind == ProfileKind::Tabulated {
+        return Err(CliError::Usage(
+            "--profile: tabulated profiles need their table (a scene's law.profile_r and \
+             law.profile_f)"
+                .into(),
+        ));
     }
-    .map_err(flag)
+    let mut p = ProfileParams::default();
+    p.radius = args.radius;
+    p.tan_angle = args.tan_angle;
+    p.exponent = args.exponent;
+    p.coefficient = args.coefficient;
+    kind.build(&p).map_err(flag)
 }
 
 fn parse_radii(text: &str, profile: &Profile) -> Result<Vec<f64>, CliError> {

@@ -211,6 +211,12 @@ macro_rules! plastic_asperity_law {
                 true
             }
 
+            /// Interferences scale with `R` (the critical interference is
+            /// proportional to `R`), loads with `R^2`, areas with `R^2`.
+            fn radius_scaling(&self) -> Option<$crate::law::RadiusScaling> {
+                Some($crate::law::RadiusScaling::PLASTIC)
+            }
+
             fn attach_interference(&self) -> f64 {
                 0.0
             }

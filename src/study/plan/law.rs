@@ -8,39 +8,16 @@ use crate::law::errors::LawErrorTable;
 use crate::law::{AsperityLaw, LawKind};
 use crate::material::plastic::Variant;
 use crate::material::AsperityContact;
-use crate::study::scene::{LawFamily, Scene};
+use crate::study::scene::{LawName, Scene};
 use std::sync::Arc;
-
-/// Where the plan's law comes from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum LawSource {
-    /// An analytic law.
-    Kind(LawKind),
-    /// The law calibrated from the full Lennard-Jones sphere solver.
-    Calibrated,
-    /// An elastic-plastic law (with JKR adhesion on the unloading shape
-    /// when `w > 0`).
-    Plastic(Variant),
-    /// JKR on an axisymmetric profile (`law.profile`).
-    Shaped,
-}
-
-impl LawSource {
-    /// Whether the retraction leg can differ from the approach leg: adhesive
-    /// hysteresis or plastic history.
-    pub fn has_history(&self, law: &dyn AsperityLaw) -> bool {
-        matches!(self, LawSource::Plastic(_))
-            || law.attach_interference() != law.detach_interference()
-    }
-}
 
 /// The law a plan uses.
 #[derive(Debug, Clone)]
 pub struct LawChoice {
-    /// Its name (`"hertz"`, `"maugis"`, `"calibrated"`, ...).
+    /// Its name as shown (`"hertz"`, `"maugis"`, `"shaped (cone)"`, ...).
     pub name: String,
-    /// Where it comes from.
-    pub source: LawSource,
+    /// Which law it is (never [`LawName::Auto`]: the choice is made).
+    pub source: LawName,
     /// The built law (for a previewed, not yet calibrated law: Maugis–Dugdale
     /// at the same `lambda`, for the range decisions only).
     pub law: Arc<dyn AsperityLaw>,
@@ -62,29 +39,27 @@ pub(super) fn choose(
     let rtol = scene.accuracy.rtol;
     let table = LawErrorTable::embedded();
     let w = contact.adhesion.work();
-    let kind_name = scene.law.kind.as_str();
-    match scene.law.family()? {
-        LawFamily::Plastic(v) => return plastic(scene, contact, v, decisions),
-        LawFamily::Shaped => return shaped(scene, contact, decisions),
-        LawFamily::Elastic => {}
-    }
-    if kind_name == "calibrated" && w > 0.0 {
-        return calibrated(contact, preview, decisions);
-    }
-    let (kind, reason) = if w == 0.0 {
-        if !matches!(kind_name, "auto" | "hertz") {
-            return Err(Error::invalid(
-                "law.kind",
-                format!(
-                    "{kind_name:?} needs adhesion, but adhesion.w = 0 (use \"hertz\" or \"auto\")"
-                ),
-            ));
+    let given = scene.law.kind;
+    let (kind, reason) = match given {
+        LawName::Plastic(v) => return plastic(scene, contact, v, decisions),
+        LawName::Shaped => return shaped(scene, contact, decisions),
+        LawName::Calibrated if w > 0.0 => return calibrated(contact, preview, decisions),
+        _ if w == 0.0 => {
+            if !matches!(given, LawName::Auto | LawName::Analytic(LawKind::Hertz)) {
+                return Err(Error::invalid(
+                    "law.kind",
+                    format!(
+                        "{:?} needs adhesion, but adhesion.w = 0 (use \"hertz\" or \"auto\")",
+                        given.name()
+                    ),
+                ));
+            }
+            (LawKind::Hertz, LawReason::NoAdhesion)
         }
-        (LawKind::Hertz, LawReason::NoAdhesion)
-    } else if kind_name == "auto" && mode == PlanMode::EverythingOn {
-        (LawKind::Maugis, LawReason::EverythingOn)
-    } else if kind_name == "auto" {
-        match table.cheapest_within(mu, rtol) {
+        LawName::Auto if mode == PlanMode::EverythingOn => {
+            (LawKind::Maugis, LawReason::EverythingOn)
+        }
+        LawName::Auto => match table.cheapest_within(mu, rtol) {
             Some((k, error)) => (
                 k,
                 LawReason::CheapestWithin {
@@ -97,10 +72,10 @@ pub(super) fn choose(
                 let (k, error) = table.most_accurate(mu);
                 (k, LawReason::NoneWithin { rtol, error })
             }
-        }
-    } else {
-        let k = LawKind::parse(kind_name).map_err(|e| e.renamed("law.kind"))?;
-        (k, LawReason::Given)
+        },
+        LawName::Analytic(k) => (k, LawReason::Given),
+        // Calibrated without adhesion was answered above (w == 0).
+        LawName::Calibrated => (LawKind::Hertz, LawReason::NoAdhesion),
     };
     let law: Arc<dyn AsperityLaw> = Arc::from(kind.build(contact)?);
     decisions.push(Decision::Law {
@@ -111,7 +86,7 @@ pub(super) fn choose(
     });
     Ok(LawChoice {
         name: kind.name().to_string(),
-        source: LawSource::Kind(kind),
+        source: LawName::Analytic(kind),
         law,
         measured_error: table.error(kind, mu),
     })
@@ -164,7 +139,7 @@ fn calibrated(
     });
     Ok(LawChoice {
         name: "calibrated".into(),
-        source: LawSource::Calibrated,
+        source: LawName::Calibrated,
         law,
         measured_error: None,
     })
@@ -216,7 +191,7 @@ fn plastic(
     });
     Ok(LawChoice {
         name: variant.name().into(),
-        source: LawSource::Plastic(variant),
+        source: LawName::Plastic(variant),
         law,
         measured_error: None,
     })
@@ -251,7 +226,7 @@ fn shaped(
     });
     Ok(LawChoice {
         name,
-        source: LawSource::Shaped,
+        source: LawName::Shaped,
         law: Arc::new(law),
         measured_error: None,
     })

@@ -31,7 +31,7 @@ mod montecarlo;
 mod topography;
 
 pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
-pub use law::{LawChoice, LawSource};
+pub use law::LawChoice;
 pub use montecarlo::McPlan;
 pub use topography::TopographyPlan;
 
@@ -44,7 +44,9 @@ use crate::law::AsperityLaw;
 use crate::loading::{LoadingModel, Observables};
 use crate::material::plastic::{plasticity_index, Plasticity};
 use crate::material::AsperityContact;
-use crate::study::scene::{build_contact, build_distribution, build_surface, ProgramTarget, Scene};
+use crate::study::scene::{
+    build_contact, build_distribution, build_surface, LawName, ProgramTarget, Scene,
+};
 use std::fmt;
 use std::path::Path;
 use std::sync::Arc;
@@ -225,7 +227,7 @@ impl Plan {
                 surface.sigma,
                 surface.radius,
             );
-            let plastic_law = matches!(law.source, LawSource::Plastic(_));
+            let plastic_law = matches!(law.source, LawName::Plastic(_));
             decisions.push(Decision::Plasticity {
                 psi,
                 hardness: p.hardness(),
@@ -245,7 +247,7 @@ impl Plan {
                 interval,
             });
         }
-        let hysteresis_free = !law.source.has_history(law.law.as_ref());
+        let hysteresis_free = !law.law.has_history();
         let compute_retraction = mode == PlanMode::EverythingOn || !hysteresis_free;
         decisions.push(Decision::Retraction {
             computed: compute_retraction,
@@ -519,7 +521,8 @@ fn tabulation(
     rtol: f64,
     mode: PlanMode,
 ) -> Option<((f64, f64), f64)> {
-    let worth = matches!(law.source, LawSource::Kind(k) if k.worth_tabulating());
+    // Laws that are already tables (calibrated, shaped) or cheap say so.
+    let worth = law.law.worth_tabulating();
     if mode == PlanMode::EverythingOn || !worth {
         return None;
     }

@@ -1,10 +1,9 @@
 //! The Monte Carlo part of a plan: population size, scale factor, and the
 //! per-summit law (rescaled per radius when the law's kind allows).
 
-use super::law::{LawChoice, LawSource};
+use super::law::LawChoice;
 use crate::error::{Error, Result};
 use crate::gw::RoughSurface;
-use crate::law::RadiusScaling;
 use crate::material::AsperityContact;
 use crate::montecarlo::{PopulationSpec, RadiusSpec, SummitLaw, MAX_SUMMITS};
 use crate::study::scene::MonteCarloSpec;
@@ -49,15 +48,9 @@ impl McPlan {
         let summit_law = if spec.radius_log_std == 0.0 {
             SummitLaw::fixed(law.law.clone(), contact.radius)?
         } else {
-            match law.source {
-                LawSource::Kind(k) if k.radius_scaling().is_some() => {
-                    SummitLaw::from_kind(k, contact)?
-                }
-                // Without adhesion the plastic fits scale as (1, 2, 1).
-                LawSource::Plastic(_) if contact.adhesion.work() == 0.0 => {
-                    SummitLaw::scaled(law.law.clone(), contact.radius, RadiusScaling::PLASTIC)?
-                }
-                _ => {
+            match law.law.radius_scaling() {
+                Some(s) => SummitLaw::scaled(law.law.clone(), contact.radius, s)?,
+                None => {
                     return Err(Error::invalid(
                         "montecarlo.radius_log_std",
                         format!(

@@ -2,11 +2,12 @@
 //! uses (`surface.summits`), and whether the other one is run beside it
 //! (`surface.compare`).
 
-use super::law::{LawChoice, LawSource};
+use super::law::LawChoice;
 use crate::error::{Error, Result};
 use crate::law::LawKind;
 use crate::material::AsperityContact;
 use crate::montecarlo::SummitLaw;
+use crate::study::scene::LawName;
 use crate::study::scene::{Resolved, SummitSource, TopographySpec};
 use crate::surface::Characterisation;
 use std::path::PathBuf;
@@ -37,8 +38,8 @@ impl TopographyPlan {
     ) -> Result<TopographyPlan> {
         let spec = resolved.spec.clone();
         let kind = match law.source {
-            LawSource::Kind(k) => Some(k),
-            LawSource::Calibrated | LawSource::Plastic(_) | LawSource::Shaped => None,
+            LawName::Analytic(k) => Some(k),
+            _ => None,
         };
         let needs_sum = spec.summits == SummitSource::Measured || spec.compare;
         let summit_law = if needs_sum {
@@ -47,7 +48,7 @@ impl TopographyPlan {
             } else {
                 "surface.compare"
             };
-            let scaling = kind.and_then(|k| k.radius_scaling()).ok_or_else(|| {
+            let scaling = law.law.radius_scaling().ok_or_else(|| {
                 Error::invalid(
                     field,
                     format!(

@@ -33,8 +33,8 @@ pub fn build_contact(scene: &Scene) -> Result<AsperityContact> {
 /// Bad values, naming the scene field.
 pub fn build_surface(scene: &Scene) -> Result<RoughSurface> {
     let s = &scene.surface;
-    let sigma = match (s.distribution.as_str(), &s.heights) {
-        ("empirical", Some(h)) => crate::heights::Empirical::new(h)
+    let sigma = match (s.distribution, &s.heights) {
+        (crate::heights::DistributionKind::Empirical, Some(h)) => crate::heights::Empirical::new(h)
             .map_err(|e| e.in_table("surface"))?
             .std_m(),
         _ => s.sigma,
@@ -52,8 +52,8 @@ pub fn build_distribution(spec: &SurfaceSpec) -> Result<Arc<dyn HeightDistributi
         truncation: spec.truncation,
         heights: spec.heights.clone(),
     };
-    crate::heights::DistributionKind::parse(&spec.distribution)
-        .and_then(|k| k.build(&params))
+    spec.distribution
+        .build(&params)
         .map_err(|e| e.in_table("surface"))
 }
 

@@ -3,11 +3,14 @@
 //! profile keys, `[electrical]` and `[switch]`. Each is validated here,
 //! naming the dotted field, and built into core objects.
 
+use super::law_name::LawName;
 use super::schema::{ElectricalSpec, LawSpec, Scene, MAX_LISTED_STATES};
 use crate::axisym::Profile;
-use crate::electrical::{Conductor, Heating, Interaction, SpotResistance, Spreading, Switch};
+use crate::axisym::{ProfileKind, ProfileParams};
+use crate::electrical::{Conductor, Heating, Interaction, SpotResistance, Switch};
 use crate::error::{finite, non_negative, positive, Allowed, Error, Result};
-use crate::material::plastic::{Plasticity, Variant};
+use crate::material::plastic::Plasticity;
+use crate::named::Named;
 
 /// Where the program's approach stops, as the scene gives it.
 #[derive(Debug, Clone, PartialEq)]
@@ -22,65 +25,18 @@ pub enum ProgramTarget {
     Loads(Vec<f64>),
 }
 
-/// Which family the scene's `law.kind` belongs to.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum LawFamily {
-    /// An elastic analytic law, `auto` or `calibrated`.
-    Elastic,
-    /// An elastic-plastic law.
-    Plastic(Variant),
-    /// JKR on an axisymmetric profile.
-    Shaped,
-}
-
-/// Elastic law names a scene may give (besides the plastic ones and
-/// `shaped`).
-pub const ELASTIC_LAWS: [&str; 7] = ["auto", "hertz", "dmt", "jkr", "maugis", "cos", "calibrated"];
-
-/// The profile names of `law.profile`.
-pub const PROFILES: [&str; 6] = ["paraboloid", "sphere", "cone", "flat", "power", "tabulated"];
-
 impl LawSpec {
-    /// The family of `kind`.
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] naming `law.kind` for unknown names.
-    pub fn family(&self) -> Result<LawFamily> {
-        let k = self.kind.as_str();
-        if ELASTIC_LAWS.contains(&k) {
-            return Ok(LawFamily::Elastic);
+    /// The profile keys, as the core's [`ProfileParams`] (`law.profile_r`
+    /// and `law.profile_f` are its `r` and `f`).
+    fn profile_params(&self) -> ProfileParams {
+        ProfileParams {
+            radius: self.radius,
+            tan_angle: self.tan_angle,
+            exponent: self.exponent,
+            coefficient: self.coefficient,
+            r: self.profile_r.clone(),
+            f: self.profile_f.clone(),
         }
-        if k == "shaped" {
-            return Ok(LawFamily::Shaped);
-        }
-        Variant::parse(k).map(LawFamily::Plastic).map_err(|_| {
-            let mut known: Vec<&str> = ELASTIC_LAWS.to_vec();
-            known.extend(Variant::ALL.iter().map(|v| v.name()));
-            known.push("shaped");
-            Error::invalid(
-                "law.kind",
-                format!("unknown law {:?}; known: {}", self.kind, known.join(", ")),
-            )
-        })
-    }
-
-    /// The profile keys that are given, by scene name.
-    fn given_profile_keys(&self) -> Vec<&'static str> {
-        let mut keys = Vec::new();
-        for (name, given) in [
-            ("profile", self.profile.is_some()),
-            ("radius", self.radius.is_some()),
-            ("tan_angle", self.tan_angle.is_some()),
-            ("exponent", self.exponent.is_some()),
-            ("coefficient", self.coefficient.is_some()),
-            ("profile_r", self.profile_r.is_some()),
-            ("profile_f", self.profile_f.is_some()),
-        ] {
-            if given {
-                keys.push(name);
-            }
-        }
-        keys
     }
 
     /// The axisymmetric profile of a shaped law (`default_radius` for a
@@ -90,80 +46,38 @@ impl LawSpec {
     /// Missing or bad profile keys, and keys the profile does not use,
     /// naming the `law.` field.
     pub fn profile(&self, default_radius: f64) -> Result<Profile> {
-        let name = self.profile.as_deref().ok_or_else(|| {
+        let kind = self.profile.ok_or_else(|| {
             Error::invalid(
                 "law.profile",
                 format!(
                     "required for kind = \"shaped\"; one of {}",
-                    PROFILES.join(", ")
+                    ProfileKind::names().join(", ")
                 ),
             )
         })?;
-        let uses: &[&str] = match name {
-            "paraboloid" | "sphere" | "flat" => &["profile", "radius"],
-            "cone" => &["profile", "tan_angle"],
-            "power" => &["profile", "exponent", "coefficient"],
-            "tabulated" => &["profile", "profile_r", "profile_f"],
-            other => {
-                return Err(Error::invalid(
-                    "law.profile",
-                    format!("unknown profile {other:?}; known: {}", PROFILES.join(", ")),
-                ))
-            }
-        };
-        if let Some(k) = self.given_profile_keys().iter().find(|k| !uses.contains(k)) {
-            return Err(Error::invalid(
-                format!("law.{k}"),
-                format!(
-                    "does not apply to profile = {name:?} (it uses {})",
-                    uses.join(", ")
-                ),
-            ));
+        let mut params = self.profile_params();
+        if kind.parameters().contains(&"radius") && params.radius.is_none() {
+            params.radius = Some(default_radius);
         }
-        let need = |key: &str, x: Option<f64>| {
-            x.ok_or_else(|| {
-                Error::invalid(
-                    format!("law.{key}"),
-                    format!("required for profile = {name:?}"),
-                )
-            })
-        };
-        let radius = || -> Result<f64> {
-            let r = self.radius.unwrap_or(default_radius);
-            positive("law.radius", r)
-        };
-        let profile = match name {
-            "paraboloid" => Profile::paraboloid(radius()?),
-            "sphere" => Profile::sphere(radius()?),
-            "flat" => Profile::flat(radius()?),
-            "cone" => Profile::cone(positive(
-                "law.tan_angle",
-                need("tan_angle", self.tan_angle)?,
-            )?),
-            "power" => Profile::power(
-                positive("law.coefficient", need("coefficient", self.coefficient)?)?,
-                positive("law.exponent", need("exponent", self.exponent)?)?,
-            ),
-            _ => {
-                let r = self.profile_r.clone().ok_or_else(|| {
-                    Error::invalid("law.profile_r", "required for profile = \"tabulated\"")
-                })?;
-                let f = self.profile_f.clone().ok_or_else(|| {
-                    Error::invalid("law.profile_f", "required for profile = \"tabulated\"")
-                })?;
-                Profile::tabulated(r, f)
+        kind.build(&params).map_err(|e| match e.field() {
+            Some("r") => e.renamed("law.profile_r"),
+            Some("f") => e.renamed("law.profile_f"),
+            Some(f @ ("radius" | "tan_angle" | "exponent" | "coefficient")) => {
+                let f = format!("law.{f}");
+                e.renamed(&f)
             }
-        };
-        profile.map_err(|e| match e.field() {
-            Some(f) if f.starts_with("law.") => e,
-            Some("tan_angle") => e.renamed("law.tan_angle"),
-            Some("exponent") => e.renamed("law.exponent"),
-            Some("coefficient") => e.renamed("law.coefficient"),
-            Some("radius") => e.renamed("law.radius"),
-            Some("r") | Some("profile_r") => e.renamed("law.profile_r"),
-            Some("f") | Some("profile_f") => e.renamed("law.profile_f"),
             _ => e.in_table("law"),
         })
+    }
+
+    /// The profile keys that are given, by scene name.
+    fn given_profile_keys(&self) -> Vec<String> {
+        let mut keys: Vec<String> = self.profile.iter().map(|_| "profile".into()).collect();
+        keys.extend(self.profile_params().given().into_iter().map(|k| match k {
+            "r" | "f" => format!("profile_{k}"),
+            k => k.to_string(),
+        }));
+        keys
     }
 }
 
@@ -237,10 +151,9 @@ impl Scene {
     pub fn plasticity(&self) -> Result<Option<Plasticity>> {
         let m = &self.materials;
         let nu = if m.e2 < m.e1 { m.nu2 } else { m.nu1 };
-        let family = self.law.family()?;
         Plasticity::from_optional(
-            &self.law.kind,
-            matches!(family, LawFamily::Plastic(_)),
+            self.law.kind.name(),
+            matches!(self.law.kind, LawName::Plastic(_)),
             m.yield_strength,
             m.hardness,
             nu,
@@ -275,10 +188,9 @@ impl Scene {
                 });
             }
         }
-        let family = self.law.family()?;
         self.plasticity()?;
-        match family {
-            LawFamily::Shaped => {
+        match self.law.kind {
+            LawName::Shaped => {
                 self.law.profile(self.surface.radius)?;
             }
             _ => {
@@ -319,8 +231,7 @@ impl ElectricalSpec {
     /// same for the mean free paths); `sharvin` and `wexler` need mean free
     /// paths.
     pub fn spot_resistance(&self) -> Result<SpotResistance> {
-        let spreading =
-            Spreading::parse(&self.spreading).map_err(|e| e.renamed("electrical.spreading"))?;
+        let spreading = self.spreading;
         let pair = |name: &str, one: Option<f64>, a: Option<f64>, b: Option<f64>| {
             let field = |s: &str| format!("electrical.{name}{s}");
             match (one, a, b) {
@@ -430,6 +341,6 @@ impl ElectricalSpec {
     /// # Errors
     /// [`Error::Invalid`] naming `electrical.interaction`.
     pub fn interaction(&self) -> Result<Interaction> {
-        Interaction::parse(&self.interaction).map_err(|e| e.renamed("electrical.interaction"))
+        Ok(self.interaction)
     }
 }

@@ -9,6 +9,7 @@
 
 mod build;
 mod features;
+mod law_name;
 mod parse;
 mod schema;
 mod topography;
@@ -16,7 +17,8 @@ mod topography;
 pub use build::{
     build_contact, build_distribution, build_surface, map_derived, most_extreme_input,
 };
-pub use features::{LawFamily, ProgramTarget, ELASTIC_LAWS, PROFILES};
+pub use features::ProgramTarget;
+pub use law_name::LawName;
 pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
 pub use schema::{
@@ -46,7 +48,7 @@ mod tests {
     fn default_scene_parses_and_round_trips() {
         let s = Scene::from_toml(DEFAULT_SCENE).unwrap();
         assert_eq!(s.surface.sigma, 5e-9);
-        assert_eq!(s.law.kind, "auto");
+        assert_eq!(s.law.kind, LawName::Auto);
         let back = Scene::from_toml(&s.to_toml()).unwrap();
         assert_eq!(back, s);
     }

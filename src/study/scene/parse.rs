@@ -1,8 +1,9 @@
 //! Reading a scene from TOML text: parse errors carry the line number and the
 //! field; values are then validated with the field's dotted path.
 
-use super::schema::Scene;
+use super::schema::{Scene, SurfaceSpec};
 use crate::error::{finite, non_negative, positive, Allowed, Error, Result};
+use crate::heights::DistributionKind;
 
 impl Scene {
     /// Parses and validates a scene.
@@ -35,53 +36,7 @@ impl Scene {
         nu.check("materials.nu2", m.nu2)?;
         let s = &self.surface;
         super::topography::validate_surface(s)?;
-        match s.distribution.as_str() {
-            "gaussian" | "exponential" => {}
-            "weibull" => {
-                let k = s.weibull_shape.ok_or_else(|| {
-                    Error::invalid(
-                        "surface.weibull_shape",
-                        "required for distribution = \"weibull\"",
-                    )
-                })?;
-                positive("surface.weibull_shape", k)?;
-            }
-            "truncated-gaussian" => {
-                let k = s.truncation.ok_or_else(|| {
-                    Error::invalid(
-                        "surface.truncation",
-                        "required for distribution = \"truncated-gaussian\"",
-                    )
-                })?;
-                positive("surface.truncation", k)?;
-            }
-            "empirical" => {
-                let h = s.heights.as_ref().ok_or_else(|| {
-                    Error::invalid(
-                        "surface.heights",
-                        "required for distribution = \"empirical\"",
-                    )
-                })?;
-                if h.len() < 2 {
-                    return Err(Error::invalid(
-                        "surface.heights",
-                        format!("needs at least 2 measured heights, got {}", h.len()),
-                    ));
-                }
-                for &x in h {
-                    finite("surface.heights", x)?;
-                }
-            }
-            other => {
-                return Err(Error::invalid(
-                    "surface.distribution",
-                    format!(
-                        "unknown distribution {other:?}; known: gaussian, exponential, weibull, \
-                         truncated-gaussian, empirical"
-                    ),
-                ))
-            }
-        }
+        distribution_parameters(s)?;
         non_negative("adhesion.w", self.adhesion.w)?;
         positive("adhesion.z0", self.adhesion.z0)?;
         self.validate_features()?;
@@ -119,7 +74,6 @@ impl Scene {
             }
             non_negative("montecarlo.radius_log_std", mc.radius_log_std)?;
         }
-        not_applicable(self)?;
         costs(self)?;
         Ok(())
     }
@@ -154,33 +108,58 @@ const BYTES_PER_SUMMIT: f64 = 32.0;
 /// law plus summation; Maugis–Dugdale untabulated is ~200 ns).
 const NS_PER_SUMMIT_EVALUATION: f64 = 50.0;
 
-/// Keys that apply only to one distribution are refused on the others (an
-/// ignored key would hide a mistake, as an unknown key would).
-fn not_applicable(scene: &Scene) -> Result<()> {
-    let s = &scene.surface;
-    let d = s.distribution.as_str();
-    for (key, present, owner) in [
-        (
-            "surface.weibull_shape",
-            s.weibull_shape.is_some(),
-            "weibull",
-        ),
-        (
-            "surface.truncation",
-            s.truncation.is_some(),
-            "truncated-gaussian",
-        ),
-        ("surface.heights", s.heights.is_some(), "empirical"),
-    ] {
-        if present && d != owner {
+/// The distribution's own parameter, required and checked; parameters
+/// of the other distributions are refused (an ignored key would hide a
+/// mistake, as an unknown key would).
+fn distribution_parameters(s: &SurfaceSpec) -> Result<()> {
+    let kind = s.distribution;
+    let given = [
+        ("weibull_shape", s.weibull_shape.is_some()),
+        ("truncation", s.truncation.is_some()),
+        ("heights", s.heights.is_some()),
+    ];
+    for (key, present) in given {
+        if present && kind.parameter() != Some(key) {
+            let owner = DistributionKind::ALL
+                .iter()
+                .find(|k| k.parameter() == Some(key))
+                .map_or("", |k| k.name());
             return Err(Error::invalid(
-                key,
+                format!("surface.{key}"),
                 format!(
-                    "applies only to distribution = \"{owner}\", not {d:?}: remove it or change \
-                     surface.distribution"
+                    "applies only to distribution = \"{owner}\", not {:?}: remove it or change \
+                     surface.distribution",
+                    kind.name()
                 ),
             ));
         }
+    }
+    let Some(key) = kind.parameter() else {
+        return Ok(());
+    };
+    let field = format!("surface.{key}");
+    if !given.iter().any(|(k, g)| *k == key && *g) {
+        return Err(Error::invalid(
+            field,
+            format!("required for distribution = {:?}", kind.name()),
+        ));
+    }
+    match (s.weibull_shape, s.truncation, &s.heights) {
+        (Some(k), _, _) | (_, Some(k), _) => {
+            positive(&field, k)?;
+        }
+        (_, _, Some(h)) => {
+            if h.len() < 2 {
+                return Err(Error::invalid(
+                    field,
+                    format!("needs at least 2 measured heights, got {}", h.len()),
+                ));
+            }
+            for &x in h {
+                finite(&field, x)?;
+            }
+        }
+        _ => {}
     }
     Ok(())
 }

@@ -4,6 +4,11 @@
 //! Defaults are stated on each field; a scene needs at least `[materials]`,
 //! `[surface]`, `[adhesion]` and `[program]`.
 
+use super::law_name::LawName;
+use super::topography::SummitSource;
+use crate::axisym::ProfileKind;
+use crate::electrical::{Interaction, Spreading};
+use crate::heights::DistributionKind;
 use serde::{Deserialize, Serialize};
 
 /// A whole scene.
@@ -73,12 +78,12 @@ pub struct ElectricalSpec {
     /// `"maxwell"` (diffusive, Holm), `"sharvin"` (ballistic) or
     /// `"wexler"` (Mikrajuddin interpolation); default `"maxwell"`.
     #[serde(default = "default_spreading")]
-    pub spreading: String,
+    pub spreading: Spreading,
     /// `"none"` (independent parallel spots, default) or `"greenwood"`
     /// (mean-field interaction in a square apparent area of side
     /// `sqrt(nominal_area)`).
     #[serde(default = "default_interaction")]
-    pub interaction: String,
+    pub interaction: Interaction,
     /// Film resistance per unit area (Ohm m^2), >= 0; each spot adds
     /// `film_resistance / (pi a^2)`. Default 0.
     #[serde(default)]
@@ -94,12 +99,12 @@ pub struct ElectricalSpec {
     pub bulk_temperature: Option<f64>,
 }
 
-fn default_spreading() -> String {
-    "maxwell".to_string()
+fn default_spreading() -> Spreading {
+    Spreading::Maxwell
 }
 
-fn default_interaction() -> String {
-    "none".to_string()
+fn default_interaction() -> Interaction {
+    Interaction::None
 }
 
 /// `[switch]`: the spring that reopens the contact.
@@ -177,7 +182,7 @@ pub struct SurfaceSpec {
     /// Height distribution: `"gaussian"` (default), `"exponential"`,
     /// `"weibull"`, `"truncated-gaussian"`, `"empirical"`.
     #[serde(default = "default_distribution")]
-    pub distribution: String,
+    pub distribution: DistributionKind,
     /// Nominal area `A_n` (m^2), > 0. Required unless `topography` is
     /// given (default then: the map's area, rows x cols x pixel_size^2).
     #[serde(default = "unset", skip_serializing_if = "is_unset")]
@@ -214,7 +219,7 @@ pub struct SurfaceSpec {
     /// radius) or `"moments"` (Gaussian GW with the parameters McCool's
     /// relations give from the measured moments). Only with `topography`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub summits: Option<String>,
+    pub summits: Option<SummitSource>,
     /// Also run the other model of the map and report its headline numbers
     /// in the summary's `topography` object; default false. Only with
     /// `topography`.
@@ -231,8 +236,8 @@ fn is_unset(x: &f64) -> bool {
     x.is_nan()
 }
 
-fn default_distribution() -> String {
-    "gaussian".to_string()
+fn default_distribution() -> DistributionKind {
+    DistributionKind::Gaussian
 }
 
 /// `[adhesion]`: work of adhesion and force range.
@@ -255,12 +260,12 @@ pub struct LawSpec {
     /// `"kogut-etsion"`, `"jackson-green"`, `"chang-etsion-bogy"`,
     /// `"zhao-maietta-chang"` (need `materials.yield_strength`), or
     /// `"shaped"` (JKR on the axisymmetric `profile`).
-    #[serde(default = "default_law")]
-    pub kind: String,
+    #[serde(default)]
+    pub kind: LawName,
     /// For `kind = "shaped"`: `"paraboloid"`, `"sphere"` (exact sphere),
     /// `"cone"`, `"flat"`, `"power"` or `"tabulated"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub profile: Option<String>,
+    pub profile: Option<ProfileKind>,
     /// Shaped: sphere/paraboloid radius or flat-punch radius (m), > 0;
     /// default `surface.radius`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -282,14 +287,10 @@ pub struct LawSpec {
     pub profile_f: Option<Vec<f64>>,
 }
 
-fn default_law() -> String {
-    "auto".to_string()
-}
-
 impl Default for LawSpec {
     fn default() -> Self {
         LawSpec {
-            kind: default_law(),
+            kind: LawName::Auto,
             profile: None,
             radius: None,
             tan_angle: None,

@@ -51,18 +51,16 @@ impl SummitSource {
             SummitSource::Moments => SummitSource::Measured,
         }
     }
+}
 
-    fn parse(name: &str) -> Result<Self> {
-        match name {
-            "measured" => Ok(SummitSource::Measured),
-            "moments" => Ok(SummitSource::Moments),
-            other => Err(Error::invalid(
-                "surface.summits",
-                format!("unknown summit source {other:?}; known: measured, moments"),
-            )),
-        }
+impl crate::named::Named for SummitSource {
+    const ALL: &'static [Self] = &[SummitSource::Measured, SummitSource::Moments];
+    const WHAT: &'static str = "summit source";
+    fn name(self) -> &'static str {
+        SummitSource::name(self)
     }
 }
+crate::serde_by_name!(SummitSource);
 
 /// The topography keys of a `[surface]` table, with their defaults.
 #[derive(Debug, Clone, PartialEq)]
@@ -102,7 +100,7 @@ impl TopographySpec {
             pixel_size,
             height_scale,
             periodic: s.periodic.unwrap_or(false),
-            summits: SummitSource::parse(s.summits.as_deref().unwrap_or("measured"))?,
+            summits: s.summits.unwrap_or(SummitSource::Measured),
             compare: s.compare.unwrap_or(false),
         }))
     }
@@ -155,7 +153,7 @@ pub(super) fn validate_surface(s: &SurfaceSpec) -> Result<()> {
             ));
         }
     }
-    if s.distribution != "gaussian" {
+    if s.distribution != crate::heights::DistributionKind::Gaussian {
         return Err(Error::invalid(
             "surface.distribution",
             "comes from surface.topography (summits = \"measured\" or \"moments\"); remove it",
@@ -262,7 +260,7 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
             // count >= 2, so the statistics exist.
             s.radius = c.stats.radius_m.unwrap_or(f64::NAN);
             s.sigma = c.stats.height_std_m.unwrap_or(f64::NAN);
-            s.distribution = "empirical".into();
+            s.distribution = crate::heights::DistributionKind::Empirical;
             s.heights = Some(heights);
         }
         SummitSource::Moments => {
