@@ -20,7 +20,7 @@ fn main() -> asperity::Result<()> {
     let gold = Material::gold();
     let e = contact_modulus(&gold, &gold);
     let p = Plasticity::gold();
-    let psi = plasticity_index(e, p.hardness(), surface.sigma, surface.radius);
+    let psi = plasticity_index(e, p.hardness(), surface.sigma, surface.radius)?;
     println!("psi = {psi:.3}");
     if let Some(w) = elastic_law_warning("hertz", psi) {
         println!("warning (hertz): {w}");

@@ -112,6 +112,16 @@ impl Allowed {
         }
     }
 
+    /// The half-open interval `(lo, hi]`.
+    pub const fn open_closed(lo: f64, hi: f64) -> Self {
+        Allowed {
+            lo,
+            lo_inclusive: false,
+            hi,
+            hi_inclusive: true,
+        }
+    }
+
     /// The half-open interval `[lo, hi)`.
     pub const fn closed_open(lo: f64, hi: f64) -> Self {
         Allowed {

@@ -54,7 +54,7 @@ fn example_scenes_reproduce_their_golden_curves() {
         let want =
             std::fs::read_to_string(format!("{root}/tests/data/golden/{name}.curve.csv")).unwrap();
         assert_same(name, &curve_csv(&results, &plan), &want);
-        if let Some(mc) = montecarlo_csv(&results) {
+        if let Some(mc) = montecarlo_csv(&results, &plan) {
             let want =
                 std::fs::read_to_string(format!("{root}/tests/data/golden/{name}.montecarlo.csv"))
                     .unwrap();

@@ -181,7 +181,7 @@ fn per_asperity_memory_gives_cycles() {
 #[test]
 fn diagnostics_fractions_and_warning() {
     let p = Plasticity::gold();
-    let psi = plasticity_index(E, p.hardness(), SIGMA, R);
+    let psi = plasticity_index(E, p.hardness(), SIGMA, R).unwrap();
     assert!((psi - 3.03).abs() < 0.01);
     assert!(elastic_law_warning("hertz", psi)
         .unwrap()

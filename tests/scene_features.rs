@@ -160,7 +160,15 @@ fn listed_loads_are_reached_and_resistance_and_stiction_reported() {
             .join("out/curve.csv"),
     )
     .unwrap();
-    assert!(csv.starts_with("leg,separation_m,load_N,area_m2,count,resistance_ohm\n"));
+    // With a current the curve also gives the contact voltage and the peak
+    // temperature of every state.
+    assert!(
+        csv.starts_with(
+            "leg,separation_m,load_N,area_m2,count,resistance_ohm,contact_voltage_V,max_temperature_K\n"
+        ),
+        "{}",
+        csv.lines().next().unwrap_or("")
+    );
 }
 
 /// A scene with Hertz (w = 0) or JKR summits, Maxwell or Wexler spots, at
@@ -228,7 +236,7 @@ fn scene_resistance_equals_the_direct_spot_sums() {
                 let sums = gw.law_sums(&jkr, Branch::Approach, &spot, h);
                 asperity::electrical::ContactResistance::from_sums(&sums, &spot, inter, gw.side())
             };
-            let got = st.resistance_ohm.unwrap().unwrap();
+            let got = st.get("resistance_ohm").flatten().unwrap();
             assert!(
                 rel(got, direct.resistance) < 1e-8,
                 "{spreading}/{interaction} w = {w} at h = {h}: {got} vs {}",
@@ -268,8 +276,19 @@ fn vanishing_plasticity_recovers_the_elastic_scene() {
         let (a, ra) = run(&plastic);
         let (b, rb) = run(&hertz);
         for (x, y) in a.states.unwrap().iter().zip(b.states.unwrap().iter()) {
-            assert!(rel(x.load_n.unwrap(), y.load_n.unwrap()) < 1e-7, "w = {w}");
-            assert!(rel(x.real_area_m2.unwrap(), y.real_area_m2.unwrap()) < 1e-7);
+            assert!(
+                rel(
+                    x.get("load_N").flatten().unwrap(),
+                    y.get("load_N").flatten().unwrap()
+                ) < 1e-7,
+                "w = {w}"
+            );
+            assert!(
+                rel(
+                    x.get("real_area_m2").flatten().unwrap(),
+                    y.get("real_area_m2").flatten().unwrap()
+                ) < 1e-7
+            );
         }
         assert_eq!(ra.curve.approach.len(), rb.curve.approach.len());
         if w != "0.0" {
@@ -498,7 +517,7 @@ fn a_population_places_its_own_spots() {
     let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
     let results = plan.run().unwrap();
     let summary = Summary::new(&plan, &results);
-    let gw = summary.resistance_ohm.unwrap();
+    let gw = summary.headlines.get("resistance_ohm").flatten().unwrap();
     let spots = summary.montecarlo.unwrap().spots.unwrap();
     assert!(spots.count > 500, "{}", spots.count);
     assert!(

@@ -201,7 +201,7 @@ fn plans_say_what_they_skip() {
     assert!(!plan.pull_off && !plan.compute_retraction);
     assert_eq!(plan.accuracy.method, Method::Auto);
     let plan = Plan::new(&example("max-load.toml"), PlanMode::Planned).unwrap();
-    assert!(!plan.curve_outputs.count);
+    assert!(!plan.quantities.observables().count);
     assert!(plan.to_string().contains("not asked for"));
 }
 

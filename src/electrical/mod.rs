@@ -29,7 +29,7 @@ pub mod switch;
 
 pub use gw::{ContactResistance, ElectricalState, GwSpots, Interaction, SpotSums, C_SQ};
 pub use heating::Heating;
-pub use observable::{ResistanceObservables, SpotConductance};
+pub use observable::{ContactHeating, ResistanceObservables, SpotConductance};
 pub use sample::{population_spots, SampleResistance, EXACT_MAX_SPOTS};
 pub use spot::{Conductor, SpotResistance, Spreading};
 pub use spots::Spots;

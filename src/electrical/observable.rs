@@ -7,10 +7,11 @@
 //! `sum G_i^2` ([`SpotSums`]); the count of spots is the `count` total.
 
 use super::gw::{ContactResistance, Interaction, SpotSums};
+use super::heating::Heating;
 use super::spot::SpotResistance;
 use crate::error::Result;
 use crate::law::ContactState;
-use crate::loading::{Observable, Observables, PerAsperity, Totals};
+use crate::loading::{Derived, Observable, Observables, PerAsperity, Totals};
 use std::sync::Arc;
 
 /// `G_i` (S) or `G_i^2` (S^2) of one asperity's spot.
@@ -106,5 +107,74 @@ impl ResistanceObservables {
     /// The interaction asked for.
     pub fn interaction(&self) -> Interaction {
         self.interaction
+    }
+}
+
+/// The contact resistance (Ohm) of a state: parallel spots plus the
+/// interaction asked for ([`ResistanceObservables::resistance`]); `None`
+/// without contact.
+impl Derived for ResistanceObservables {
+    fn needs(&self) -> Vec<Observable> {
+        vec![
+            Observable::Count,
+            self.conductance.clone(),
+            self.conductance_sq.clone(),
+        ]
+    }
+
+    fn value(&self, observables: &Observables, totals: &Totals) -> Option<f64> {
+        let r = self.resistance(observables, totals)?.resistance;
+        r.is_finite().then_some(r)
+    }
+}
+
+/// Joule heating of a contact carrying a current `I` (A): the contact
+/// voltage `U = I R` (V) or Holm's peak temperature
+/// `sqrt(T0^2 + U^2/(4 L))` (K, [`Heating::max_temperature_at`]), from the
+/// state's resistance.
+#[derive(Debug, Clone)]
+pub struct ContactHeating {
+    resistance: ResistanceObservables,
+    current: f64,
+    heating: Heating,
+    temperature: bool,
+}
+
+impl ContactHeating {
+    /// The contact voltage `I R` (V) of a current `current` (A).
+    pub fn voltage(resistance: ResistanceObservables, current: f64) -> Self {
+        ContactHeating {
+            resistance,
+            current,
+            heating: Heating::default(),
+            temperature: false,
+        }
+    }
+
+    /// The peak contact temperature (K) of a current `current` (A) under
+    /// `heating`.
+    pub fn temperature(resistance: ResistanceObservables, current: f64, heating: Heating) -> Self {
+        ContactHeating {
+            resistance,
+            current,
+            heating,
+            temperature: true,
+        }
+    }
+}
+
+impl Derived for ContactHeating {
+    fn needs(&self) -> Vec<Observable> {
+        self.resistance.needs()
+    }
+
+    fn value(&self, observables: &Observables, totals: &Totals) -> Option<f64> {
+        let r = self.resistance.value(observables, totals)?;
+        let v = if self.temperature {
+            self.heating.max_temperature_at(self.current, r).ok()?
+        } else {
+            self.current * r
+        };
+        v.is_finite().then_some(v)
     }
 }

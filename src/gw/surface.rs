@@ -52,10 +52,18 @@ impl RoughSurface {
         self.density * self.nominal_area
     }
 
-    /// GW's plasticity index `psi = (E*/H) sqrt(sigma/R)`: above about 1 most
-    /// contacts yield. `hardness` in Pa.
-    pub fn plasticity_index(&self, contact_modulus: f64, hardness: f64) -> f64 {
-        contact_modulus / hardness * (self.sigma / self.radius).sqrt()
+    /// GW's plasticity index of these summits
+    /// ([`crate::material::plastic::plasticity_index`]).
+    ///
+    /// # Errors
+    /// As [`crate::material::plastic::plasticity_index`].
+    pub fn plasticity_index(&self, contact_modulus: f64, hardness: f64) -> crate::Result<f64> {
+        crate::material::plastic::plasticity_index(
+            contact_modulus,
+            hardness,
+            self.sigma,
+            self.radius,
+        )
     }
 }
 
@@ -83,7 +91,7 @@ mod tests {
     fn derived_numbers() {
         let s = RoughSurface::gold_microswitch();
         assert!((s.summits() - 1e4).abs() < 1e-9);
-        let psi = s.plasticity_index(4.8e10, 1e9);
+        let psi = s.plasticity_index(4.8e10, 1e9).unwrap();
         assert!((psi - 48.0 * (5e-3f64).sqrt()).abs() < 1e-12);
     }
 }

@@ -14,6 +14,6 @@ mod state;
 pub use curve::{hysteresis_energy, most_tensile, Curve, PullOff};
 pub use hysteresis::hysteresis_energy_to;
 pub use model::LoadingModel;
-pub use observable::{Observable, Observables, PerAsperity, Totals, EXTRA_SLOTS, SLOTS};
+pub use observable::{Derived, Observable, Observables, PerAsperity, Totals, EXTRA_SLOTS, SLOTS};
 pub use program::{History, LoadingProgram};
 pub use state::{MethodUsed, State};

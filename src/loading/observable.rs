@@ -81,6 +81,20 @@ impl Observable {
     }
 }
 
+/// A quantity of a state formed from its totals, not itself a sum over
+/// asperities: the contact resistance from the spot-conductance sums and
+/// the contact count, the contact voltage `I R`, ... . Integrators total
+/// the observables it [needs](Derived::needs); the value is formed once per
+/// state from those totals.
+pub trait Derived: Send + Sync + fmt::Debug {
+    /// The observables whose totals it is formed from.
+    fn needs(&self) -> Vec<Observable>;
+    /// Its value from `totals` computed for `observables` (which include
+    /// [`Derived::needs`]); `None` where it is undefined (a resistance
+    /// without contact) or its totals were not computed.
+    fn value(&self, observables: &Observables, totals: &Totals) -> Option<f64>;
+}
+
 /// The observables a computation totals: load, area, count (each on or off)
 /// and up to [`EXTRA_SLOTS`] more.
 #[derive(Clone, Debug, PartialEq)]

@@ -271,10 +271,25 @@ impl RegimeLimits {
     }
 }
 
-/// GW plasticity index `psi = (E*/H) sqrt(sigma/R)` (dimensionless):
-/// `E*` (Pa), `H` (Pa), summit-height scale `sigma` (m), summit radius `R` (m).
-pub fn plasticity_index(contact_modulus: f64, hardness: f64, sigma: f64, radius: f64) -> f64 {
-    contact_modulus / hardness * (sigma / radius).sqrt()
+/// GW's plasticity index `psi = (E*/H) sqrt(sigma/R)` (Greenwood &
+/// Williamson 1966; dimensionless): above about 1 most contacts yield.
+/// `E*` (Pa), `H` (Pa), summit-height scale `sigma` (m), summit radius `R`
+/// (m).
+///
+/// # Errors
+/// [`Error::OutOfRange`] naming `contact_modulus`, `hardness`, `sigma` or
+/// `radius` unless each is finite and > 0.
+pub fn plasticity_index(
+    contact_modulus: f64,
+    hardness: f64,
+    sigma: f64,
+    radius: f64,
+) -> Result<f64> {
+    crate::error::positive("contact_modulus", contact_modulus)?;
+    crate::error::positive("hardness", hardness)?;
+    crate::error::positive("sigma", sigma)?;
+    crate::error::positive("radius", radius)?;
+    Ok(contact_modulus / hardness * (sigma / radius).sqrt())
 }
 
 #[cfg(test)]
@@ -355,7 +370,7 @@ mod tests {
 
     #[test]
     fn gold_psi_is_about_three_and_regimes_classify() {
-        let psi = plasticity_index(4.796e10, Plasticity::gold().hardness(), 5e-9, 1e-6);
+        let psi = plasticity_index(4.796e10, Plasticity::gold().hardness(), 5e-9, 1e-6).unwrap();
         assert!((psi - 3.03).abs() < 0.01, "{psi}");
         let l = RegimeLimits::new(Variant::KogutEtsion, &Plasticity::gold(), 1e-6, 4.8e10);
         assert_eq!(l.classify(-1.0), Regime::Free);

@@ -9,6 +9,7 @@ use crate::heights::Gaussian;
 use crate::loading::{LoadingModel, LoadingProgram};
 use crate::material::AsperityContact;
 use crate::montecarlo::MeasuredSummits;
+use crate::study::quantity::Headlines;
 use crate::study::scene::SummitSource;
 use std::sync::Arc;
 use std::time::Instant;
@@ -24,7 +25,7 @@ pub struct TopographyResults {
 }
 
 /// A model's headline numbers over the scene's program.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Headline {
     /// `"measured"` or `"moments"`.
     pub model: &'static str,
@@ -41,12 +42,9 @@ pub struct Headline {
     pub start_separation: f64,
     /// Closest separation (m).
     pub closest_separation: f64,
-    /// Largest approach load (N).
-    pub max_load: Option<f64>,
-    /// Real contact area at the closest separation (m^2).
-    pub max_area: Option<f64>,
-    /// Contacts at the closest separation.
-    pub max_count: Option<f64>,
+    /// The quantities' headline numbers over its program (`max_load`,
+    /// `max_area`, `max_count`, ...).
+    pub headlines: Headlines,
     /// Pull-off force (N), when searched and tensile.
     pub pull_off_load: Option<f64>,
     /// Its separation (m).
@@ -121,7 +119,7 @@ pub(super) fn results(plan: &Plan) -> Result<Option<TopographyResults>> {
                 .ok_or_else(|| Error::invalid("surface.compare", "needs an analytic law"))?;
             let law = Arc::from(kind.build(&contact)?);
             let model = GwModel::new(surface, Arc::new(Gaussian::new()), law)?;
-            let method = if model.has_closed_form(&plan.curve_outputs) {
+            let method = if model.has_closed_form(plan.quantities.observables()) {
                 Method::Auto
             } else {
                 Method::Quadrature
@@ -172,13 +170,12 @@ fn headline<M: LoadingModel>(
             .map_err(|e| e.in_table("program"))?,
     };
     let program = LoadingProgram::new(start, closest, plan.points)?;
-    let curve = model.curve(&program, &plan.curve_outputs)?;
+    let curve = model.curve(&program, plan.quantities.observables())?;
     let pull_off = if plan.pull_off {
         model.pull_off(closest, start, PULL_OFF_SAMPLES)?
     } else {
         None
     };
-    let first = curve.approach.first();
     Ok(Headline {
         model: name,
         summits: f64::NAN,
@@ -187,14 +184,9 @@ fn headline<M: LoadingModel>(
         sigma: f64::NAN,
         start_separation: start,
         closest_separation: closest,
-        max_load: curve
-            .approach
-            .iter()
-            .filter_map(|s| s.load())
-            .reduce(f64::max)
-            .filter(|_| plan.scene.outputs.load),
-        max_area: first.and_then(|s| s.area()),
-        max_count: first.and_then(|s| s.count()),
+        headlines: plan
+            .quantities
+            .headlines(&plan.quantities.records(&curve.approach)),
         pull_off_load: pull_off.map(|p| p.load),
         pull_off_separation: pull_off.map(|p| p.separation),
         seconds: 0.0,

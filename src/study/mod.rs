@@ -11,15 +11,17 @@ pub mod measured;
 pub mod output;
 pub mod plan;
 pub mod plot;
+pub mod quantity;
 pub mod run;
 pub mod scene;
 pub mod sweep;
 pub mod validity;
 
 pub use output::{
-    charts, curve_csv, montecarlo_csv, resistance_of, write_outputs, McSummary, PlasticitySummary,
-    StateRow, StictionSummary, Summary,
+    charts, curve_csv, montecarlo_csv, text_report, write_outputs, McSummary, PlasticitySummary,
+    StictionSummary, Summary,
 };
 pub use plan::{Plan, PlanMode};
+pub use quantity::{Quantity, QuantitySet, Record, StateRow};
 pub use run::{McResults, Results};
 pub use scene::{Scene, DEFAULT_SCENE};

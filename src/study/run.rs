@@ -12,6 +12,7 @@ use crate::loading::{
 };
 use crate::material::plastic::{RegimeLimits, Variant};
 use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
+use crate::study::quantity::{QuantitySet, Record};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -29,6 +30,8 @@ pub struct Results {
     /// The program's curve: approach and retraction states at the same
     /// separations (ascending; index 0 is the closest separation).
     pub curve: Curve,
+    /// The curve's states with every quantity's value (the same order).
+    pub records: LegRecords,
     /// Pull-off of the rough surface (most tensile retraction load), when
     /// asked for and tensile.
     pub pull_off: Option<PullOff>,
@@ -42,8 +45,9 @@ pub struct Results {
     /// integral, when the scene asks for one.
     pub montecarlo: Option<McResults>,
     /// The states listed in `[program]` (`separations` or `loads`), on
-    /// approach, in the listed order (empty without a list).
-    pub listed: Vec<State>,
+    /// approach, in the listed order, with every quantity's value (empty
+    /// without a list).
+    pub listed: Vec<Record>,
     /// Contact-regime fractions at the closest approach, when the materials
     /// give a yield strength.
     pub regimes: Option<RegimeFractions>,
@@ -61,11 +65,32 @@ pub struct Results {
     pub topography: Option<super::measured::TopographyResults>,
 }
 
+/// The records of a curve's two legs.
+#[derive(Debug, Clone, Default)]
+pub struct LegRecords {
+    /// Approach states (index 0 the closest separation).
+    pub approach: Vec<Record>,
+    /// Retraction states at the same separations.
+    pub retract: Vec<Record>,
+}
+
+impl LegRecords {
+    /// Both legs of `curve` through `quantities`.
+    pub fn new(quantities: &QuantitySet, curve: &Curve) -> LegRecords {
+        LegRecords {
+            approach: quantities.records(&curve.approach),
+            retract: quantities.records(&curve.retract),
+        }
+    }
+}
+
 /// A population summed over the program, beside the integral.
 #[derive(Debug, Clone)]
 pub struct McResults {
     /// The population's curve (totals scaled to the whole surface).
     pub curve: Curve,
+    /// Its states with every quantity's value.
+    pub records: LegRecords,
     /// Deviation from the integral in standard errors,
     /// `(x_MC - x_GW)/sqrt(SE^2 + err_GW^2)`, per state and output
     /// (approach states, then retraction states); `None` where fewer than
@@ -123,7 +148,7 @@ fn run_montecarlo(
     };
     let summer = MonteCarlo::new(population.clone(), law.clone())?;
     let mc_curve = summer
-        .curve(&curve.program, &plan.curve_outputs)?
+        .curve(&curve.program, plan.quantities.observables())?
         .scaled(mc.factor);
     let z: Vec<[Option<f64>; SLOTS]> = mc_curve
         .approach
@@ -190,6 +215,7 @@ fn run_montecarlo(
         }
     }
     Ok(McResults {
+        records: LegRecords::new(&plan.quantities, &mc_curve),
         spots,
         contacts,
         seed_pull_offs,
@@ -289,14 +315,14 @@ impl Plan {
         let closest = self.closest_separation(model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
         let curve = if self.compute_retraction {
-            curve_with_progress(model, &program, &self.curve_outputs, progress)?
+            curve_with_progress(model, &program, self.quantities.observables(), progress)?
         } else {
             let steps: Vec<_> = program
                 .separations()
                 .into_iter()
                 .map(|d| (d, History::Approach))
                 .collect();
-            let approach = model.states(&steps, &self.curve_outputs)?;
+            let approach = model.states(&steps, self.quantities.observables())?;
             Curve {
                 program,
                 retract: approach.clone(),
@@ -341,6 +367,7 @@ impl Plan {
             None => None,
         };
         Ok(Results {
+            records: LegRecords::new(&self.quantities, &curve),
             curve,
             pull_off,
             hysteresis_energy,
@@ -360,12 +387,15 @@ impl Plan {
     /// The parts that follow from the curve: listed states, regime
     /// fractions, stiction, and their warnings.
     fn finish<M: LoadingModel>(&self, model: &M, mut r: Results) -> Result<Results> {
-        let outputs = self
-            .curve_outputs
-            .clone()
-            .with(Observable::Load)?
-            .with(Observable::Area)?;
-        let outputs = outputs.with(Observable::Count)?;
+        // Listed states carry load, area and count whatever the curve does.
+        let listed = self.quantities.over(
+            self.quantities
+                .observables()
+                .clone()
+                .with(Observable::Load)?
+                .with(Observable::Area)?
+                .with(Observable::Count)?,
+        )?;
         let steps: Vec<(f64, History)> = match &self.listed {
             Some(ProgramTarget::Separations(xs)) => {
                 xs.iter().map(|&d| (d, History::Approach)).collect()
@@ -381,7 +411,7 @@ impl Plan {
                 .collect::<Result<_>>()?,
             _ => Vec::new(),
         };
-        r.listed = model.states(&steps, &outputs)?;
+        r.listed = listed.records(&model.states(&steps, listed.observables())?);
         let closest = r.curve.program.closest;
         if let Some(p) = self.plasticity {
             // An elastic law: the Kogut–Etsion regimes as the diagnostic.
@@ -431,8 +461,8 @@ impl Plan {
                     .curve
                     .approach
                     .iter()
-                    .chain(&r.listed)
-                    .filter_map(|s| res.resistance(&self.curve_outputs, &s.totals))
+                    .chain(r.listed.iter().map(|l| &l.state))
+                    .filter_map(|s| res.resistance(self.quantities.observables(), &s.totals))
                     .filter(|c| c.interaction_skipped && c.contacts > 0.0)
                     .count();
                 if skipped > 0 {

@@ -36,8 +36,6 @@ pub mod text;
 pub use characterise::{Characterisation, Topography};
 pub use map::HeightMap;
 pub use moments::Moments;
-pub use nayak::{
-    plasticity_index, GwParameters, NayakPrediction, MCCOOL_HEIGHT_CONSTANT, NAYAK_HEIGHT_CONSTANT,
-};
+pub use nayak::{GwParameters, NayakPrediction, MCCOOL_HEIGHT_CONSTANT, NAYAK_HEIGHT_CONSTANT};
 pub use plane::Plane;
 pub use summits::{Summit, SummitStats};

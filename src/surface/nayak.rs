@@ -18,7 +18,8 @@
 //! integrals in `tests/data/nayak_summits.py`.
 
 use super::Moments;
-use crate::error::{positive, Result};
+use crate::error::Result;
+use crate::material::plastic::plasticity_index;
 use std::f64::consts::PI;
 
 /// The exact summit-height variance constant `16/pi + 1 - 3 sqrt(3)`.
@@ -52,10 +53,10 @@ impl GwParameters {
     }
 
     /// GW's plasticity index with these `sigma` and `R`; `None` without a
-    /// `sigma`. See [`plasticity_index`].
+    /// `sigma`. See [`plasticity_index`](crate::material::plastic::plasticity_index).
     ///
     /// # Errors
-    /// As [`plasticity_index`].
+    /// As [`plasticity_index`](crate::material::plastic::plasticity_index).
     pub fn plasticity_index(&self, contact_modulus: f64, hardness: f64) -> Result<Option<f64>> {
         self.sigma_m
             .map(|s| plasticity_index(contact_modulus, hardness, s, self.radius_m))
@@ -88,26 +89,6 @@ impl NayakPrediction {
             height_std_m: (m.m0 * (1.0 - NAYAK_HEIGHT_CONSTANT / alpha)).sqrt(),
         }
     }
-}
-
-/// GW's plasticity index `psi = (E*/H) sqrt(sigma/R)` (Greenwood &
-/// Williamson 1966): above about 1 most contacts yield. `contact_modulus`
-/// E* and `hardness` H in Pa, `sigma` and `radius` in m.
-///
-/// # Errors
-/// [`crate::Error::OutOfRange`] naming `contact_modulus`, `hardness`,
-/// `sigma` or `radius` unless each is finite and > 0.
-pub fn plasticity_index(
-    contact_modulus: f64,
-    hardness: f64,
-    sigma: f64,
-    radius: f64,
-) -> Result<f64> {
-    positive("contact_modulus", contact_modulus)?;
-    positive("hardness", hardness)?;
-    positive("sigma", sigma)?;
-    positive("radius", radius)?;
-    Ok(contact_modulus / hardness * (sigma / radius).sqrt())
 }
 
 #[cfg(test)]

@@ -93,6 +93,7 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     let options = SweepOptions {
         shard,
         threads: args.threads,
+        ..SweepOptions::default()
     };
     let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress).map_err(as_flag)?;
     bar.finish();

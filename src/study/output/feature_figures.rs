@@ -3,7 +3,6 @@
 //! law beside the elastic summits it reduces to as `psi -> 0` (JKR with
 //! adhesion, Hertz without).
 
-use super::resistance_of;
 use crate::loading::Curve;
 use crate::study::plan::Plan;
 use crate::study::plot::plastic::load_area_chart;
@@ -17,15 +16,16 @@ pub type FeatureChart = (String, Chart, bool);
 pub fn feature_charts(plan: &Plan, results: &Results) -> Vec<FeatureChart> {
     let title = plan.scene.title.clone().unwrap_or_default();
     let mut out = Vec::new();
-    if plan.resistance.is_some() && plan.scene.outputs.resistance {
-        let points = |leg: &[crate::loading::State]| -> Vec<(f64, f64)> {
+    let resistance = plan.quantities.find("resistance").filter(|(_, q)| q.asked);
+    if let Some((k, _)) = resistance {
+        let points = |leg: &[crate::study::quantity::Record]| -> Vec<(f64, f64)> {
             leg.iter()
-                .filter_map(|s| Some((s.load()?, resistance_of(plan, s)?)))
+                .filter_map(|r| Some((r.state.load()?, r.values[k]?)))
                 .collect()
         };
         let mut series = vec![Series {
             label: "approach".into(),
-            points: points(&results.curve.approach),
+            points: points(&results.records.approach),
         }];
         if !results.listed.is_empty() {
             series.push(Series {

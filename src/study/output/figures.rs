@@ -79,35 +79,27 @@ fn non_finite_cell(csv: &str) -> Option<(String, String, String)> {
 
 /// The scalar results of a summary, by name, to check they are finite
 /// (JSON has no `inf`: `serde_json` would silently write `null`).
-fn summary_values(s: &Summary) -> Vec<(&'static str, Option<f64>)> {
-    let mut v = vec![
-        ("tabor_mu", s.tabor_mu),
-        ("maugis_lambda", s.maugis_lambda),
-        ("contact_modulus", Some(s.contact_modulus)),
-        ("summits", Some(s.summits)),
-        ("start_separation", Some(s.start_separation)),
-        ("closest_separation", Some(s.closest_separation)),
-        ("max_load", s.max_load),
-        ("max_area", s.max_area),
-        ("max_count", s.max_count),
-        ("pull_off_load", s.pull_off_load),
-        ("pull_off_separation", s.pull_off_separation),
-        ("hysteresis_energy", s.hysteresis_energy),
+fn summary_values(s: &Summary) -> Vec<(String, Option<f64>)> {
+    let mut v: Vec<(String, Option<f64>)> = vec![
+        ("tabor_mu".into(), s.tabor_mu),
+        ("maugis_lambda".into(), s.maugis_lambda),
+        ("contact_modulus".into(), Some(s.contact_modulus)),
+        ("summits".into(), Some(s.summits)),
+        ("start_separation".into(), Some(s.start_separation)),
+        ("closest_separation".into(), Some(s.closest_separation)),
     ];
+    v.extend(s.headlines.0.iter().map(|(h, x)| (h.key.clone(), *x)));
+    v.extend(
+        s.scalars()
+            .into_iter()
+            .skip(s.headlines.0.len())
+            .map(|(k, x)| (format!("summary.{k}"), x)),
+    );
     if let Some(m) = &s.montecarlo {
-        v.extend([
-            ("montecarlo.max_load", m.max_load),
-            (
-                "montecarlo.max_load_standard_error",
-                m.max_load_standard_error,
-            ),
-            ("montecarlo.pull_off_load", m.pull_off_load),
-            (
-                "montecarlo.integral_sampled_pull_off_load",
-                m.integral_sampled_pull_off_load,
-            ),
-            ("montecarlo.max_abs_z", m.max_abs_z),
-        ]);
+        v.push((
+            "montecarlo.integral_sampled_pull_off_load".into(),
+            m.integral_sampled_pull_off_load,
+        ));
     }
     v
 }
@@ -131,16 +123,17 @@ fn check_finite(files: &[(&str, &str)], summary: &Summary) -> Result<()> {
     }
     for (name, v) in summary_values(summary) {
         if let Some(x) = v.filter(|x| !x.is_finite()) {
-            return Err(refuse(name, format!("summary.json: {name} = {x}")));
+            return Err(refuse(&name, format!("summary.json: {name} = {x}")));
         }
     }
     Ok(())
 }
 
-/// Writes `curve.csv`, `summary.json`, `montecarlo.csv` (with a population)
-/// and the charts the scene's outputs allow into `dir` (created if
-/// missing), and removes the files of [`OUTPUT_FILES`] this run does not
-/// write. Returns the files written.
+/// Writes `curve.csv`, `summary.json` (`summary`, the run's
+/// [`Summary::new`]), `montecarlo.csv` (with a population) and the charts
+/// the scene's outputs allow into `dir` (created if missing), and removes
+/// the files of [`OUTPUT_FILES`] this run does not write. Returns the
+/// files written.
 ///
 /// Every number is checked before anything is written: a run whose
 /// results are not finite (an `inf` load from an absurd nominal area)
@@ -150,16 +143,20 @@ fn check_finite(files: &[(&str, &str)], summary: &Summary) -> Result<()> {
 /// [`Error::Invalid`] naming the quantity when a result is not finite;
 /// [`Error::Invalid`] naming `out` when the directory or a file cannot be
 /// written.
-pub fn write_outputs(plan: &Plan, results: &Results, dir: &Path) -> Result<Vec<PathBuf>> {
+pub fn write_outputs(
+    plan: &Plan,
+    results: &Results,
+    summary: &Summary,
+    dir: &Path,
+) -> Result<Vec<PathBuf>> {
     let io = |e: std::io::Error| Error::invalid("out", format!("{}: {e}", dir.display()));
     let curve = curve_csv(results, plan);
-    let mc = super::montecarlo_csv(results);
-    let summary = Summary::new(plan, results);
+    let mc = super::montecarlo_csv(results, plan);
     let mut tables = vec![("curve.csv", curve.as_str())];
     if let Some(text) = &mc {
         tables.push(("montecarlo.csv", text.as_str()));
     }
-    check_finite(&tables, &summary)?;
+    check_finite(&tables, summary)?;
     tables.push(("summary.json", ""));
     let charts = charts(plan, results);
     std::fs::create_dir_all(dir).map_err(io)?;

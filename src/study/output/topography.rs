@@ -4,6 +4,7 @@ use crate::error::Result;
 use crate::study::measured::Headline;
 use crate::study::plan::Plan;
 use crate::study::plot::surface::{write_summit_heights, write_summit_map};
+use crate::study::quantity::Headlines;
 use crate::study::run::Results;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -87,12 +88,10 @@ pub struct HeadlineJson {
     pub start_separation: f64,
     /// Closest separation (m).
     pub closest_separation: f64,
-    /// Largest approach load (N).
-    pub max_load: Option<f64>,
-    /// Real contact area at the closest separation (m^2).
-    pub max_area: Option<f64>,
-    /// Contacts at the closest separation.
-    pub max_count: Option<f64>,
+    /// The quantities' headline numbers (`max_load`, `max_area`,
+    /// `max_count`, ...).
+    #[serde(flatten)]
+    pub headlines: Headlines,
     /// Pull-off force (N).
     pub pull_off_load: Option<f64>,
     /// Its separation (m).
@@ -111,9 +110,7 @@ impl From<&Headline> for HeadlineJson {
             sigma_m: h.sigma,
             start_separation: h.start_separation,
             closest_separation: h.closest_separation,
-            max_load: h.max_load,
-            max_area: h.max_area,
-            max_count: h.max_count,
+            headlines: h.headlines.clone(),
             pull_off_load: h.pull_off_load,
             pull_off_separation: h.pull_off_separation,
             seconds: h.seconds,

@@ -42,8 +42,9 @@ use crate::heights::HeightDistribution;
 use crate::law::interpolated::InterpolatedLaw;
 use crate::law::AsperityLaw;
 use crate::loading::{LoadingModel, Observables};
-use crate::material::plastic::{plasticity_index, Plasticity};
+use crate::material::plastic::Plasticity;
 use crate::material::AsperityContact;
+use crate::study::quantity::{Quantity, QuantitySet};
 use crate::study::scene::{
     build_contact, build_distribution, build_surface, LawName, ProgramTarget, Scene,
 };
@@ -99,9 +100,11 @@ pub struct Plan {
     pub distribution: Arc<dyn HeightDistribution>,
     /// The law.
     pub law: LawChoice,
-    /// Observables computed on the curve (load also when only the hysteresis
-    /// energy needs it).
-    pub curve_outputs: Observables,
+    /// The quantities of the run's states (load, area, count, the
+    /// resistance with `[electrical]`, ...) and the observables the curve
+    /// totals for them (load also when only the hysteresis energy needs
+    /// it).
+    pub quantities: QuantitySet,
     /// Integration accuracy and method.
     pub accuracy: Accuracy,
     /// Separation where the program starts and ends (m).
@@ -212,21 +215,23 @@ impl Plan {
             None => None,
         };
         let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
-        let (curve_outputs, accuracy) = outputs(scene, mode, &model, &law, &mut decisions)?;
+        let (observables, accuracy) = outputs(scene, mode, &model, &law, &mut decisions)?;
         let resistance = resistance(scene, &surface, &mut decisions)?;
-        let curve_outputs = match &resistance {
-            Some(r) => r.add_to(curve_outputs)?,
-            None => curve_outputs,
+        let heating = match &scene.electrical {
+            Some(e) => e.heating()?,
+            None => None,
         };
+        let o = scene.outputs;
+        let mut quantities = QuantitySet::standard(o.load, o.area, o.count).over(observables)?;
+        if let Some(r) = &resistance {
+            quantities = quantities.with_electrical(r, o.resistance, heating)?;
+        }
         let mut warnings = Vec::new();
         let plasticity = scene.plasticity()?;
         if let Some(p) = plasticity {
-            let psi = plasticity_index(
-                contact.contact_modulus,
-                p.hardness(),
-                surface.sigma,
-                surface.radius,
-            );
+            let psi = surface
+                .plasticity_index(contact.contact_modulus, p.hardness())
+                .map_err(|e| e.in_table("materials"))?;
             let plastic_law = matches!(law.source, LawName::Plastic(_));
             decisions.push(Decision::Plasticity {
                 psi,
@@ -289,7 +294,7 @@ impl Plan {
             surface,
             distribution,
             law,
-            curve_outputs,
+            quantities,
             accuracy,
             start,
             target,
@@ -308,13 +313,22 @@ impl Plan {
                 ),
                 None => None,
             },
-            heating: match &scene.electrical {
-                Some(e) => e.heating()?,
-                None => None,
-            },
+            heating,
             warnings,
             topography,
         })
+    }
+
+    /// This plan with one more quantity of the states: its column in
+    /// `curve.csv`, its key in the listed states, its headline number in
+    /// the summary and the sweep's results follow.
+    ///
+    /// # Errors
+    /// When the curve's observables have no free slot for it
+    /// ([`crate::loading::Observables::with`]).
+    pub fn with_quantity(mut self, q: Quantity) -> Result<Plan> {
+        self.quantities = self.quantities.with(q)?;
+        Ok(self)
     }
 
     /// The law the run evaluates: the plan's law, or its Chebyshev table

@@ -222,6 +222,9 @@ impl Scene {
     }
 }
 
+/// Largest `electrical.current` (A).
+pub const MAX_CURRENT: f64 = 1e6;
+
 impl ElectricalSpec {
     /// The per-spot resistance law.
     ///
@@ -320,7 +323,8 @@ impl ElectricalSpec {
     pub fn heating(&self) -> Result<Option<(f64, Heating)>> {
         match (self.current, self.bulk_temperature) {
             (Some(i), t) => {
-                let i = positive("electrical.current", i)?;
+                // Beyond a megaampere no contact spot carries the current.
+                Allowed::open_closed(0.0, MAX_CURRENT).check("electrical.current", i)?;
                 let h = match t {
                     Some(t) => Heating::new(positive("electrical.bulk_temperature", t)?)
                         .map_err(|e| e.renamed("electrical.bulk_temperature"))?,

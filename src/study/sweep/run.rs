@@ -5,7 +5,7 @@ use super::edit::set_field;
 use super::spec::{Shard, SweepPoint, SweepSpec};
 use super::store::{ResultsFile, SweepMeta};
 use crate::error::{Error, Result};
-use crate::study::{Plan, PlanMode, Scene, Summary};
+use crate::study::{Plan, PlanMode, Quantity, Scene, Summary};
 use rayon::prelude::*;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -19,6 +19,17 @@ pub struct SweepOptions {
     pub shard: Option<Shard>,
     /// Worker threads (`None`: rayon's default, one per core).
     pub threads: Option<usize>,
+    /// Quantities added to every point's plan ([`Plan::with_quantity`]):
+    /// each asked one with a headline number gets a column.
+    pub quantities: Vec<Quantity>,
+}
+
+/// `plan` with the sweep's extra quantities.
+fn with_quantities(plan: Plan, options: &SweepOptions) -> Result<Plan> {
+    options
+        .quantities
+        .iter()
+        .try_fold(plan, |p, q| p.with_quantity(q.clone()))
 }
 
 /// What a sweep run did.
@@ -43,74 +54,24 @@ pub struct PointOutcome {
     pub path: PathBuf,
 }
 
-/// Output columns of a scene's scalar results, by its `[outputs]`.
-fn output_columns(scene: &Scene) -> Vec<&'static str> {
-    let o = scene.outputs;
-    let mut cols = Vec::new();
-    if o.load {
-        cols.push("max_load_N");
-    }
-    if o.area {
-        cols.push("max_area_m2");
-    }
-    if o.count {
-        cols.push("max_count");
-    }
-    if o.pull_off {
-        cols.extend(["pull_off_N", "pull_off_separation_m"]);
-    }
-    if o.hysteresis_energy {
-        cols.push("hysteresis_energy_J");
-    }
-    if scene.montecarlo.is_some() {
-        cols.extend([
-            "mc_max_load_N",
-            "mc_max_load_se_N",
-            "mc_pull_off_N",
-            "mc_max_abs_z",
-        ]);
-    }
-    if o.resistance {
-        cols.push("resistance_ohm");
-    }
-    if scene.switch.is_some() {
-        cols.extend(["stiction_margin_N", "sticks"]);
-    }
-    cols
-}
-
 fn cell(x: Option<f64>) -> String {
     x.map_or(String::new(), |v| format!("{v:e}"))
 }
 
 /// The value of output column `c` in a summary.
 fn value(s: &Summary, c: &str) -> Option<f64> {
-    match c {
-        "max_load_N" => s.max_load,
-        "max_area_m2" => s.max_area,
-        "max_count" => s.max_count,
-        "pull_off_N" => s.pull_off_load,
-        "pull_off_separation_m" => s.pull_off_separation,
-        "hysteresis_energy_J" => s.hysteresis_energy,
-        "mc_max_load_N" => s.montecarlo.as_ref().and_then(|m| m.max_load),
-        "mc_max_load_se_N" => s
-            .montecarlo
-            .as_ref()
-            .and_then(|m| m.max_load_standard_error),
-        "mc_pull_off_N" => s.montecarlo.as_ref().and_then(|m| m.pull_off_load),
-        "resistance_ohm" => s.resistance_ohm,
-        "stiction_margin_N" => s.stiction.as_ref().map(|t| t.margin_n),
-        // 1 when the switch sticks (margin < 0), else 0.
-        "sticks" => s.stiction.as_ref().map(|t| f64::from(u8::from(t.sticks))),
-        _ => s.montecarlo.as_ref().and_then(|m| m.max_abs_z),
-    }
+    s.scalars()
+        .into_iter()
+        .find(|(k, _)| k == c)
+        .and_then(|(_, v)| v)
 }
 
 /// Computes one point's row: `index, values.., seed, status, outputs..`.
 fn point_row(
     base: &toml::Value,
     spec: &SweepSpec,
-    cols: &[&str],
+    options: &SweepOptions,
+    cols: &[String],
     p: &SweepPoint,
 ) -> (String, bool) {
     let mut row: Vec<String> = vec![p.index.to_string()];
@@ -130,7 +91,7 @@ fn point_row(
             }
         }
         scene.validate()?;
-        let plan = Plan::new(&scene, PlanMode::Planned)?;
+        let plan = with_quantities(Plan::new(&scene, PlanMode::Planned)?, options)?;
         let results = plan.run()?;
         Ok(Summary::new(&plan, &results))
     })()
@@ -142,7 +103,7 @@ fn point_row(
             .find(|(_, v)| v.is_some_and(|x| !x.is_finite()));
         match bad {
             Some((c, Some(v))) => Err(Error::invalid(
-                *c,
+                c.as_str(),
                 format!("{v} is not finite (the scene's magnitudes overflow)"),
             )),
             _ => Ok(s),
@@ -198,7 +159,7 @@ pub fn run_sweep(
         // Fail early on a bad path, before any point runs.
         set_field(&mut base_value.clone(), &v.path, v.from)?;
     }
-    let cols = output_columns(base);
+    let cols = with_quantities(Plan::preview(base, PlanMode::Planned)?, options)?.result_columns();
     let mut header: Vec<String> = vec!["index".into()];
     header.extend(spec.vary.iter().map(|v| v.path.clone()));
     header.extend(["seed".into(), "status".into()]);
@@ -231,7 +192,7 @@ pub fn run_sweep(
     let file = Mutex::new(file);
     let work = || {
         todo.par_iter().try_for_each(|p| -> Result<()> {
-            let (row, ok) = point_row(&base_value, spec, &cols, p);
+            let (row, ok) = point_row(&base_value, spec, options, &cols, p);
             if !ok {
                 failed.fetch_add(1, Ordering::Relaxed);
             }

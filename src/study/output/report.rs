@@ -1,0 +1,248 @@
+//! The text report of a run (what `asperity run` prints): the summary's
+//! numbers with their units, one line each; the states' quantities follow
+//! the plan's quantity set.
+
+use super::summary::{McSummary, Summary};
+use crate::study::plan::Plan;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+fn show(x: Option<f64>, unit: &str) -> String {
+    x.map_or("-".into(), |v| format!("{v:.4e} {unit}"))
+}
+
+/// The report of `summary` (a run of `plan`) and the files it wrote.
+pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String {
+    let mut out = String::new();
+    let num = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.4}"));
+    let _ = writeln!(
+        out,
+        "{} — law {}, mu = {}, lambda = {}, {} summits",
+        summary.title.as_deref().unwrap_or("scene"),
+        summary.law,
+        num(summary.tabor_mu),
+        num(summary.maugis_lambda),
+        summary.summits
+    );
+    let _ = writeln!(
+        out,
+        "  separations {:.3e} .. {:.3e} m, {} points per leg, rtol {:e}",
+        summary.closest_separation, summary.start_separation, summary.points, summary.rtol
+    );
+    let _ = match summary.law_model_error {
+        Some(e) => writeln!(
+            out,
+            "  model error        law {} differs from the full Lennard-Jones solution by {:.2} % \
+             (rtol {:e} bounds only the numerics)",
+            summary.law,
+            100.0 * e,
+            summary.rtol
+        ),
+        None => writeln!(
+            out,
+            "  model error        not measured for law {}",
+            summary.law
+        ),
+    };
+    for (q, (h, v)) in plan
+        .quantities
+        .iter()
+        .filter(|q| q.headline.is_some())
+        .zip(&summary.headlines.0)
+    {
+        let at = match h.reduce {
+            crate::study::quantity::Reduce::AtClosest if q.name == "resistance" => {
+                " at the closest approach"
+            }
+            _ => "",
+        };
+        if v.is_some() || q.asked {
+            let _ = writeln!(out, "  {:<18} {}{at}", h.label, show(*v, &q.unit_text()));
+        }
+    }
+    let pull = match (summary.pull_off_load, plan.pull_off) {
+        (Some(p), _) => format!("{p:.4e} N"),
+        (None, true) => "none: no tensile load on retraction".into(),
+        (None, false) => "-".into(),
+    };
+    let _ = writeln!(out, "  pull-off force     {pull}");
+    let _ = writeln!(
+        out,
+        "  hysteresis energy  {}",
+        show(summary.hysteresis_energy, "J")
+    );
+    let _ = writeln!(
+        out,
+        "  run time           {:.3} s ({} law evaluations)",
+        summary.seconds, summary.evaluations
+    );
+    if let Some(m) = &summary.montecarlo {
+        montecarlo(&mut out, m);
+    }
+    features(&mut out, summary);
+    states(&mut out, plan, summary);
+    if let Some(t) = &summary.topography {
+        let _ = writeln!(
+            out,
+            "  topography         {} ({} x {}), {} summits, model {}",
+            t.file, t.rows, t.cols, t.summits.count, t.model
+        );
+        if let Some(o) = &t.other {
+            let _ = writeln!(
+                out,
+                "    {} model: max load {}, contacts {}, pull-off {}",
+                o.model,
+                show(o.headlines.get("max_load").flatten(), "N"),
+                num(o.headlines.get("max_count").flatten()),
+                show(o.pull_off_load, "N")
+            );
+        }
+    }
+    if !summary.warnings.is_empty() {
+        let _ = writeln!(out, "  warnings:");
+        for w in &summary.warnings {
+            let _ = writeln!(out, "    {w}");
+        }
+    }
+    let _ = writeln!(out, "  wrote:");
+    for f in files {
+        let _ = writeln!(out, "    {}", f.display());
+    }
+    out
+}
+
+fn montecarlo(out: &mut String, m: &McSummary) {
+    let _ = writeln!(
+        out,
+        "  Monte Carlo        {} summits (seed {}), {:.3} s",
+        m.summits, m.seed, m.seconds
+    );
+    if let (Some(p), Some(se)) = (m.max_load, m.max_load_standard_error) {
+        let _ = writeln!(
+            out,
+            "    max load         {p:.4e} N +- {se:.2e} N (standard error)"
+        );
+    }
+    let _ = writeln!(
+        out,
+        "    sampled pull-off {} (this realisation: the minimum of its own load curve)",
+        show(m.pull_off_load, "N")
+    );
+    if let Some(s) = &m.spots {
+        let _ = writeln!(
+            out,
+            "    sample's spots   {} at random positions in a {:.3e} m square: parallel {:.4e} Ohm, Greenwood {:.4e} Ohm, exact {}",
+            s.count,
+            s.side_m,
+            s.parallel_ohm,
+            s.greenwood_ohm,
+            s.exact_ohm
+                .map_or("- (more than 3000 spots)".into(), |r| format!("{r:.4e} Ohm"))
+        );
+    }
+    let _ = writeln!(
+        out,
+        "    integral         {} (minimum of the mean load at the same separations, \
+         not the mean of the realisations' minima)",
+        show(m.integral_sampled_pull_off_load, "N")
+    );
+    let _ = match (m.pull_off_seed_mean, m.pull_off_seed_std) {
+        (Some(mean), Some(sd)) => writeln!(
+            out,
+            "    one switch's pull-off over {} seeds: mean {mean:.4e} N, std {sd:.2e} N",
+            1 + m.pull_off_other_seeds.len()
+        ),
+        _ => writeln!(
+            out,
+            "    pull-off scatter over seeds: not computed (population too large)"
+        ),
+    };
+    if m.states_without_standard_error > 0 {
+        let _ = writeln!(
+            out,
+            "    {} states with fewer than {} summits in contact: no standard error there",
+            m.states_without_standard_error,
+            crate::study::run::MIN_SUMMITS_FOR_Z
+        );
+    }
+    let _ = writeln!(
+        out,
+        "    worst deviation of the curve from the integral: {} standard errors (< 5 expected)",
+        m.max_abs_z.map_or("-".into(), |z| format!("{z:.2}"))
+    );
+}
+
+/// Heating, plasticity and stiction lines.
+fn features(out: &mut String, summary: &Summary) {
+    if let Some(h) = &summary.heating {
+        let show = |x: Option<f64>, unit: &str| {
+            x.map_or("- (no contact)".into(), |v| format!("{v:.4e} {unit}"))
+        };
+        let _ = writeln!(
+            out,
+            "  heating            {:.3e} A: contact voltage {}, peak temperature {} (bulk {:.2} K)",
+            h.current_a,
+            show(h.contact_voltage_v, "V"),
+            show(h.max_temperature_k, "K"),
+            h.bulk_temperature_k
+        );
+    }
+    if let Some(p) = &summary.plasticity {
+        let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:.1} %", 100.0 * v));
+        let _ = writeln!(
+            out,
+            "  plasticity index   {:.3} (H = {:.3e} Pa); contacts at the closest approach: elastic {}, elastic-plastic {}, fully plastic {}",
+            p.plasticity_index,
+            p.hardness_pa,
+            pct(p.elastic_fraction),
+            pct(p.elastic_plastic_fraction),
+            pct(p.fully_plastic_fraction)
+        );
+    }
+    if let Some(s) = &summary.stiction {
+        let _ = writeln!(
+            out,
+            "  stiction           pull-off {:.4e} N, spring k x travel {:.4e} N, margin {:.4e} N: {}",
+            s.pull_off_n,
+            s.restoring_force_n,
+            s.margin_n,
+            if s.sticks { "STICKS (margin < 0)" } else { "reopens" }
+        );
+    }
+}
+
+/// The listed states as a table, one column per quantity.
+fn states(out: &mut String, plan: &Plan, summary: &Summary) {
+    let Some(states) = &summary.states else {
+        return;
+    };
+    let _ = writeln!(out, "  listed states (approach):");
+    let head: Vec<String> = std::iter::once("separation m".to_string())
+        .chain(plan.quantities.iter().map(|q| {
+            let u = q.unit_text();
+            if u.is_empty() {
+                q.name.replace('_', " ")
+            } else {
+                format!("{} {u}", q.name.replace('_', " "))
+            }
+        }))
+        .collect();
+    let width = head.iter().map(|h| h.len()).max().unwrap_or(13).max(13);
+    let _ = writeln!(
+        out,
+        "    {}",
+        head.iter()
+            .map(|h| format!("{h:>width$}"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    for st in states {
+        let cells: Vec<String> = std::iter::once(format!("{:>width$.5e}", st.separation_m))
+            .chain(st.values.iter().map(|(_, v)| match v {
+                Some(x) => format!("{x:>width$.5e}"),
+                None => format!("{:>width$}", "-"),
+            }))
+            .collect();
+        let _ = writeln!(out, "    {}", cells.join(" "));
+    }
+}

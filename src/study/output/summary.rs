@@ -1,0 +1,409 @@
+//! The JSON summary of a run. Its headline numbers (`max_load`, `max_area`,
+//! `max_count`, `resistance_ohm`, ...) come from the plan's
+//! [`QuantitySet`](crate::study::quantity::QuantitySet); the rest are the
+//! run's scalar results and the optional features' objects.
+
+use super::topography::{self, TopographySummary};
+use crate::study::plan::Plan;
+use crate::study::quantity::{Headlines, StateRow};
+use crate::study::run::{McResults, Results, MIN_SUMMITS_FOR_Z};
+use serde::Serialize;
+
+/// The JSON summary of a run (SI units; `null` where not computed).
+#[derive(Debug, Clone, Serialize)]
+pub struct Summary {
+    /// Scene title.
+    pub title: Option<String>,
+    /// Law used.
+    pub law: String,
+    /// Tabor parameter `mu` of one summit (`null` without adhesion).
+    pub tabor_mu: Option<f64>,
+    /// Maugis `lambda = 1.1570 mu` (`null` without adhesion).
+    pub maugis_lambda: Option<f64>,
+    /// Contact modulus `E*` (Pa).
+    pub contact_modulus: f64,
+    /// Number of summits `eta A_n`.
+    pub summits: f64,
+    /// Separation where the program started and ended (m).
+    pub start_separation: f64,
+    /// Closest separation reached (m).
+    pub closest_separation: f64,
+    /// Points per leg.
+    pub points: usize,
+    /// The quantities' headline numbers (`max_load` (N, largest on
+    /// approach), `max_area` (m^2) and `max_count` at the closest approach,
+    /// `resistance_ohm` with `[electrical]`, ...), by key.
+    #[serde(flatten)]
+    pub headlines: Headlines,
+    /// Pull-off force (N, negative = tensile).
+    pub pull_off_load: Option<f64>,
+    /// Separation of the pull-off (m).
+    pub pull_off_separation: Option<f64>,
+    /// Energy lost per cycle (J).
+    pub hysteresis_energy: Option<f64>,
+    /// Requested relative tolerance.
+    pub rtol: f64,
+    /// Model error of the chosen law: its measured relative error against
+    /// the full Lennard-Jones solution at this Tabor parameter
+    /// ([`crate::law::errors::LawErrorTable`]); `null` when unknown
+    /// (calibrated, no adhesion). `rtol` bounds only the numerics.
+    pub law_model_error: Option<f64>,
+    /// Wall-clock time of the run (s).
+    pub seconds: f64,
+    /// Law evaluations spent by quadrature.
+    pub evaluations: usize,
+    /// The explicit population beside the integral, if asked for.
+    pub montecarlo: Option<McSummary>,
+    /// The plan's decisions: `what: choice (why)`.
+    pub plan: Vec<String>,
+    /// Joule heating at the closest approach, with `electrical.current`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heating: Option<HeatingSummary>,
+    /// Plasticity diagnostics, when the materials give a yield strength.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plasticity: Option<PlasticitySummary>,
+    /// The switch's stiction verdict, with `[switch]`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stiction: Option<StictionSummary>,
+    /// The states listed in `[program]` (`separations` or `loads`), in the
+    /// listed order: `separation_m` and each quantity's value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub states: Option<Vec<StateRow>>,
+    /// Where the scene or its results lie outside a model's validity, one
+    /// sentence each (empty when none).
+    pub warnings: Vec<String>,
+    /// The measured map (`[surface] topography`): its characterisation, the
+    /// model used and, when asked, the other model's headline numbers.
+    /// Absent without a map.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub topography: Option<TopographySummary>,
+}
+
+/// Joule heating of the contact at the closest approach.
+#[derive(Debug, Clone, Serialize)]
+pub struct HeatingSummary {
+    /// Current (A).
+    #[serde(rename = "current_A")]
+    pub current_a: f64,
+    /// Bulk temperature (K).
+    #[serde(rename = "bulk_temperature_K")]
+    pub bulk_temperature_k: f64,
+    /// Contact voltage `I R` (V).
+    #[serde(rename = "contact_voltage_V")]
+    pub contact_voltage_v: Option<f64>,
+    /// Peak contact temperature `sqrt(T0^2 + U^2/(4L))` (K).
+    #[serde(rename = "max_temperature_K")]
+    pub max_temperature_k: Option<f64>,
+}
+
+/// Plasticity diagnostics of a run.
+#[derive(Debug, Clone, Serialize)]
+pub struct PlasticitySummary {
+    /// GW plasticity index `psi = (E*/H) sqrt(sigma/R)`.
+    pub plasticity_index: f64,
+    /// Hardness used (Pa).
+    #[serde(rename = "hardness_Pa")]
+    pub hardness_pa: f64,
+    /// Fraction of the contacts at the closest approach that are elastic.
+    pub elastic_fraction: Option<f64>,
+    /// ... elastic-plastic.
+    pub elastic_plastic_fraction: Option<f64>,
+    /// ... fully plastic.
+    pub fully_plastic_fraction: Option<f64>,
+}
+
+/// The stiction verdict (`pull_off_N` negative, tensile).
+#[derive(Debug, Clone, Serialize)]
+pub struct StictionSummary {
+    /// Pull-off of the rough contact (N, <= 0).
+    #[serde(rename = "pull_off_N")]
+    pub pull_off_n: f64,
+    /// Restoring force `k x travel` (N).
+    #[serde(rename = "restoring_force_N")]
+    pub restoring_force_n: f64,
+    /// `k x travel - |pull_off|` (N).
+    #[serde(rename = "margin_N")]
+    pub margin_n: f64,
+    /// Whether the margin is negative.
+    pub sticks: bool,
+}
+
+/// The Monte Carlo part of a summary.
+#[derive(Debug, Clone, Serialize)]
+pub struct McSummary {
+    /// Summits drawn.
+    pub summits: usize,
+    /// Seed.
+    pub seed: u64,
+    /// Largest approach load of the population (N), scaled to the surface.
+    pub max_load: Option<f64>,
+    /// Its standard error (N); `null` with fewer than
+    /// [`MIN_SUMMITS_FOR_Z`] summits in contact there.
+    pub max_load_standard_error: Option<f64>,
+    /// Most tensile sampled retraction load of this one realisation (N):
+    /// the pull-off of one switch with these summits (the minimum of its
+    /// own load curve).
+    pub pull_off_load: Option<f64>,
+    /// The integral's most tensile load at the same sampled separations
+    /// (N): the minimum of the *mean* load curve, which is not the mean of
+    /// the realisations' minima (each realisation's few tensile summits
+    /// detach at their own separations), so the two differ by far more than
+    /// the standard errors of the curve.
+    pub integral_sampled_pull_off_load: Option<f64>,
+    /// Pull-offs (N) of populations with seeds `seed + 1 ..` (the scatter
+    /// of one switch's pull-off; empty when the population is too large,
+    /// see [`crate::study::run::SEED_SPREAD_BUDGET`]); `null` entries have
+    /// no tensile load.
+    pub pull_off_other_seeds: Vec<Option<f64>>,
+    /// Mean of the pull-offs of all seeds drawn (this one and the others).
+    pub pull_off_seed_mean: Option<f64>,
+    /// Their sample standard deviation (N, divisor n - 1): how much one
+    /// realisation's pull-off scatters.
+    pub pull_off_seed_std: Option<f64>,
+    /// States where fewer than [`MIN_SUMMITS_FOR_Z`] summits of the
+    /// population are in contact: no standard error or deviation is
+    /// reported there (the central limit does not hold).
+    pub states_without_standard_error: usize,
+    /// Largest deviation from the integral over the curve, in standard
+    /// errors (`< 5` expected when the population follows the model).
+    pub max_abs_z: Option<f64>,
+    /// Wall-clock time of drawing and summing (s).
+    pub seconds: f64,
+    /// With `[electrical]`: the sample's own spots at the closest
+    /// separation, at random positions in the area it stands for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spots: Option<SampleSpotsSummary>,
+}
+
+/// Resistances of a population's explicit spots (Ohm).
+#[derive(Debug, Clone, Serialize)]
+pub struct SampleSpotsSummary {
+    /// Number of spots (summits in contact).
+    pub count: usize,
+    /// Side of the square the spots were placed in (m): `sqrt(summits/eta)`.
+    pub side_m: f64,
+    /// Independent parallel spots.
+    pub parallel_ohm: f64,
+    /// Greenwood's formula for the explicit positions.
+    pub greenwood_ohm: f64,
+    /// The exact equal-potential solution (`null` above 3000 spots).
+    pub exact_ohm: Option<f64>,
+}
+
+impl Summary {
+    /// Summarises a run of `plan`.
+    pub fn new(plan: &Plan, results: &Results) -> Summary {
+        let adhesive = plan.contact.adhesion.work() > 0.0;
+        Summary {
+            title: plan.scene.title.clone(),
+            law: plan.law.name.clone(),
+            tabor_mu: adhesive.then(|| plan.contact.tabor()),
+            maugis_lambda: adhesive.then(|| plan.contact.lambda()),
+            contact_modulus: plan.contact.contact_modulus,
+            summits: plan.surface.summits(),
+            start_separation: plan.start,
+            closest_separation: results.curve.program.closest,
+            points: plan.points,
+            headlines: plan.quantities.headlines(&results.records.approach),
+            pull_off_load: results.pull_off.map(|p| p.load),
+            pull_off_separation: results.pull_off.map(|p| p.separation),
+            hysteresis_energy: results.hysteresis_energy,
+            rtol: plan.scene.accuracy.rtol,
+            law_model_error: plan.law.measured_error.filter(|_| adhesive),
+            seconds: results.seconds,
+            evaluations: results.evaluations,
+            montecarlo: results
+                .montecarlo
+                .as_ref()
+                .map(|m| McSummary::new(plan, results, m)),
+            plan: plan.decisions.iter().map(|d| d.to_string()).collect(),
+            heating: heating(plan, results),
+            plasticity: plasticity(plan, results),
+            stiction: results.stiction.map(|s| StictionSummary {
+                pull_off_n: s.pull_off,
+                restoring_force_n: s.restoring_force,
+                margin_n: s.margin,
+                sticks: s.sticks,
+            }),
+            states: plan.listed.as_ref().map(|_| {
+                results
+                    .listed
+                    .iter()
+                    .map(|r| plan.quantities.row(r))
+                    .collect()
+            }),
+            warnings: plan
+                .warnings
+                .iter()
+                .chain(&results.warnings)
+                .cloned()
+                .collect(),
+            topography: topography::summary(plan, results),
+        }
+    }
+
+    /// Pretty JSON.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default()
+    }
+
+    /// The scalar results by sweep column (`max_load_N`, `pull_off_N`,
+    /// `mc_max_load_N`, `sticks` as 1/0, ...), in the order of
+    /// [`Plan::result_columns`]; a sweep's `results.csv` has one column
+    /// each.
+    pub fn scalars(&self) -> Vec<(String, Option<f64>)> {
+        let mut v: Vec<(String, Option<f64>)> = self
+            .headlines
+            .0
+            .iter()
+            .map(|(h, x)| (h.sweep.clone(), *x))
+            .collect();
+        let mc = self.montecarlo.as_ref();
+        let st = self.stiction.as_ref();
+        for (name, x) in [
+            ("pull_off_N", self.pull_off_load),
+            ("pull_off_separation_m", self.pull_off_separation),
+            ("hysteresis_energy_J", self.hysteresis_energy),
+            ("mc_max_load_N", mc.and_then(|m| m.max_load)),
+            (
+                "mc_max_load_se_N",
+                mc.and_then(|m| m.max_load_standard_error),
+            ),
+            ("mc_pull_off_N", mc.and_then(|m| m.pull_off_load)),
+            ("mc_max_abs_z", mc.and_then(|m| m.max_abs_z)),
+            ("stiction_margin_N", st.map(|t| t.margin_n)),
+            // 1 when the switch sticks (margin < 0), else 0.
+            ("sticks", st.map(|t| f64::from(u8::from(t.sticks)))),
+        ] {
+            v.push((name.into(), x));
+        }
+        v
+    }
+}
+
+impl Plan {
+    /// The columns of a sweep's `results.csv` for this plan's outputs:
+    /// the headline number of every asked quantity, then the pull-off,
+    /// the hysteresis energy, the Monte Carlo and stiction results when the
+    /// scene asks for them (names as in [`Summary::scalars`]).
+    pub fn result_columns(&self) -> Vec<String> {
+        let o = self.scene.outputs;
+        let mut cols: Vec<String> = self
+            .quantities
+            .iter()
+            .filter(|q| q.asked)
+            .filter_map(|q| q.headline.as_ref().map(|h| h.sweep.clone()))
+            .collect();
+        let mut add = |on: bool, names: &[&str]| {
+            if on {
+                cols.extend(names.iter().map(|n| n.to_string()));
+            }
+        };
+        add(o.pull_off, &["pull_off_N", "pull_off_separation_m"]);
+        add(o.hysteresis_energy, &["hysteresis_energy_J"]);
+        add(
+            self.montecarlo.is_some(),
+            &[
+                "mc_max_load_N",
+                "mc_max_load_se_N",
+                "mc_pull_off_N",
+                "mc_max_abs_z",
+            ],
+        );
+        add(self.switch.is_some(), &["stiction_margin_N", "sticks"]);
+        cols
+    }
+}
+
+/// The heating object at the closest approach, with a current.
+fn heating(plan: &Plan, results: &Results) -> Option<HeatingSummary> {
+    let (i, h) = plan.heating?;
+    let closest = results.records.approach.first();
+    let value = |name: &str| {
+        let (k, _) = plan.quantities.find(name)?;
+        closest.and_then(|r| r.values[k])
+    };
+    Some(HeatingSummary {
+        current_a: i,
+        bulk_temperature_k: h.bulk_temperature(),
+        contact_voltage_v: value("contact_voltage"),
+        max_temperature_k: value("max_temperature"),
+    })
+}
+
+/// The plasticity object, with a yield strength.
+fn plasticity(plan: &Plan, results: &Results) -> Option<PlasticitySummary> {
+    let p = plan.plasticity?;
+    let f = results.regimes.filter(|f| f.contacts_per_summit > 0.0);
+    Some(PlasticitySummary {
+        plasticity_index: plan
+            .surface
+            .plasticity_index(plan.contact.contact_modulus, p.hardness())
+            .unwrap_or(f64::NAN),
+        hardness_pa: p.hardness(),
+        elastic_fraction: f.map(|f| f.elastic),
+        elastic_plastic_fraction: f.map(|f| f.elastic_plastic),
+        fully_plastic_fraction: f.map(|f| f.fully_plastic),
+    })
+}
+
+impl McSummary {
+    fn new(plan: &Plan, results: &Results, m: &McResults) -> McSummary {
+        // A standard error only where enough summits are in contact.
+        let min = MIN_SUMMITS_FOR_Z as f64;
+        let top = m
+            .curve
+            .approach
+            .iter()
+            .zip(&m.contacts)
+            .filter_map(|(s, &c)| {
+                s.load().map(|p| {
+                    let se = s.totals.error(0).filter(|e| c >= min && e.is_finite());
+                    (p, se)
+                })
+            })
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        let seeds: Vec<f64> = m
+            .pull_off
+            .map(|p| p.load)
+            .into_iter()
+            .chain(m.seed_pull_offs.iter().filter_map(|s| s.1))
+            .collect();
+        let (mean, std) = mean_std(&seeds);
+        let mc = plan.montecarlo.as_ref();
+        McSummary {
+            pull_off_other_seeds: m.seed_pull_offs.iter().map(|s| s.1).collect(),
+            pull_off_seed_mean: mean,
+            pull_off_seed_std: std,
+            states_without_standard_error: m.contacts.iter().filter(|&&c| c < min).count(),
+            summits: mc.map_or(0, |p| p.summits),
+            seed: mc.map_or(0, |p| p.spec.seed),
+            max_load: top.map(|t| t.0),
+            max_load_standard_error: top.and_then(|t| t.1),
+            pull_off_load: m.pull_off.map(|p| p.load),
+            integral_sampled_pull_off_load: results.curve.sampled_pull_off().map(|p| p.load),
+            max_abs_z: m.max_abs_z,
+            seconds: m.seconds,
+            spots: m.spots.map(|s| SampleSpotsSummary {
+                count: s.spots,
+                side_m: mc.map_or(f64::NAN, |p| (plan.surface.nominal_area / p.factor).sqrt()),
+                parallel_ohm: s.parallel,
+                greenwood_ohm: s.greenwood,
+                exact_ohm: s.exact,
+            }),
+        }
+    }
+}
+
+/// Mean and sample standard deviation (divisor `n - 1`) of `x`; `None`
+/// for the deviation with fewer than two values.
+fn mean_std(x: &[f64]) -> (Option<f64>, Option<f64>) {
+    if x.is_empty() {
+        return (None, None);
+    }
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let std = (x.len() >= 2)
+        .then(|| (x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt());
+    (Some(mean), std)
+}
