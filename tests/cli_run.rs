@@ -91,6 +91,48 @@ fn plan_is_printed_without_running() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// `--plan` runs nothing expensive and writes nothing: a measured map is
+/// not read (here it does not even exist), an uncached calibration is not
+/// computed (its cache directory stays absent).
+#[test]
+fn plan_reads_no_map_and_computes_no_calibration() {
+    let dir = tmp("plan-lazy");
+    let topo = std::fs::read_to_string(scene_path("measured-topography.toml")).unwrap();
+    let (old, _) = topo
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("topography = ").map(|v| (l, v)))
+        .unwrap();
+    let scene = dir.join("map.toml");
+    std::fs::write(&scene, topo.replacen(old, "topography = \"absent.npy\"", 1)).unwrap();
+    let (code, out, err) = asperity(&["run", scene.to_str().unwrap(), "--plan"], &dir);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("absent.npy is read and characterised when the run starts"),
+        "{out}"
+    );
+    // The run itself reads it, and says which file is missing (exit 2).
+    let (code, _, err) = asperity(&["run", scene.to_str().unwrap()], &dir);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("surface.topography") && err.contains("absent.npy"),
+        "{err}"
+    );
+
+    let cache = dir.join("cache");
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(["run", &scene_path("calibrated-gold.toml"), "--plan"])
+        .env("ASPERITY_CACHE", &cache)
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(text.contains("is not cached"), "{text}");
+    assert!(!cache.exists(), "the preview wrote the cache");
+    assert!(!dir.join("asperity-out").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn bad_scenes_exit_2_naming_the_field() {
     let dir = tmp("bad");

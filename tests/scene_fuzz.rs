@@ -200,7 +200,7 @@ fn case(text: &str, preview_only: bool) -> Result<Outcome, String> {
     if preview_only {
         return match Plan::preview_in(&scene, PlanMode::Planned, std::path::Path::new(SCENE_DIR)) {
             Ok(p) => Ok(Outcome::Ran {
-                warnings: p.warnings.len(),
+                warnings: p.warnings().len(),
             }),
             Err(e) if e.is_bad_input() => Ok(Outcome::Refused(e.to_string())),
             Err(e) => Err(format!("plan failed (exit 1): {e}")),

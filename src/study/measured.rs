@@ -2,9 +2,9 @@
 //! measured-summit model of the main curve, and the other model's headline
 //! numbers beside it when the scene asks (`surface.compare`).
 
-use super::plan::{Plan, Target, TopographyPlan, START_TAIL_FRACTION};
+use super::plan::{Plan, Target, TopographyPlan};
 use crate::error::{Error, Result};
-use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
+use crate::gw::{GwModel, RoughSurface};
 use crate::heights::Gaussian;
 use crate::loading::{LoadingModel, LoadingProgram};
 use crate::material::AsperityContact;
@@ -119,15 +119,11 @@ pub(super) fn results(plan: &Plan) -> Result<Option<TopographyResults>> {
                 .ok_or_else(|| Error::invalid("surface.compare", "needs an analytic law"))?;
             let law = Arc::from(kind.build(&contact)?);
             let model = GwModel::new(surface, Arc::new(Gaussian::new()), law)?;
-            let method = if model.has_closed_form(plan.quantities.observables()) {
-                Method::Auto
-            } else {
-                Method::Quadrature
-            };
-            let model =
-                model.with_accuracy(Accuracy::new(plan.scene.accuracy.rtol)?.with_method(method));
-            let start = model
-                .start_separation(START_TAIL_FRACTION * plan.scene.accuracy.rtol)
+            // The plan's own rules: its method and its start.
+            let accuracy = super::plan::accuracy_of(&model, &plan.budget, plan.mode)?;
+            let model = model.with_accuracy(accuracy);
+            let start = super::plan::start_of(&model, &plan.budget, plan.mode)
+                .0
                 .max(plan.start);
             let mut h = headline(plan, &model, start, "moments")?;
             (h.density, h.radius, h.sigma) = (gw.density_per_m2, gw.radius_m, sigma);

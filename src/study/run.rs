@@ -343,7 +343,7 @@ impl Plan {
                 Some(hysteresis_energy_to(
                     model,
                     &program,
-                    self.accuracy.rel_tol,
+                    self.budget.integrals(),
                 )?)
             } else if self.hysteresis_energy {
                 curve.hysteresis_energy()

@@ -229,7 +229,7 @@ pub fn run_warnings(
                 0.5 * h * (p(&a[0]) + p(&a[1]) + p(&r[0]) + p(&r[1]))
             })
             .sum();
-        let tol = plan.scene.accuracy.rtol.max(1e-9) * scale;
+        let tol = plan.budget.energy_sign() * scale;
         if e < -tol {
             return Err(Error::NoConvergence {
                 what: format!(
@@ -296,7 +296,7 @@ mod tests {
         let scene =
             Scene::from_toml(&DEFAULT_SCENE.replacen("density = 1e12", "density = 3e13", 1))
                 .unwrap();
-        let plan = Plan::preview(&scene, PlanMode::Planned).unwrap();
+        let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
         assert!((eta_r_sigma(&plan) - 0.15).abs() < 1e-12);
         assert!(
             plan.warnings.iter().any(|w| w.contains("eta R sigma")),

@@ -59,9 +59,9 @@ pub fn execute(
     plan_only: bool,
 ) -> crate::CliResult {
     if plan_only {
-        let plan = Plan::preview(scene, mode)?;
-        crate::out!("{plan}");
-        for w in &plan.warnings {
+        let preview = Plan::preview(scene, mode)?;
+        crate::out!("{preview}");
+        for w in preview.warnings() {
             crate::outln!("  warning: {w}");
         }
         return Ok(());

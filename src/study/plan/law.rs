@@ -2,12 +2,13 @@
 //! measured error against the full Lennard-Jones solution meets `rtol`.
 
 use super::decision::{Decision, LawReason};
+use super::inputs::CalibrationInput;
 use super::PlanMode;
 use crate::error::{Error, Result};
 use crate::law::errors::LawErrorTable;
 use crate::law::{AsperityLaw, LawKind};
 use crate::material::plastic::Variant;
-use crate::material::AsperityContact;
+use crate::material::{AsperityContact, MaugisScales};
 use crate::study::scene::{LawName, Scene};
 use std::sync::Arc;
 
@@ -31,7 +32,7 @@ pub(super) fn choose(
     scene: &Scene,
     contact: &AsperityContact,
     mode: PlanMode,
-    preview: bool,
+    calibration: Option<&CalibrationInput>,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
     let mu = contact.tabor();
@@ -43,7 +44,7 @@ pub(super) fn choose(
     let (kind, reason) = match given {
         LawName::Plastic(v) => return plastic(scene, contact, v, decisions),
         LawName::Shaped => return shaped(scene, contact, decisions),
-        LawName::Calibrated if w > 0.0 => return calibrated(contact, preview, decisions),
+        LawName::Calibrated if w > 0.0 => return calibrated(contact, calibration, decisions),
         _ if w == 0.0 => {
             if !matches!(given, LawName::Auto | LawName::Analytic(LawKind::Hertz)) {
                 return Err(Error::invalid(
@@ -93,48 +94,31 @@ pub(super) fn choose(
 }
 
 /// The law calibrated from the full Lennard-Jones sphere solver at this
-/// Tabor parameter (paraboloid, default resolution), from the on-disk cache
-/// when it is there ([`crate::sphere::calibrate`]). A preview never runs the
-/// solver: without a cached calibration it stands in Maugis–Dugdale at the
-/// same `lambda` for the range decisions and says so.
+/// Tabor parameter ([`super::Inputs::gather`] took it from the cache or
+/// computed it). Without it (a preview of an uncached calibration)
+/// Maugis–Dugdale at the same `lambda` stands in for the range decisions,
+/// and the decision says so.
 fn calibrated(
     contact: &AsperityContact,
-    preview: bool,
+    calibration: Option<&CalibrationInput>,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
-    use crate::sphere::{Shape, SolverOptions, SphereProblem};
-    use crate::study::cache::CalibrationCache;
-    let mu = contact.tabor();
-    let problem =
-        SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default()).map_err(|e| {
-            Error::invalid(
-                "law.kind",
-                format!("\"calibrated\" needs the full solver at mu = {mu:.4}: {e}"),
-            )
-        })?;
-    let cache = CalibrationCache::default_location();
-    let cached = cache.load(&problem);
-    let is_cached = cached.is_some();
-    let law: Arc<dyn AsperityLaw> = match cached {
-        Some(c) => Arc::new(c.law(
+    let law: Arc<dyn AsperityLaw> = match calibration {
+        Some(c) => Arc::new(c.calibration.law(
             contact.radius,
             contact.contact_modulus,
             contact.adhesion.work(),
         )?),
-        None if preview => Arc::from(LawKind::Maugis.build(contact)?),
-        None => Arc::new(cache.get_or_compute(&problem)?.law(
-            contact.radius,
-            contact.contact_modulus,
-            contact.adhesion.work(),
-        )?),
+        None => Arc::from(LawKind::Maugis.build(contact)?),
     };
     decisions.push(Decision::Law {
         name: "calibrated".into(),
         reason: LawReason::Calibrated {
-            cached: is_cached,
-            path: cache.path_for(&problem).display().to_string(),
+            cached: calibration.is_some_and(|c| c.cached),
+            path: calibration
+                .map_or_else(|| "the cache".to_string(), |c| c.path.display().to_string()),
         },
-        mu,
+        mu: contact.tabor(),
         lambda: contact.lambda(),
     });
     Ok(LawChoice {
@@ -166,13 +150,17 @@ fn plastic(
     let loading = build(variant, contact.radius, contact.contact_modulus, plasticity)
         .map_err(|e| e.in_table("materials"))?;
     let w = contact.adhesion.work();
-    // JKR interference scale of the unflattened summit,
-    // (pi^2 w^2 R / K^2)^(1/3), K = 4E*/3: where it is below a millionth of
-    // rtol x sigma the adhesion cannot change any output at the tolerance
-    // (and underflows the JKR scales), so the bare law serves.
-    let k = 4.0 * contact.contact_modulus / 3.0;
-    let jkr_scale = (std::f64::consts::PI.powi(2) * w * w * contact.radius / (k * k)).cbrt();
-    let negligible = jkr_scale < 1e-6 * scene.accuracy.rtol * scene.surface.sigma;
+    // JKR interference scale of the unflattened summit (MaugisScales):
+    // where it is below the budget's share of sigma the adhesion cannot
+    // change any output at the tolerance (and underflows the JKR scales),
+    // so the bare law serves.
+    let jkr_scale = if w > 0.0 {
+        MaugisScales::new(contact.radius, contact.contact_modulus, w)?.interference
+    } else {
+        0.0
+    };
+    let budget = super::Budget::new(scene.accuracy.rtol);
+    let negligible = jkr_scale < budget.negligible_adhesion() * scene.surface.sigma;
     let law: Arc<dyn AsperityLaw> = if w > 0.0 && !negligible {
         Arc::new(AdhesivePlastic::new(loading.as_loading(), w)?)
     } else {

@@ -25,14 +25,20 @@
 //! [`PlanMode::EverythingOn`] switches every skip off; the tests and the
 //! report compare the two to show that skipping pays and costs nothing.
 
+mod budget;
 mod decision;
+mod inputs;
 mod law;
 mod montecarlo;
+mod preview;
 mod topography;
 
+pub use budget::{Budget, Share, START_TAIL_FRACTION, TABLE_TOLERANCE_FRACTION};
 pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
+pub use inputs::{CalibrationInput, Inputs, Pending};
 pub use law::LawChoice;
 pub use montecarlo::McPlan;
+pub use preview::Preview;
 pub use topography::TopographyPlan;
 
 use crate::electrical::{Heating, Interaction, ResistanceObservables, Switch};
@@ -51,15 +57,6 @@ use crate::study::scene::{
 use std::fmt;
 use std::path::Path;
 use std::sync::Arc;
-
-/// The program starts where summits beyond the flat's reach carry less than
-/// this fraction of `rtol` of the heights: their contribution is then two
-/// orders below the tolerance.
-pub const START_TAIL_FRACTION: f64 = 0.01;
-
-/// Tables of expensive laws are built to this fraction of `rtol`, so the
-/// table's error stays an order below the integration tolerance.
-pub const TABLE_TOLERANCE_FRACTION: f64 = 0.1;
 
 /// Deepest separation assumed for the table of a max-load program (in
 /// height scales below the start); interferences beyond it fall back to the
@@ -92,6 +89,8 @@ pub struct Plan {
     pub scene: Scene,
     /// The mode it was planned in.
     pub mode: PlanMode,
+    /// The splits of the scene's tolerance.
+    pub budget: Budget,
     /// The asperity contact (summit radius, E*, adhesion).
     pub contact: AsperityContact,
     /// The surface statistics.
@@ -147,63 +146,94 @@ pub struct Plan {
 }
 
 impl Plan {
-    /// Plans `scene` in `mode`; a `calibrated` law is read from the cache or
-    /// computed (the sphere solver: seconds).
+    /// Gathers the scene's expensive inputs ([`Inputs::gather`]: a measured
+    /// map is read, a `calibrated` law's calibration taken from the cache
+    /// or computed) and plans it in `mode`: the start of a run. Map paths
+    /// are relative to the working directory ([`Plan::new_in`] takes the
+    /// scene file's directory).
     ///
     /// # Errors
     /// Whatever the scene's values make impossible (validated again here),
     /// naming the scene field.
     pub fn new(scene: &Scene, mode: PlanMode) -> Result<Plan> {
-        Plan::build(scene, mode, false, Path::new("."))
+        Plan::new_in(scene, mode, Path::new("."))
+    }
+
+    /// As [`Plan::new`] for a scene read from a file in `base_dir`: a
+    /// `[surface] topography` path is relative to it.
+    ///
+    /// # Errors
+    /// As [`Plan::new`], and [`Inputs::gather`].
+    pub fn new_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Plan> {
+        scene.validate()?;
+        let inputs = Inputs::gather(scene, base_dir)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))?;
+        Plan::decide(scene, mode, &inputs)
+    }
+
+    /// Plans `scene` in `mode` from its gathered `inputs`: decisions only,
+    /// nothing expensive runs here.
+    ///
+    /// # Errors
+    /// As [`Plan::new`].
+    pub fn decide(scene: &Scene, mode: PlanMode, inputs: &Inputs) -> Result<Plan> {
+        Plan::build(scene, mode, inputs)
             .map_err(|e| crate::study::scene::map_derived(scene, e))
             .and_then(crate::study::validity::checked)
     }
 
-    /// As [`Plan::new`] for a scene read from a file in `base_dir`: a
-    /// `[surface] topography` path is relative to it ([`Plan::new`] uses
-    /// the working directory).
+    /// What `asperity run --plan` shows, without running anything
+    /// expensive or writing anything: the plan when its inputs are at hand
+    /// ([`Inputs::at_hand`]); for an uncached calibration, the plan with
+    /// Maugis–Dugdale at the same `lambda` standing in for the range
+    /// decisions; for a measured map, what is decided when it is read.
     ///
     /// # Errors
-    /// As [`Plan::new`], and [`crate::study::scene::resolve`].
-    pub fn new_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Plan> {
-        Plan::build(scene, mode, false, base_dir)
-            .map_err(|e| crate::study::scene::map_derived(scene, e))
-            .and_then(crate::study::validity::checked)
+    /// As [`Plan::new`].
+    pub fn preview(scene: &Scene, mode: PlanMode) -> Result<Preview> {
+        Plan::preview_in(scene, mode, Path::new("."))
     }
 
     /// As [`Plan::preview`] for a scene read from a file in `base_dir`.
     ///
     /// # Errors
-    /// As [`Plan::new_in`].
-    pub fn preview_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Plan> {
-        Plan::build(scene, mode, true, base_dir)
-            .map_err(|e| crate::study::scene::map_derived(scene, e))
-            .and_then(crate::study::validity::checked)
-    }
-
-    /// Plans `scene` without running anything expensive (`asperity run
-    /// --plan`): an uncached `calibrated` law is not computed; Maugis–Dugdale
-    /// at the same `lambda` stands in for its range decisions.
-    ///
-    /// # Errors
     /// As [`Plan::new`].
-    pub fn preview(scene: &Scene, mode: PlanMode) -> Result<Plan> {
-        Plan::build(scene, mode, true, Path::new("."))
-            .map_err(|e| crate::study::scene::map_derived(scene, e))
-            .and_then(crate::study::validity::checked)
+    pub fn preview_in(scene: &Scene, mode: PlanMode, base_dir: &Path) -> Result<Preview> {
+        scene.validate()?;
+        let at_hand = Inputs::at_hand(scene, base_dir)
+            .map_err(|e| crate::study::scene::map_derived(scene, e))?;
+        Ok(match at_hand {
+            Ok(inputs) => Preview::Ready(Box::new(Plan::decide(scene, mode, &inputs)?)),
+            Err(pending @ Pending::Calibration { .. }) => Preview::Provisional(
+                Box::new(Plan::decide(scene, mode, &Inputs::default())?),
+                pending,
+            ),
+            Err(pending) => Preview::Pending {
+                title: scene.title.clone(),
+                mode,
+                pending,
+                decisions: topography::preview_decisions(scene)?,
+            },
+        })
     }
 
-    fn build(scene: &Scene, mode: PlanMode, preview: bool, base_dir: &Path) -> Result<Plan> {
+    fn build(scene: &Scene, mode: PlanMode, inputs: &Inputs) -> Result<Plan> {
         scene.validate()?;
-        let resolved = crate::study::scene::resolve(scene, base_dir)?;
-        let scene = resolved.as_ref().map_or(scene, |r| &r.scene);
+        let resolved = inputs.map.as_ref();
+        let scene = resolved.map_or(scene, |r| &r.scene);
         let contact = build_contact(scene)?;
         let surface = build_surface(scene)?;
         let distribution = build_distribution(&scene.surface)?;
         let mut decisions = Vec::new();
-        let rtol = scene.accuracy.rtol;
-        let law = law::choose(scene, &contact, mode, preview, &mut decisions)?;
-        let topography = match &resolved {
+        let budget = Budget::new(scene.accuracy.rtol);
+        let law = law::choose(
+            scene,
+            &contact,
+            mode,
+            inputs.calibration.as_ref(),
+            &mut decisions,
+        )?;
+        let topography = match resolved {
             Some(r) => {
                 let t = TopographyPlan::new(r, &law, &contact)?;
                 decisions.push(Decision::Topography {
@@ -244,7 +274,7 @@ impl Plan {
         }
         let model = model.with_accuracy(accuracy);
         let (target, start, listed) = program(scene, mode, &model, &mut decisions)?;
-        let tabulation = tabulation(&law, &model, start, target, rtol, mode);
+        let tabulation = tabulation(&law, &model, start, target, &budget, mode);
         if let Some((interval, tolerance)) = tabulation {
             decisions.push(Decision::Tabulation {
                 law: law.name.clone(),
@@ -289,6 +319,7 @@ impl Plan {
         Ok(Plan {
             scene: scene.clone(),
             mode,
+            budget,
             montecarlo,
             contact,
             surface,
@@ -372,6 +403,19 @@ impl Plan {
     }
 }
 
+/// The default start of a program on `model`: where the summits beyond the
+/// flat's reach carry less than the budget's tail probability (everything
+/// on: where the first summit comes in range).
+pub fn start_of(model: &GwModel, budget: &Budget, mode: PlanMode) -> (f64, StartReason) {
+    match mode {
+        PlanMode::Planned => (
+            model.start_separation(budget.start_tail()),
+            StartReason::TailFraction(budget.start_tail()),
+        ),
+        PlanMode::EverythingOn => (model.interaction_onset(), StartReason::EverythingOn),
+    }
+}
+
 /// Where the program starts and where its approach stops, and the listed
 /// states (`separations` or `loads`), if any.
 fn program(
@@ -395,11 +439,7 @@ fn program(
     };
     let (start, reason) = match (scene.program.start_separation, mode) {
         (Some(s), _) => (s, StartReason::Given),
-        (None, PlanMode::Planned) => (
-            model.start_separation(START_TAIL_FRACTION * scene.accuracy.rtol),
-            StartReason::TailFraction(START_TAIL_FRACTION * scene.accuracy.rtol),
-        ),
-        (None, PlanMode::EverythingOn) => (model.interaction_onset(), StartReason::EverythingOn),
+        (None, _) => start_of(model, &Budget::new(scene.accuracy.rtol), mode),
     };
     if !start.is_finite() {
         // Derived from sigma, the distribution and the force range: named
@@ -461,6 +501,24 @@ fn resistance(
     )))
 }
 
+/// The integration accuracy of `model`: the budget's tolerance, closed
+/// forms where the law and the distribution have them (everything on:
+/// quadrature everywhere).
+///
+/// # Errors
+/// [`Error::OutOfRange`] naming `accuracy.rtol`.
+pub fn accuracy_of(model: &GwModel, budget: &Budget, mode: PlanMode) -> Result<Accuracy> {
+    let closed = model.has_closed_form(&Observables::ALL);
+    let method = if closed && mode == PlanMode::Planned {
+        Method::Auto
+    } else {
+        Method::Quadrature
+    };
+    Ok(Accuracy::new(budget.integrals())
+        .map_err(|e| e.renamed("accuracy.rtol"))?
+        .with_method(method))
+}
+
 /// Which observables the curve computes, the integration method, and the
 /// decision for each output.
 fn outputs(
@@ -478,14 +536,8 @@ fn outputs(
         o.count || all,
     );
     let closed = model.has_closed_form(&Observables::ALL);
-    let method = if closed && !all {
-        Method::Auto
-    } else {
-        Method::Quadrature
-    };
-    let accuracy = Accuracy::new(scene.accuracy.rtol)
-        .map_err(|e| e.renamed("accuracy.rtol"))?
-        .with_method(method);
+    let accuracy = accuracy_of(model, &Budget::new(scene.accuracy.rtol), mode)?;
+    let method = accuracy.method;
     let distribution = model.distribution();
     let evaluation = if distribution.sample_points().is_some() && !closed {
         Evaluation::SampleSum
@@ -532,7 +584,7 @@ fn tabulation(
     model: &GwModel,
     start: f64,
     target: Target,
-    rtol: f64,
+    budget: &Budget,
     mode: PlanMode,
 ) -> Option<((f64, f64), f64)> {
     // Laws that are already tables (calibrated, shaped) or cheap say so.
@@ -545,7 +597,7 @@ fn tabulation(
         Target::Load(_) => start - MAX_LOAD_TABLE_DEPTH * model.surface().sigma,
     };
     let (lo, hi) = model.reachable_interferences(closest);
-    (hi > lo).then_some(((lo, hi), TABLE_TOLERANCE_FRACTION * rtol))
+    (hi > lo).then_some(((lo, hi), budget.table()))
 }
 
 impl fmt::Display for Plan {

@@ -8,7 +8,7 @@ use crate::law::LawKind;
 use crate::material::AsperityContact;
 use crate::montecarlo::SummitLaw;
 use crate::study::scene::LawName;
-use crate::study::scene::{Resolved, SummitSource, TopographySpec};
+use crate::study::scene::{Resolved, Scene, SummitSource, TopographySpec};
 use crate::surface::Characterisation;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -79,15 +79,7 @@ impl TopographyPlan {
 
     /// The decision's choice, in a few words.
     pub fn choice(&self) -> String {
-        format!(
-            "{} summits{}",
-            self.spec.summits.name(),
-            if self.spec.compare {
-                format!(" (and {})", self.spec.summits.other().name())
-            } else {
-                String::new()
-            }
-        )
+        choice(&self.spec)
     }
 
     /// Why, in a sentence.
@@ -115,4 +107,49 @@ impl TopographyPlan {
             main
         }
     }
+}
+
+/// The decisions of a scene with a map that need not read it: which model
+/// of the map and whether the other runs beside it.
+///
+/// # Errors
+/// As [`TopographySpec::of`].
+pub(super) fn preview_decisions(scene: &Scene) -> Result<Vec<super::Decision>> {
+    let Some(spec) = TopographySpec::of(&scene.surface)? else {
+        return Ok(Vec::new());
+    };
+    let main = match spec.summits {
+        SummitSource::Measured => format!(
+            "an exact sum over the measured summits of {}, each with its own height and radius",
+            spec.path
+        ),
+        SummitSource::Moments => format!(
+            "Gaussian GW with McCool's parameters from the moments of {}",
+            spec.path
+        ),
+    };
+    Ok(vec![super::Decision::Topography {
+        choice: choice(&spec),
+        why: format!(
+            "{main}{}",
+            if spec.compare {
+                format!("; the {} model runs beside it", spec.summits.other().name())
+            } else {
+                String::new()
+            }
+        ),
+    }])
+}
+
+/// The decision's choice, in a few words.
+fn choice(spec: &TopographySpec) -> String {
+    format!(
+        "{} summits{}",
+        spec.summits.name(),
+        if spec.compare {
+            format!(" (and {})", spec.summits.other().name())
+        } else {
+            String::new()
+        }
+    )
 }

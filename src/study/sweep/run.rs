@@ -159,7 +159,9 @@ pub fn run_sweep(
         // Fail early on a bad path, before any point runs.
         set_field(&mut base_value.clone(), &v.path, v.from)?;
     }
-    let cols = with_quantities(Plan::preview(base, PlanMode::Planned)?, options)?.result_columns();
+    // The base plan gives the columns (and gathers a calibration once, for
+    // every point to read from the cache).
+    let cols = with_quantities(Plan::new(base, PlanMode::Planned)?, options)?.result_columns();
     let mut header: Vec<String> = vec!["index".into()];
     header.extend(spec.vary.iter().map(|v| v.path.clone()));
     header.extend(["seed".into(), "status".into()]);

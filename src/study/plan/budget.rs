@@ -1,0 +1,113 @@
+//! The scene's one tolerance `accuracy.rtol` and how a plan splits it: each
+//! use of `rtol` is a named share with its reason, so the planner, the run
+//! and the diagnostics read the same numbers.
+
+/// The summits beyond the flat's reach at the program's start carry less
+/// than this fraction of `rtol` of the heights: their contribution is two
+/// orders below the tolerance.
+pub const START_TAIL_FRACTION: f64 = 0.01;
+
+pub use crate::montecarlo::TABLE_TOLERANCE_FRACTION;
+
+/// A plastic law's adhesion is left out when its JKR interference scale is
+/// below this fraction of `rtol x sigma`: no output can change at the
+/// tolerance.
+pub const NEGLIGIBLE_ADHESION_FRACTION: f64 = 1e-6;
+
+/// Smallest relative tolerance of the hysteresis-energy sign check: a
+/// negative energy within `max(rtol, this) x int |P| dd` is zero.
+pub const ENERGY_SIGN_FLOOR: f64 = 1e-9;
+
+/// One share of the tolerance.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Share {
+    /// What it bounds.
+    pub name: &'static str,
+    /// Its value (relative, or in the unit the name says).
+    pub value: f64,
+    /// Why this share.
+    pub reason: &'static str,
+}
+
+/// The splits of one scene tolerance.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Budget {
+    /// The scene's `accuracy.rtol`.
+    pub rtol: f64,
+}
+
+impl Budget {
+    /// The budget of `rtol`.
+    pub fn new(rtol: f64) -> Budget {
+        Budget { rtol }
+    }
+
+    /// Relative tolerance of every GW integral (controlled against
+    /// `int |integrand|`) and of the hysteresis energy.
+    pub fn integrals(&self) -> f64 {
+        self.rtol
+    }
+
+    /// Tail probability beyond the program's start.
+    pub fn start_tail(&self) -> f64 {
+        START_TAIL_FRACTION * self.rtol
+    }
+
+    /// Relative tolerance of a Chebyshev table of the law.
+    pub fn table(&self) -> f64 {
+        TABLE_TOLERANCE_FRACTION * self.rtol
+    }
+
+    /// Separation tolerance of the root and minimum searches (the pull-off,
+    /// the separation at a load), in units of the height scale `sigma`.
+    pub fn separation(&self) -> f64 {
+        self.rtol
+    }
+
+    /// The JKR interference scale (in units of `sigma`) below which a
+    /// plastic law's adhesion is left out.
+    pub fn negligible_adhesion(&self) -> f64 {
+        NEGLIGIBLE_ADHESION_FRACTION * self.rtol
+    }
+
+    /// Relative tolerance of the hysteresis energy's sign check.
+    pub fn energy_sign(&self) -> f64 {
+        self.rtol.max(ENERGY_SIGN_FLOOR)
+    }
+
+    /// Every share, for the plan's report.
+    pub fn shares(&self) -> [Share; 6] {
+        [
+            Share {
+                name: "integrals",
+                value: self.integrals(),
+                reason: "relative error of every GW integral and of the hysteresis energy",
+            },
+            Share {
+                name: "start tail",
+                value: self.start_tail(),
+                reason: "heights beyond the program's start: two orders below rtol",
+            },
+            Share {
+                name: "law tables",
+                value: self.table(),
+                reason: "Chebyshev tables of expensive laws: an order below rtol",
+            },
+            Share {
+                name: "separations / sigma",
+                value: self.separation(),
+                reason: "pull-off and load-controlled separations",
+            },
+            Share {
+                name: "adhesion / sigma",
+                value: self.negligible_adhesion(),
+                reason: "a plastic law's JKR scale below it: adhesion left out",
+            },
+            Share {
+                name: "energy sign",
+                value: self.energy_sign(),
+                reason: "a negative hysteresis energy within it is zero",
+            },
+        ]
+    }
+}

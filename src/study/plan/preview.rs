@@ -1,0 +1,89 @@
+//! What `asperity run --plan` shows: the plan, or as much of it as can be
+//! decided before the run gathers its expensive inputs.
+
+use super::inputs::Pending;
+use super::{Decision, Plan, PlanMode};
+use std::fmt;
+
+/// A plan before the run, from [`Plan::preview`].
+#[derive(Debug, Clone)]
+pub enum Preview {
+    /// Every input was at hand: the plan the run will use.
+    Ready(Box<Plan>),
+    /// The calibration is not cached yet: the plan with Maugis–Dugdale at
+    /// the same `lambda` standing in for the range decisions (start,
+    /// tables); the run computes the calibration and decides again.
+    Provisional(Box<Plan>, Pending),
+    /// A measured map decides the rest when the run reads it.
+    Pending {
+        /// The scene's title.
+        title: Option<String>,
+        /// The mode.
+        mode: PlanMode,
+        /// What the run gathers first.
+        pending: Pending,
+        /// The decisions that do not need it.
+        decisions: Vec<Decision>,
+    },
+}
+
+impl Preview {
+    /// The plan, when one could be made.
+    pub fn plan(&self) -> Option<&Plan> {
+        match self {
+            Preview::Ready(p) | Preview::Provisional(p, _) => Some(p),
+            Preview::Pending { .. } => None,
+        }
+    }
+
+    /// The plan's warnings (none while a map is pending).
+    pub fn warnings(&self) -> &[String] {
+        self.plan().map_or(&[], |p| &p.warnings)
+    }
+}
+
+impl fmt::Display for Pending {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Pending::Map(path) => write!(
+                f,
+                "the map {} is read and characterised when the run starts; the law (at the \
+                 map's summit radius), the start separation and the methods are decided from its \
+                 summits then",
+                path.display()
+            ),
+            Pending::Calibration { mu, path } => write!(
+                f,
+                "the full-solver calibration at mu = {mu:.4} is not cached ({}): the run computes \
+                 it first (seconds) and decides again; until then Maugis-Dugdale at the same \
+                 lambda stands in for the start separation and the tables above",
+                path.display()
+            ),
+        }
+    }
+}
+
+impl fmt::Display for Preview {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Preview::Ready(p) => write!(f, "{p}"),
+            Preview::Provisional(p, pending) => {
+                write!(f, "{p}")?;
+                writeln!(f, "  {:<18} {}", "pending", pending)
+            }
+            Preview::Pending {
+                title,
+                mode,
+                pending,
+                decisions,
+            } => {
+                let title = title.as_deref().unwrap_or("untitled scene");
+                writeln!(f, "plan for {title} ({mode:?})")?;
+                for d in decisions {
+                    writeln!(f, "  {:<18} {:<24} {}", d.topic(), d.choice(), d.why())?;
+                }
+                writeln!(f, "  {:<18} {}", "pending", pending)
+            }
+        }
+    }
+}
