@@ -20,7 +20,7 @@
 //! Film: a film of resistance `rho_f` (Ohm m^2) per unit area adds
 //! `rho_f/(pi a^2)` in series.
 
-use crate::error::{non_negative, positive, Error, Result};
+use crate::error::{non_negative, Allowed, Error, Result};
 use std::f64::consts::PI;
 
 /// Spreading model of one spot.
@@ -93,22 +93,34 @@ pub struct Conductor {
 }
 
 impl Conductor {
-    /// Gold at room temperature: `rho = 2.44e-8 Ohm m`, `l = 3.46e-8 m`
-    /// (the example values).
+    /// Gold at room temperature: `rho = 2.44e-8 Ohm m` (CRC Handbook,
+    /// 293 K), electron mean free path `l = 3.46e-8 m` (Gall 2016, J. Appl.
+    /// Phys. 119, 085101).
     pub const GOLD: Conductor = Conductor {
         resistivity: 2.44e-8,
         mean_free_path: Some(3.46e-8),
     };
 
-    /// A conductor of resistivity `rho > 0` (Ohm m) and optional mean free
-    /// path `l > 0` (m).
+    /// Resistivities a conductor may have (Ohm m): metals are ~1e-8,
+    /// semiconductors up to ~1e3; beyond these bounds spot conductances
+    /// leave the floating-point range.
+    pub const RESISTIVITY: Allowed = Allowed::closed(1e-12, 1e6);
+
+    /// Electron mean free paths a conductor may have (m): ~1e-8 in metals;
+    /// down to a femtometre (the diffusive limit) and up to a centimetre
+    /// (the ballistic one).
+    pub const MEAN_FREE_PATH: Allowed = Allowed::closed(1e-15, 1e-2);
+
+    /// A conductor of resistivity `rho` (Ohm m, in
+    /// [`Conductor::RESISTIVITY`]) and optional mean free path `l` (m, in
+    /// [`Conductor::MEAN_FREE_PATH`]).
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `resistivity` or `mean_free_path`.
     pub fn new(resistivity: f64, mean_free_path: Option<f64>) -> Result<Self> {
-        positive("resistivity", resistivity)?;
+        Self::RESISTIVITY.check("resistivity", resistivity)?;
         if let Some(l) = mean_free_path {
-            positive("mean_free_path", l)?;
+            Self::MEAN_FREE_PATH.check("mean_free_path", l)?;
         }
         Ok(Conductor {
             resistivity,

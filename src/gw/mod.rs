@@ -14,6 +14,7 @@
 pub mod dimensionless;
 mod model;
 mod surface;
+pub mod validity;
 
 pub use model::{Accuracy, GwModel, Method, REACH_CEILING_SIGMAS, REACH_FLOOR_SIGMAS};
 pub use surface::RoughSurface;

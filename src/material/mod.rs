@@ -150,6 +150,31 @@ pub fn tabor_parameter(radius: f64, contact_modulus: f64, adhesion: &Adhesion) -
     (radius * w * w / (contact_modulus * contact_modulus * z0 * z0 * z0)).cbrt()
 }
 
+/// The exponents of the Tabor parameter in its inputs,
+/// `mu = R^(1/3) w^(2/3) E*^(-2/3) z0^(-1)` ([`tabor_parameter`]): each
+/// input's share of `ln mu` is its exponent times its logarithm, which
+/// tells which input drives `mu` (and the Maugis `lambda = 1.1570 mu`) out
+/// of range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TaborExponents {
+    /// Of the summit radius `R`.
+    pub radius: f64,
+    /// Of the work of adhesion `w`.
+    pub work: f64,
+    /// Of the contact modulus `E*`.
+    pub contact_modulus: f64,
+    /// Of the force range `z0`.
+    pub range: f64,
+}
+
+/// [`TaborExponents`] of `mu = (R w^2 / (E*^2 z0^3))^(1/3)`.
+pub const TABOR_EXPONENTS: TaborExponents = TaborExponents {
+    radius: 1.0 / 3.0,
+    work: 2.0 / 3.0,
+    contact_modulus: -2.0 / 3.0,
+    range: -1.0,
+};
+
 /// Maugis parameter from a Dugdale stress:
 /// `lambda = 2 sigma0 (R / (pi w K^2))^(1/3)`, `K = 4 E*/3` (dimensionless).
 /// Returns `+inf` when `w = 0`.

@@ -44,11 +44,13 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
+mod comparison;
 mod measured;
 mod population;
 mod scaling;
 mod summation;
 
+pub use comparison::{contacts_of, Comparison, MIN_SUMMITS_FOR_Z};
 pub use measured::MeasuredSummits;
 pub use population::{Population, PopulationSpec, Radii, RadiusSpec, MAX_SUMMITS, SAMPLING_BLOCK};
 pub use scaling::{SummitLaw, TABLE_TOLERANCE_FRACTION};

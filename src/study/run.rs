@@ -11,14 +11,12 @@ use crate::loading::{
     PullOff, State, SLOTS,
 };
 use crate::material::plastic::{RegimeLimits, Variant};
-use crate::montecarlo::{MonteCarlo, Population, SummitLaw};
+use crate::montecarlo::{Comparison, MonteCarlo, Population, SummitLaw};
 use crate::study::quantity::{QuantitySet, Record};
 use std::sync::Arc;
 use std::time::Instant;
 
-/// Summits in range below which a population state is not compared with
-/// the integral in standard errors.
-pub const MIN_SUMMITS_FOR_Z: usize = 20;
+pub use crate::montecarlo::MIN_SUMMITS_FOR_Z;
 
 /// Number of retraction samples the pull-off search starts from.
 const PULL_OFF_SAMPLES: usize = 64;
@@ -150,30 +148,11 @@ fn run_montecarlo(
     let mc_curve = summer
         .curve(&curve.program, plan.quantities.observables())?
         .scaled(mc.factor);
-    let z: Vec<[Option<f64>; SLOTS]> = mc_curve
-        .approach
-        .iter()
-        .zip(&curve.approach)
-        .chain(mc_curve.retract.iter().zip(&curve.retract))
-        .map(|(m, g)| {
-            // The standard error means something only with enough summits
-            // in range (central limit); with none in range the sum is an
-            // exact 0 that a tiny expectation cannot be "many errors" from.
-            if m.evaluations >= MIN_SUMMITS_FOR_Z
-                && contacts_of(m, mc.factor) >= MIN_SUMMITS_FOR_Z as f64
-            {
-                m.deviation_from(g)
-            } else {
-                [None; SLOTS]
-            }
-        })
-        .collect();
-    let max_abs_z = z
-        .iter()
-        .flatten()
-        .flatten()
-        .map(|v| v.abs())
-        .reduce(f64::max);
+    let Comparison {
+        z,
+        max_abs_z,
+        contacts,
+    } = Comparison::new(&mc_curve, curve, mc.factor);
     let spots = match &plan.resistance {
         Some(res) => {
             let side = (plan.surface.nominal_area / mc.factor).sqrt();
@@ -188,12 +167,6 @@ fn run_montecarlo(
         }
         None => None,
     };
-    let contacts = mc_curve
-        .approach
-        .iter()
-        .chain(&mc_curve.retract)
-        .map(|m| contacts_of(m, mc.factor))
-        .collect();
     let mut seed_pull_offs = Vec::new();
     if plan.pull_off && (mc.summits as f64) * (curve.program.points as f64) <= SEED_SPREAD_BUDGET {
         for k in 1..=EXTRA_SEEDS {
@@ -225,13 +198,6 @@ fn run_montecarlo(
         max_abs_z,
         seconds: t0.elapsed().as_secs_f64(),
     })
-}
-
-/// Summits of a population state in contact: its count over the scale
-/// factor, or the summits in range when the count is not computed.
-fn contacts_of(m: &State, factor: f64) -> f64 {
-    m.count()
-        .map_or(m.evaluations as f64, |c| (c / factor).round())
 }
 
 /// Curve steps computed between two progress reports.

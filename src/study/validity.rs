@@ -1,58 +1,13 @@
-//! Validity diagnostics of the Greenwood–Williamson model for a planned and
-//! a finished run: where the scene lies outside the model, a warning (a
-//! sentence naming the quantity, its value and the bound); where the result
-//! would be physically impossible, an error naming the scene field.
-//!
-//! GW treats the summits as independent paraboloids (Greenwood &
-//! Williamson 1966, Proc. R. Soc. A 295, 300): it needs
-//! - a real contact area that is a small fraction of the nominal one
-//!   (neighbouring contacts must not merge or interact elastically):
-//!   warning above [`AREA_FRACTION_WARN`], error above 1 (a real area larger
-//!   than the nominal area is impossible);
-//! - interferences small against the summit radius (Hertz/JKR/Maugis are
-//!   small-strain paraboloid theories): the highest expected summit's
-//!   contact radius `a = sqrt(R delta)` (Hertz) against
-//!   [`CONTACT_RADIUS_WARN`] `R` (the bound used for the exact sphere in
-//!   `src/axisym`), error when `delta > R` (a cap deeper than the radius is
-//!   no paraboloid);
-//! - `eta R sigma` (summit density x radius x height std), the one
-//!   dimensionless group of the GW surface: measured surfaces give
-//!   0.03–0.05 (GW 1966, McCool 1986); above [`ETA_R_SIGMA_WARN`] the real
-//!   area reaches `pi eta R sigma F_1(h)`, i.e. 10 % of the nominal area
-//!   within one sigma of the mean plane;
-//! - a program that resolves the contact: [`MIN_POINTS_IN_RANGE`] points per
-//!   leg where summits are in range;
-//! - a non-negative dissipated energy: a negative hysteresis energy beyond
-//!   the integration tolerance is an error, one within it is zero.
+//! The GW validity findings of a plan and a run ([`crate::gw::validity`])
+//! as the scene sees them: warnings, or errors naming the scene input that
+//! drove an impossible result; and the sign check of the hysteresis
+//! energy (a negative energy within the budget is zero).
 
 use crate::error::{Error, Result};
-use crate::loading::{Curve, LoadingModel};
+use crate::gw::validity::Finding;
+use crate::gw::GwModel;
+use crate::loading::Curve;
 use crate::study::plan::{Plan, Target};
-
-/// Real-area fraction `A_r/A_n` above which GW's independent-asperity
-/// assumption is no longer a good approximation (contacts start to
-/// interact; Ciavarella et al. 2008, J. Mech. Phys. Solids 56, 3432).
-pub const AREA_FRACTION_WARN: f64 = 0.1;
-
-/// Contact radius of the highest expected summit, in units of `R`, above
-/// which the paraboloid (small-strain) laws lose accuracy.
-pub const CONTACT_RADIUS_WARN: f64 = 0.3;
-
-/// `eta R sigma` above which the surface is outside GW's measured range.
-pub const ETA_R_SIGMA_WARN: f64 = 0.1;
-
-/// Points per leg, where summits are in range, below which the curve does
-/// not resolve the contact.
-pub const MIN_POINTS_IN_RANGE: f64 = 10.0;
-
-/// The height (m, from the distribution's origin) of the highest of the
-/// `N = eta A_n` summits one expects: `sigma Q^-1(1/N)` (`N >= 2`; the
-/// probability is floored at 1e-15 so that the quantile stays finite).
-fn top_summit(plan: &Plan) -> f64 {
-    let n = plan.surface.summits().max(2.0);
-    let p = (1.0 / n).max(1e-15);
-    plan.surface.sigma * plan.distribution.quantile(1.0 - p)
-}
 
 /// The scene field that sets the closest separation.
 fn program_field(plan: &Plan) -> &'static str {
@@ -62,86 +17,93 @@ fn program_field(plan: &Plan) -> &'static str {
     }
 }
 
-/// `eta R sigma` of the plan's surface.
-pub fn eta_r_sigma(plan: &Plan) -> f64 {
+/// A finding as a warning, or as an error naming the input that drove it
+/// when it makes the result impossible.
+fn judge(plan: &Plan, f: Finding, warnings: &mut Vec<String>) -> Result<()> {
     let s = &plan.surface;
-    s.density * s.radius * s.sigma
+    match f {
+        Finding::DeeperThanRadius {
+            depth,
+            top,
+            closest,
+        } => {
+            // The height scale when the highest summit alone is deeper
+            // than R, the program otherwise.
+            let field = if top > s.radius && top > -closest {
+                "surface.sigma"
+            } else {
+                program_field(plan)
+            };
+            Err(Error::invalid(
+                field,
+                format!(
+                    "the highest of the {:.3e} summits would be pressed {depth:.3e} m deep, more \
+                     than its radius surface.radius = {:e} m (closest separation {closest:.3e} m, \
+                     surface.sigma = {:e} m): a paraboloidal summit has no meaning there (GW \
+                     needs interferences small against R)",
+                    s.summits(),
+                    s.radius,
+                    s.sigma
+                ),
+            ))
+        }
+        Finding::AreaAboveNominal { fraction } => {
+            let ers = s.eta_r_sigma();
+            let field = if ers > crate::gw::validity::ETA_R_SIGMA_WARN {
+                "surface.sigma"
+            } else {
+                program_field(plan)
+            };
+            Err(Error::invalid(
+                field,
+                format!(
+                    "the real contact area would be {fraction:.3e} x the nominal area \
+                     surface.nominal_area (impossible; GW needs a small fraction): eta R sigma = \
+                     {ers:.3e} (surface.density x surface.radius x surface.sigma)"
+                ),
+            ))
+        }
+        other => {
+            warnings.push(other.to_string());
+            Ok(())
+        }
+    }
 }
 
-/// The interference check at closest separation `closest` (m): a warning
-/// when the highest expected summit's Hertz contact radius exceeds
-/// [`CONTACT_RADIUS_WARN`] `R`; an error naming the input that drives it
-/// when its interference exceeds `R`.
-fn interference(plan: &Plan, closest: f64, warnings: &mut Vec<String>) -> Result<()> {
-    let r = plan.surface.radius;
-    let top = top_summit(plan);
-    let delta = top - closest;
-    if !(delta.is_finite()) || delta <= 0.0 {
-        return Ok(());
-    }
-    let a_over_r = (delta / r).sqrt();
-    if delta > r {
-        // Which input made the interference large: the height scale when the
-        // highest summit alone is deeper than R, the program otherwise.
-        let field = if top > r && top > -closest {
-            "surface.sigma"
-        } else {
-            program_field(plan)
-        };
-        return Err(Error::invalid(
-            field,
-            format!(
-                "the highest of the {:.3e} summits would be pressed {delta:.3e} m deep, more than \
-                 its radius surface.radius = {r:e} m (closest separation {closest:.3e} m, \
-                 surface.sigma = {:e} m): a paraboloidal summit has no meaning there (GW needs \
-                 interferences small against R)",
-                plan.surface.summits(),
-                plan.surface.sigma
-            ),
-        ));
-    }
-    if a_over_r > CONTACT_RADIUS_WARN {
-        warnings.push(format!(
-            "interference: the highest expected summit is pressed {delta:.3e} m deep, contact \
-             radius a/R = {a_over_r:.2} > {CONTACT_RADIUS_WARN} (Hertz estimate): the \
-             small-strain asperity laws lose accuracy"
-        ));
-    }
-    Ok(())
+/// The plan's GW model with its own law (the findings need no table).
+fn model(plan: &Plan) -> Result<GwModel> {
+    plan.model_with(plan.law.law.clone())
 }
 
 /// Plan-time diagnostics (closest separation given): `eta R sigma`, the
-/// interference of the highest summit, the program's resolution.
+/// interference of the highest summit.
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the field when the program would press the
 /// highest summit deeper than its radius.
 pub fn plan_warnings(plan: &Plan) -> Result<Vec<String>> {
     let mut warnings = Vec::new();
-    let ers = eta_r_sigma(plan);
-    if ers > ETA_R_SIGMA_WARN {
-        warnings.push(format!(
-            "eta R sigma = {ers:.3e} (surface.density x surface.radius x surface.sigma) > \
-             {ETA_R_SIGMA_WARN}: measured surfaces give 0.03-0.05; the real area reaches \
-             {:.0} % of the nominal area near the mean plane, outside GW's independent summits",
-            100.0 * std::f64::consts::PI * ers * 0.4
-        ));
-    }
-    if let Target::Separation(d) = plan.target {
-        interference(plan, d, &mut warnings)?;
+    let closest = match plan.target {
+        Target::Separation(d) => d,
+        // The interference is judged on the run's closest separation.
+        Target::Load(_) => f64::INFINITY,
+    };
+    for f in model(plan)?.findings_at(closest) {
+        judge(plan, f, &mut warnings)?;
     }
     Ok(warnings)
 }
 
 /// Run-time diagnostics of a finished curve; clamps a negative hysteresis
-/// energy that is zero within the tolerance to 0 (with a warning).
+/// energy that is zero within the budget to 0 (with a warning).
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the field when the real area exceeds the
 /// nominal area or the highest summit is pressed deeper than its radius
 /// (load-controlled programs); [`Error::NoConvergence`] (not the input's
-/// fault) when outputs are not finite or the dissipated energy is negative
-/// beyond the tolerance.
+/// fault) when the dissipated energy is negative beyond the tolerance;
+/// [`Error::Invalid`] naming the input furthest from typical values when
+/// outputs are not finite.
 pub fn run_warnings(
     plan: &Plan,
     curve: &Curve,
@@ -165,60 +127,22 @@ pub fn run_warnings(
             ),
         ));
     }
-    let closest = curve.program.closest;
+    let model = model(plan)?;
+    let mut findings = Vec::new();
     if let Target::Load(_) = plan.target {
-        interference(plan, closest, &mut warnings)?;
+        findings.extend(
+            model
+                .findings_at(curve.program.closest)
+                .into_iter()
+                .filter(|f| !matches!(f, Finding::EtaRSigma { .. })),
+        );
     }
-    let max_area = curve
-        .approach
-        .iter()
-        .chain(&curve.retract)
-        .filter_map(|s| s.area())
-        .fold(0.0, f64::max);
-    let fraction = max_area / plan.surface.nominal_area;
-    if fraction > 1.0 {
-        let ers = eta_r_sigma(plan);
-        let field = if ers > ETA_R_SIGMA_WARN {
-            "surface.sigma"
-        } else {
-            program_field(plan)
-        };
-        return Err(Error::invalid(
-            field,
-            format!(
-                "the real contact area would be {fraction:.3e} x the nominal area \
-                 surface.nominal_area (impossible; GW needs a small fraction): eta R sigma = \
-                 {ers:.3e} (surface.density x surface.radius x surface.sigma), closest \
-                 separation {closest:.3e} m"
-            ),
-        ));
-    }
-    if fraction > AREA_FRACTION_WARN {
-        warnings.push(format!(
-            "real area: A_r/A_n = {fraction:.3} > {AREA_FRACTION_WARN} at the closest separation: \
-             contacts interact, outside GW's independent summits"
-        ));
-    }
-    // Resolution: points per leg between the closest separation and where
-    // the first summit comes in range.
-    if let Ok(model) = plan.model_with(plan.law.law.clone()) {
-        let onset = model.interaction_onset();
-        let span = curve.program.start - closest;
-        if span > 0.0 && onset.is_finite() && onset > closest {
-            let inside = (onset.min(curve.program.start) - closest) / span
-                * (curve.program.points as f64 - 1.0);
-            if inside < MIN_POINTS_IN_RANGE {
-                warnings.push(format!(
-                    "resolution: only {inside:.1} of the {} points per leg lie where summits are \
-                     in range (below {onset:.3e} m; program.start_separation = {:.3e} m): the \
-                     curve, pull-off and hysteresis energy are not resolved",
-                    curve.program.points, curve.program.start
-                ));
-            }
-        }
+    findings.extend(model.findings_of(curve));
+    for f in findings {
+        judge(plan, f, &mut warnings)?;
     }
     if let Some(e) = *hysteresis_energy {
-        // The energy's error scale: rtol times the integral of |P| over both legs.
+        // The energy's error scale: the budget times int |P| over both legs.
         let scale: f64 = curve
             .approach
             .windows(2)
@@ -297,7 +221,7 @@ mod tests {
             Scene::from_toml(&DEFAULT_SCENE.replacen("density = 1e12", "density = 3e13", 1))
                 .unwrap();
         let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
-        assert!((eta_r_sigma(&plan) - 0.15).abs() < 1e-12);
+        assert!((plan.surface.eta_r_sigma() - 0.15).abs() < 1e-12);
         assert!(
             plan.warnings.iter().any(|w| w.contains("eta R sigma")),
             "{:?}",

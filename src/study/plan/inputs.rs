@@ -64,9 +64,10 @@ fn problem(scene: &Scene) -> Result<Option<SphereProblem>> {
     SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default())
         .map(Some)
         .map_err(|e| {
+            // Named "mu": the caller's mapping names the input that drove it.
             Error::invalid(
-                "law.kind",
-                format!("\"calibrated\" needs the full solver at mu = {mu:.4}: {e}"),
+                "mu",
+                format!("law.kind = \"calibrated\" needs the full solver at mu = {mu:.4}: {e}"),
             )
         })
 }

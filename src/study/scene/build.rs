@@ -144,7 +144,7 @@ pub fn map_derived(scene: &Scene, e: Error) -> Error {
     let tabor = matches!(
         field.as_str(),
         "lambda" | "mu" | "tabor" | "tabor_parameter"
-    ) || (field == "law.kind" && text.contains("full solver at mu"));
+    );
     if !tabor {
         let scene_field = field.contains('.')
             || matches!(
@@ -170,11 +170,12 @@ pub fn map_derived(scene: &Scene, e: Error) -> Error {
     } else {
         "materials.e2"
     };
+    let x = crate::material::TABOR_EXPONENTS;
     let shares = [
-        ("surface.radius", 1.0 / 3.0),
-        ("adhesion.w", 2.0 / 3.0),
-        (e_field, -2.0 / 3.0),
-        ("adhesion.z0", -1.0),
+        ("surface.radius", x.radius),
+        ("adhesion.w", x.work),
+        (e_field, x.contact_modulus),
+        ("adhesion.z0", x.range),
     ];
     let typical = |n: &str| TYPICAL.iter().find(|t| t.0 == n).map_or(1.0, |t| t.1);
     let share = |&(n, p): &(&str, f64)| p * (input(scene, n) / typical(n)).ln();

@@ -8,7 +8,7 @@ use super::schema::{ElectricalSpec, LawSpec, Scene, MAX_LISTED_STATES};
 use crate::axisym::Profile;
 use crate::axisym::{ProfileKind, ProfileParams};
 use crate::electrical::{Conductor, Heating, Interaction, SpotResistance, Switch};
-use crate::error::{finite, non_negative, positive, Allowed, Error, Result};
+use crate::error::{finite, positive, Allowed, Error, Result};
 use crate::material::plastic::Plasticity;
 use crate::named::Named;
 
@@ -278,35 +278,27 @@ impl ElectricalSpec {
             self.mean_free_path2,
         )?;
         let two = self.resistivity.is_none();
+        let field = |n: &str, body: &str| {
+            if two {
+                format!("electrical.{n}{body}")
+            } else {
+                format!("electrical.{n}")
+            }
+        };
+        let body = |r: f64, l: Option<f64>, k: &str| {
+            Conductor::new(r, l).map_err(|e| match e.field() {
+                Some("mean_free_path") => e.renamed(&field("mean_free_path", k)),
+                _ => e.renamed(&field("resistivity", k)),
+            })
+        };
+        let b1 = body(rho.0, mfp.map(|m| m.0), "1")?;
+        let b2 = body(rho.1, mfp.map(|m| m.1), "2")?;
+        Allowed::closed(0.0, 1e3).check("electrical.film_resistance", self.film_resistance)?;
         let mfp_name = if self.mean_free_path.is_some() || !two {
             "electrical.mean_free_path"
         } else {
             "electrical.mean_free_path1"
         };
-        let body = |r: f64, l: Option<f64>| Conductor::new(r, l);
-        // Physical ranges (metals ~1e-8 Ohm m, mean free paths ~1e-8 m);
-        // beyond them conductances leave the floating-point range.
-        let rho_range = Allowed::closed(1e-12, 1e6);
-        let mfp_range = Allowed::closed(1e-12, 1e-2);
-        let names = |n: &str| {
-            if two {
-                [format!("electrical.{n}1"), format!("electrical.{n}2")]
-            } else {
-                [format!("electrical.{n}"), format!("electrical.{n}")]
-            }
-        };
-        let [r1, r2] = names("resistivity");
-        rho_range.check(&r1, rho.0)?;
-        rho_range.check(&r2, rho.1)?;
-        if let Some((l1, l2)) = mfp {
-            let [n1, n2] = names("mean_free_path");
-            mfp_range.check(&n1, l1)?;
-            mfp_range.check(&n2, l2)?;
-        }
-        Allowed::closed(0.0, 1e3).check("electrical.film_resistance", self.film_resistance)?;
-        let b1 = body(rho.0, mfp.map(|m| m.0)).map_err(|e| e.renamed("electrical.resistivity"))?;
-        let b2 = body(rho.1, mfp.map(|m| m.1)).map_err(|e| e.renamed("electrical.resistivity"))?;
-        non_negative("electrical.film_resistance", self.film_resistance)?;
         SpotResistance::new(spreading, b1, b2, self.film_resistance).map_err(|e| match e.field() {
             Some("mean_free_path") => e.renamed(mfp_name),
             Some("film_resistance") => e.renamed("electrical.film_resistance"),
