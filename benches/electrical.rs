@@ -3,28 +3,42 @@
 //! - a 1000-point resistance-force curve of Hertz summits over Gaussian
 //!   heights with Wexler spots and Greenwood's mean-field term (<= 50 ms);
 //! - the exact equal-potential solution for 2000 explicit spots (<= 2 s).
-use asperity::electrical::{GwSpots, Interaction, SpotResistance, Spots, Spreading};
+use asperity::electrical::{Interaction, ResistanceObservables, SpotResistance, Spots, Spreading};
+use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Gaussian;
+use asperity::law::Hertz;
+use asperity::loading::{Derived, History, LoadingModel, Observables};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use std::sync::Arc;
 
 /// Gold microswitch: 10^4 summits of radius 1 um, sigma 5 nm, in
-/// (100 um)^2; E* = 48 GPa; gold rho and l.
+/// (100 um)^2; E* = 48 GPa; gold rho and l. The engine's one GW
+/// integrator with the spot conductance as a per-asperity observable, at
+/// its default accuracy (rtol 1e-6).
 fn curve(c: &mut Criterion) {
-    let gw = GwSpots::new(1e4, 1e-6, 5e-9, 1e-8, Arc::new(Gaussian::new())).unwrap();
+    let surface = RoughSurface::new(1e12, 1e-6, 5e-9, 1e-8).unwrap();
+    let model = GwModel::new(
+        surface,
+        Arc::new(Gaussian::new()),
+        Arc::new(Hertz::new(1e-6, 48e9).unwrap()),
+    )
+    .unwrap()
+    .with_accuracy(Accuracy::DEFAULT);
     let spot = SpotResistance::same_metal(Spreading::Wexler, 2.44e-8, Some(3.46e-8)).unwrap();
-    let seps: Vec<f64> = (0..1000)
-        .map(|i| (-1.0 + 5.0 * i as f64 / 999.0) * 5e-9)
+    let res = ResistanceObservables::new(spot, Interaction::Greenwood, 1e-4);
+    let outputs = res.add_to(Observables::LOAD).unwrap();
+    let steps: Vec<(f64, History)> = (0..1000)
+        .map(|i| ((-1.0 + 5.0 * i as f64 / 999.0) * 5e-9, History::Approach))
         .collect();
     let mut group = c.benchmark_group("electrical");
     group.bench_function("curve 1000 points wexler+greenwood", |b| {
         b.iter(|| {
-            seps.iter()
-                .map(|&d| {
-                    let s = gw.hertz_state(48e9, &spot, Interaction::Greenwood, black_box(d));
-                    s.load + s.resistance.resistance
-                })
+            model
+                .states(black_box(&steps), &outputs)
+                .unwrap()
+                .iter()
+                .map(|s| s.load().unwrap() + res.value(&outputs, &s.totals).unwrap_or(0.0))
                 .sum::<f64>()
         })
     });

@@ -1,12 +1,12 @@
 //! src/electrical against independent mpmath values (tests/data/electrical.py),
 //! Barber's identity, the Wexler limits and the exact many-spot solution.
+#[allow(dead_code)] // not every helper is used by every test file
 mod common;
 
-use asperity::electrical::gw::greenwood_mean_field;
+use asperity::electrical::greenwood_mean_field;
 use asperity::electrical::heating::Heating;
-use asperity::electrical::{
-    Conductor, GwSpots, Interaction, SpotResistance, Spots, Spreading, C_SQ,
-};
+use asperity::electrical::{Conductor, Interaction, SpotResistance, Spots, Spreading, C_SQ};
+use common::gw_spots::GwSpots;
 use asperity::heights::Gaussian;
 use asperity::law::{Branch, LawKind};
 use asperity::material::AsperityContact;
@@ -331,4 +331,39 @@ proptest! {
         prop_assert!(w <= (m + s) * (1.0 + 1e-15));
         prop_assert!(w >= s.max(0.83 / 1.33 * m) * (1.0 - 1e-15));
     }
+}
+
+fn oracle_surface() -> GwSpots {
+    GwSpots::new(1e4, 1e-6, 1e-8, 1e-8, Arc::new(Gaussian::new())).unwrap()
+}
+
+#[test]
+fn oracle_closed_forms_match_its_quadrature() {
+    let gw = oracle_surface();
+    let rho = 2.44e-8;
+    let maxwell = SpotResistance::same_metal(Spreading::Maxwell, rho, None).unwrap();
+    let sharvin = SpotResistance::same_metal(Spreading::Sharvin, rho, Some(3.46e-8)).unwrap();
+    for spot in [maxwell, sharvin] {
+        for h in [-1.0, 0.0, 1.5, 4.0] {
+            let closed = gw.hertz_sums(&spot, h);
+            let [g, g2] = gw.integrate(h, |t| spot.spot_conductance((1e-6 * 1e-8 * t).sqrt()));
+            let quad = (1e4 * g, 1e4 * g2);
+            assert!((closed.conductance / quad.0 - 1.0).abs() < 1e-10, "{h}");
+            assert!((closed.conductance_sq / quad.1 - 1.0).abs() < 1e-10, "{h}");
+        }
+    }
+}
+
+#[test]
+fn interaction_is_skipped_below_two_contacts() {
+    let gw = oracle_surface();
+    let spot = SpotResistance::same_metal(Spreading::Maxwell, 2.44e-8, None).unwrap();
+    let far = gw.hertz_resistance(&spot, Interaction::Greenwood, 4.5);
+    assert!(far.contacts < 2.0);
+    assert!(far.interaction_skipped && far.interaction.is_none());
+    assert_eq!(far.resistance, far.parallel);
+    let near = gw.hertz_resistance(&spot, Interaction::Greenwood, 1.0);
+    assert!(!near.interaction_skipped);
+    assert!(near.interaction.unwrap() > 0.0);
+    assert!(near.resistance > near.parallel);
 }

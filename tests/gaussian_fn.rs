@@ -6,6 +6,7 @@
 use asperity::heights::{Gaussian, HeightDistribution};
 use asperity::special::{gamma, gaussian_fn, normal};
 
+#[allow(dead_code)] // not every helper is used by every test file
 mod common;
 use common::{local, num, rel, shared};
 

@@ -9,6 +9,7 @@ use asperity::heights::{
 use asperity::named::Named;
 use proptest::prelude::*;
 
+#[allow(dead_code)] // not every helper is used by every test file
 mod common;
 use common::{local, num, rel, shared};
 

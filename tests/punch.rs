@@ -8,6 +8,7 @@ use proptest::prelude::*;
 use serde_json::Value;
 use std::f64::consts::PI;
 
+#[allow(dead_code)] // not every helper is used by every test file
 mod common;
 use common::{local, num, rel, shared};
 

@@ -2,7 +2,11 @@
 //! issues, tested from outside (`asperity run SCENE --json`) with the keys
 //! exactly as the issues write them, and against direct library calls.
 
-use asperity::electrical::{GwSpots, Interaction, SpotResistance, Spreading};
+#[allow(dead_code)] // not every helper is used by every test file
+mod common;
+
+use asperity::electrical::{Interaction, SpotResistance, Spreading};
+use common::gw_spots::GwSpots;
 use asperity::heights::Gaussian;
 use asperity::law::{Branch, Jkr};
 use asperity::named::Named;

@@ -4,6 +4,7 @@
 
 use asperity::special::struve::{struve_h0, struve_h0_h1, struve_h1};
 
+#[allow(dead_code)] // not every helper is used by every test file
 mod common;
 use common::{local, num, rel, shared};
 

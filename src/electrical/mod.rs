@@ -3,8 +3,12 @@
 //! margin of an ohmic MEMS switch (physics.md, "Contact resistance").
 //!
 //! - [`spot`]: one spot (Maxwell/Holm, Sharvin, Wexler; two metals; film).
-//! - [`gw`]: spots over a Greenwood–Williamson surface (parallel sums in
-//!   closed form or by quadrature; Greenwood's mean-field interaction).
+//! - [`interaction`]: many spots in parallel and Greenwood's mean-field
+//!   interaction from their sums.
+//! - [`observable`]: the spot conductance as a per-asperity observable, so
+//!   the GW integral and the Monte Carlo sum give the resistance of any law
+//!   on any surface, and the resistance, contact voltage and temperature as
+//!   derived quantities of a state.
 //! - [`spots`]: explicit spots (parallel, Greenwood 1966, exact
 //!   equal-potential solve).
 //! - [`heating`]: Holm's phi-theta relation with Wiedemann–Franz.
@@ -19,7 +23,7 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
-pub mod gw;
+pub mod interaction;
 pub mod heating;
 pub mod observable;
 pub mod sample;
@@ -27,7 +31,7 @@ pub mod spot;
 pub mod spots;
 pub mod switch;
 
-pub use gw::{ContactResistance, ElectricalState, GwSpots, Interaction, SpotSums, C_SQ};
+pub use interaction::{greenwood_mean_field, ContactResistance, Interaction, SpotSums, C_SQ};
 pub use heating::Heating;
 pub use observable::{ContactHeating, ResistanceObservables, SpotConductance};
 pub use sample::{population_spots, SampleResistance, EXACT_MAX_SPOTS};

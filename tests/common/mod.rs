@@ -39,7 +39,6 @@ pub fn rel(a: f64, b: f64) -> f64 {
 /// The converged sphere-solver case of `tests/data/sphere_converged.json`
 /// at Tabor parameter `mu` and size ratio `rho` (`None`: paraboloid); panics
 /// naming the case when it is missing.
-#[allow(dead_code)] // used by the sphere tests only
 pub fn sphere_converged(mu: f64, rho: Option<f64>) -> Value {
     let v = local("sphere_converged.json");
     v["cases"]
@@ -50,3 +49,6 @@ pub fn sphere_converged(mu: f64, rho: Option<f64>) -> Value {
         .unwrap_or_else(|| panic!("no reference for mu {mu}, rho {rho:?}"))
         .clone()
 }
+
+/// A second, independent GW integrator of contact-resistance sums.
+pub mod gw_spots;

@@ -1,141 +1,26 @@
-//! Many spots over a Greenwood–Williamson surface: independent parallel
-//! spots (Holm) and Greenwood's (1966) mean-field interaction.
-//!
-//! `N = eta A_n` summits of radius `R`, heights `z = sigma s` with density
-//! `phi(s)`, separation `d = h sigma`. A Hertz summit at height `s > h` makes
-//! a spot of radius `a = sqrt(R sigma (s - h))`. Sums over spots are
-//! `N int_h^inf g(a(s)) phi(s) ds`; closed forms (physics.md):
-//! - Maxwell: `G = N sqrt(R sigma) F_1/2(h) / ((rho1 + rho2)/4)`
-//!   (same metal `(2/rho) N sqrt(R sigma) F_1/2`),
-//! - Sharvin: `G = N R sigma F_1(h) / c_S`, `c_S = 2 (rho1 l1 + rho2 l2)/(3 pi)`
-//!   (same metal `(3 pi/(4 rho l)) N R sigma F_1`),
-//!
-//! and quadrature otherwise (Wexler, a film, distributions without closed
-//! `F_n`), in `u = sqrt(s - h)` so the `sqrt` onset of `a` is smooth.
-//!
-//! Greenwood's interaction, mean field for spot centres uniform in a square
-//! of side `L = sqrt(A_n)`: `R_int = (rho_eff c_sq/(pi L)) (1 - sum G_i^2 /
-//! (sum G_i)^2)`, `rho_eff = (rho1 + rho2)/2`, `c_sq = E[1/|X - Y|]` in the
-//! unit square. The weights are the spots' shares of the current in the
-//! parallel solution, `G_i / sum G`; for Maxwell spots they are
-//! `a_i / sum a`, Greenwood's form `1 - sum a^2/(sum a)^2` (physics.md).
+//! An independent oracle for contact-resistance sums over a
+//! Greenwood–Williamson surface: Hertz spots summed by the closed forms
+//! `F_1/2` (Maxwell) and `F_1` (Sharvin) where they exist, by quadrature
+//! in `u = sqrt(s - h)` otherwise. The engine computes the same sums
+//! through its one GW integrator (the spot conductance as a per-asperity
+//! observable, `asperity::electrical::ResistanceObservables`); the tests
+//! compare the two. Moved here from the library, which keeps one
+//! integrator.
+#![allow(dead_code)]
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::spot::{SpotResistance, Spreading};
-use crate::error::{positive, Result};
-use crate::heights::HeightDistribution;
-use crate::law::{AsperityLaw, Branch};
-use crate::numeric::quadrature::{integrate_pieces_n, QuadOptions};
+use asperity::electrical::{ContactResistance, Interaction, SpotResistance, SpotSums, Spreading};
+use asperity::error::{positive, Result};
+use asperity::heights::HeightDistribution;
+use asperity::law::{AsperityLaw, Branch};
+use asperity::numeric::quadrature::{integrate_pieces_n, QuadOptions};
 use std::f64::consts::PI;
 use std::sync::Arc;
-
-/// `c_sq = E[1/|X - Y|]` for `X, Y` uniform in the unit square:
-/// `4 ln(1 + sqrt 2) - (4/3)(sqrt 2 - 1)` (physics.md; mpmath check in
-/// `tests/data/electrical.py`).
-pub const C_SQ: f64 = 2.973_209_598_247_378_5;
 
 /// Relative tolerance of the quadratures here.
 const QUAD_RTOL: f64 = 1e-12;
 /// Probability left out of each tail of the height density.
 const TAIL_EPS: f64 = 1e-300;
-
-/// Whether Greenwood's interaction term is added to the parallel spots.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Interaction {
-    /// Independent parallel spots (Holm).
-    None,
-    /// Parallel spots plus Greenwood's (1966) mean-field interaction term in
-    /// a square apparent area.
-    Greenwood,
-}
-
-impl Interaction {
-    /// Both choices.
-    pub const ALL: [Interaction; 2] = [Interaction::None, Interaction::Greenwood];
-
-    /// `"none"` or `"greenwood"` (the scene's `interaction`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Interaction::None => "none",
-            Interaction::Greenwood => "greenwood",
-        }
-    }
-}
-
-impl crate::named::Named for Interaction {
-    const ALL: &'static [Self] = &Interaction::ALL;
-    const WHAT: &'static str = "interaction";
-    fn name(self) -> &'static str {
-        Interaction::name(self)
-    }
-}
-crate::serde_by_name!(Interaction);
-
-/// Sums over the spots of one state.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct SpotSums {
-    /// Number of spots (expected, for a statistical surface).
-    pub contacts: f64,
-    /// `sum G_i` (S): the parallel conductance.
-    pub conductance: f64,
-    /// `sum G_i^2` (S^2), for the interaction weights.
-    pub conductance_sq: f64,
-}
-
-/// Greenwood's mean-field interaction resistance (Ohm) of spots whose
-/// centres are uniform in a square of side `side` (m):
-/// `(rho_eff c_sq/(pi L)) (1 - sum G^2/(sum G)^2)`; 0 without conductance.
-pub fn greenwood_mean_field(mutual_resistivity: f64, side: f64, sums: &SpotSums) -> f64 {
-    if !(sums.conductance > 0.0) {
-        return 0.0;
-    }
-    let w2 = sums.conductance_sq / (sums.conductance * sums.conductance);
-    mutual_resistivity * C_SQ / (PI * side) * (1.0 - w2).max(0.0)
-}
-
-/// Resistance of a contact and its parts.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ContactResistance {
-    /// Total resistance (Ohm): parallel plus interaction; `inf` without
-    /// contact.
-    pub resistance: f64,
-    /// Independent parallel spots `1/sum G_i` (Ohm).
-    pub parallel: f64,
-    /// Greenwood's interaction term (Ohm), when asked for and computed.
-    pub interaction: Option<f64>,
-    /// Whether the interaction was asked for but left out because fewer than
-    /// 2 contacts are expected (the caller should warn).
-    pub interaction_skipped: bool,
-    /// Number of contact spots (expected).
-    pub contacts: f64,
-}
-
-impl ContactResistance {
-    /// Combines parallel sums with the interaction choice; the Greenwood
-    /// term needs at least 2 (expected) contacts.
-    pub fn from_sums(
-        sums: &SpotSums,
-        spot: &SpotResistance,
-        interaction: Interaction,
-        side: f64,
-    ) -> Self {
-        let parallel = 1.0 / sums.conductance;
-        let (term, skipped) = match interaction {
-            Interaction::None => (None, false),
-            Interaction::Greenwood if sums.contacts >= 2.0 => (
-                Some(greenwood_mean_field(spot.mutual_resistivity(), side, sums)),
-                false,
-            ),
-            Interaction::Greenwood => (None, true),
-        };
-        ContactResistance {
-            resistance: parallel + term.unwrap_or(0.0),
-            parallel,
-            interaction: term,
-            interaction_skipped: skipped,
-            contacts: sums.contacts,
-        }
-    }
-}
 
 /// One state of a Hertz-summit GW contact with its resistance (the
 /// `states` rows of the JSON contract).
@@ -289,7 +174,7 @@ impl GwSpots {
 
     /// `[int g phi, int g^2 phi]` over `s > h` with `g = f(s - h)`: exact
     /// average over a finite sample, otherwise quadrature in `u = sqrt(s - h)`.
-    fn integrate<F: Fn(f64) -> f64>(&self, h: f64, f: F) -> [f64; 2] {
+    pub fn integrate<F: Fn(f64) -> f64>(&self, h: f64, f: F) -> [f64; 2] {
         if let Some(pts) = self.dist.sample_points() {
             let first = pts.partition_point(|&s| s <= h);
             let (mut a, mut b) = (0.0, 0.0);
@@ -359,50 +244,3 @@ impl GwSpots {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::heights::Gaussian;
-
-    fn surface() -> GwSpots {
-        GwSpots::new(1e4, 1e-6, 1e-8, 1e-8, Arc::new(Gaussian::new())).unwrap()
-    }
-
-    #[test]
-    fn c_sq_is_the_closed_form() {
-        let s2 = 2f64.sqrt();
-        let c = 4.0 * (1.0 + s2).ln() - 4.0 / 3.0 * (s2 - 1.0);
-        assert!((c - C_SQ).abs() < 1e-13);
-    }
-
-    #[test]
-    fn closed_forms_match_quadrature() {
-        let gw = surface();
-        let rho = 2.44e-8;
-        let maxwell = SpotResistance::same_metal(Spreading::Maxwell, rho, None).unwrap();
-        let sharvin = SpotResistance::same_metal(Spreading::Sharvin, rho, Some(3.46e-8)).unwrap();
-        for spot in [maxwell, sharvin] {
-            for h in [-1.0, 0.0, 1.5, 4.0] {
-                let closed = gw.hertz_sums(&spot, h);
-                let [g, g2] = gw.integrate(h, |t| spot.spot_conductance((1e-6 * 1e-8 * t).sqrt()));
-                let quad = (1e4 * g, 1e4 * g2);
-                assert!((closed.conductance / quad.0 - 1.0).abs() < 1e-10, "{h}");
-                assert!((closed.conductance_sq / quad.1 - 1.0).abs() < 1e-10, "{h}");
-            }
-        }
-    }
-
-    #[test]
-    fn interaction_is_skipped_below_two_contacts() {
-        let gw = surface();
-        let spot = SpotResistance::same_metal(Spreading::Maxwell, 2.44e-8, None).unwrap();
-        let far = gw.hertz_resistance(&spot, Interaction::Greenwood, 4.5);
-        assert!(far.contacts < 2.0);
-        assert!(far.interaction_skipped && far.interaction.is_none());
-        assert_eq!(far.resistance, far.parallel);
-        let near = gw.hertz_resistance(&spot, Interaction::Greenwood, 1.0);
-        assert!(!near.interaction_skipped);
-        assert!(near.interaction.unwrap() > 0.0);
-        assert!(near.resistance > near.parallel);
-    }
-}
