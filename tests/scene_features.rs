@@ -6,11 +6,11 @@
 mod common;
 
 use asperity::electrical::{Interaction, SpotResistance, Spreading};
-use common::gw_spots::GwSpots;
 use asperity::heights::Gaussian;
 use asperity::law::{Branch, Jkr};
 use asperity::named::Named;
 use asperity::study::{Plan, PlanMode, Scene, Summary};
+use common::gw_spots::GwSpots;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -29,8 +29,8 @@
 //! pulls off).
 
 use super::profile::Profile;
+use super::Instability;
 use crate::error::{positive, Allowed, Error, Result};
-use crate::law::Instability;
 use crate::numeric::roots::brent;
 use std::f64::consts::PI;
 

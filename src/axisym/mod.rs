@@ -23,6 +23,17 @@ pub mod sphere_exact;
 pub mod tabulated;
 
 pub use dmt::AxisymDmt;
+
+/// A point where an axisymmetric adhesive contact snaps or is pulled off.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Instability {
+    /// Load at the instability (N), on the attached side.
+    pub load: f64,
+    /// Interference at the instability (m).
+    pub interference: f64,
+    /// Contact radius on the attached side (m).
+    pub radius: f64,
+}
 pub use jkr::AxisymJkr;
 pub use md::{AxisymMd, MdPoint};
 pub use profile::{Profile, ProfileKind, ProfileParams};

@@ -239,10 +239,7 @@ impl TabulatedProfile {
 /// in `t = (r - r0)/h`, `f' = p0 + p1 t + p2 t^2` with `p0 = d0`,
 /// `p1 = (6 (y1 - y0)/h - 4 d0 - 2 d1)`, `p2 = (6 (y0 - y1)/h + 3 d0 + 3 d1)`.
 fn slope_polynomial(r0: f64, h: f64, y0: f64, y1: f64, d0: f64, d1: f64) -> [f64; 3] {
-    let chord = (y1 - y0) / h;
-    let p0 = d0;
-    let p1 = 6.0 * chord - 4.0 * d0 - 2.0 * d1;
-    let p2 = -6.0 * chord + 3.0 * d0 + 3.0 * d1;
+    let [p0, p1, p2] = crate::numeric::pchip::hermite_derivative(h, y0, y1, d0, d1);
     // t = alpha + beta r
     let beta = 1.0 / h;
     let alpha = -r0 / h;

@@ -21,12 +21,11 @@ pub const LORENZ: f64 = PI * PI * K_B * K_B / (3.0 * E_CHARGE * E_CHARGE);
 /// Default bulk temperature `T0` (K): 20 °C.
 pub const DEFAULT_BULK_TEMPERATURE: f64 = 293.15;
 
-/// Softening temperature of gold (K), 100 °C (Holm 1967, table of
-/// softening and melting voltages).
-pub const GOLD_SOFTENING_TEMPERATURE: f64 = 373.15;
+/// Softening temperature of gold (K), [`crate::material::gold`].
+pub const GOLD_SOFTENING_TEMPERATURE: f64 = crate::material::gold::SOFTENING_TEMPERATURE;
 
-/// Melting temperature of gold (K), 1337.33 K (ITS-90 fixed point).
-pub const GOLD_MELTING_TEMPERATURE: f64 = 1337.33;
+/// Melting temperature of gold (K), [`crate::material::gold`].
+pub const GOLD_MELTING_TEMPERATURE: f64 = crate::material::gold::MELTING_TEMPERATURE;
 
 /// Holm's phi-theta relation for a bulk temperature `T0`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -18,7 +18,6 @@ use std::f64::consts::PI;
 /// `tests/data/electrical.py`).
 pub const C_SQ: f64 = 2.973_209_598_247_378_5;
 
-
 /// Whether Greenwood's interaction term is added to the parallel spots.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Interaction {

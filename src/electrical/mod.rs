@@ -23,16 +23,16 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
-pub mod interaction;
 pub mod heating;
+pub mod interaction;
 pub mod observable;
 pub mod sample;
 pub mod spot;
 pub mod spots;
 pub mod switch;
 
-pub use interaction::{greenwood_mean_field, ContactResistance, Interaction, SpotSums, C_SQ};
 pub use heating::Heating;
+pub use interaction::{greenwood_mean_field, ContactResistance, Interaction, SpotSums, C_SQ};
 pub use observable::{ContactHeating, ResistanceObservables, SpotConductance};
 pub use sample::{population_spots, SampleResistance, EXACT_MAX_SPOTS};
 pub use spot::{Conductor, SpotResistance, Spreading};

@@ -6,8 +6,8 @@
 //! resistance needs `sum G_i`, Greenwood's interaction weights also
 //! `sum G_i^2` ([`SpotSums`]); the count of spots is the `count` total.
 
-use super::interaction::{ContactResistance, Interaction, SpotSums};
 use super::heating::Heating;
+use super::interaction::{ContactResistance, Interaction, SpotSums};
 use super::spot::SpotResistance;
 use crate::error::Result;
 use crate::law::ContactState;

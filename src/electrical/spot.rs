@@ -97,8 +97,8 @@ impl Conductor {
     /// 293 K), electron mean free path `l = 3.46e-8 m` (Gall 2016, J. Appl.
     /// Phys. 119, 085101).
     pub const GOLD: Conductor = Conductor {
-        resistivity: 2.44e-8,
-        mean_free_path: Some(3.46e-8),
+        resistivity: crate::material::gold::RESISTIVITY,
+        mean_free_path: Some(crate::material::gold::MEAN_FREE_PATH),
     };
 
     /// Resistivities a conductor may have (Ohm m): metals are ~1e-8,

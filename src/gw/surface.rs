@@ -39,11 +39,12 @@ impl RoughSurface {
     /// The default gold microswitch surface: `eta = 1e12 m^-2`, `R = 1 um`,
     /// `sigma = 5 nm`, nominal area 100 um x 100 um.
     pub fn gold_microswitch() -> Self {
+        use crate::material::gold;
         RoughSurface {
-            density: 1e12,
-            radius: 1e-6,
-            sigma: 5e-9,
-            nominal_area: 1e-8,
+            density: gold::SUMMIT_DENSITY,
+            radius: gold::SUMMIT_RADIUS,
+            sigma: gold::SUMMIT_SIGMA,
+            nominal_area: gold::NOMINAL_AREA,
         }
     }
 

@@ -37,24 +37,10 @@ const MIN_WIDTH: f64 = 1e-12;
 /// [`load_near_batch`](AsperityLaw::load_near_batch).
 const LANES: usize = 8;
 
-/// `clenshaw(c_l, x[l])` for every lane `l`, coefficient `j` of lane `l`
-/// given by `c(l, j)`, with the recurrences interleaved (independent
-/// chains in flight instead of one latency-bound chain; in SIMD lanes
-/// inside a `pulp` operation): the same operations per lane as
-/// [`clenshaw`], so the same bits.
+/// [`clenshaw_lanes`] at this module's degree.
 #[inline(always)]
 fn clenshaw_lanes<const L: usize>(x: &[f64; L], c: impl Fn(usize, usize) -> f64) -> [f64; L] {
-    let mut b1 = [0.0; L];
-    let mut b2 = [0.0; L];
-    let x2 = x.map(|t| 2.0 * t);
-    for j in (1..=DEG).rev() {
-        for l in 0..L {
-            let b = x2[l] * b1[l] - b2[l] + c(l, j);
-            b2[l] = b1[l];
-            b1[l] = b;
-        }
-    }
-    std::array::from_fn(|l| x[l] * b1[l] - b2[l] + c(l, 0))
+    crate::numeric::chebyshev::clenshaw_lanes::<DEG, L>(x, c)
 }
 
 #[derive(Debug, Clone, Default)]

@@ -481,12 +481,7 @@ impl MaugisCurve {
             && s_lo.abs() < 3.0 * dx.abs()
             && s_hi.abs() < 3.0 * dx.abs()
         {
-            let u2 = u * u;
-            let u3 = u2 * u;
-            (2.0 * u3 - 3.0 * u2 + 1.0) * x_lo
-                + (u3 - 2.0 * u2 + u) * s_lo
-                + (-2.0 * u3 + 3.0 * u2) * x_hi
-                + (u3 - u2) * s_hi
+            crate::numeric::pchip::hermite(u, x_lo, x_hi, s_lo, s_hi)
         } else {
             x_lo + u * dx
         };

@@ -52,6 +52,7 @@ pub use scaling::RadiusScaling;
 pub use shaped::Shaped;
 pub use tabulated::Tabulated;
 
+use crate::material::MaugisScales;
 use std::f64::consts::PI;
 use std::fmt;
 
@@ -103,15 +104,32 @@ impl ContactState {
     }
 }
 
-/// A point where the asperity snaps or is pulled off.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Instability {
-    /// Load at the instability (N), on the attached side.
-    pub load: f64,
-    /// Interference at the instability (m).
-    pub interference: f64,
-    /// Contact radius on the attached side (m).
-    pub radius: f64,
+/// A point where the asperity snaps or is pulled off (defined with the
+/// axisymmetric contacts the laws are built on).
+pub use crate::axisym::Instability;
+
+/// An [`Instability`] in Maugis units ([`MaugisScales`]): load
+/// `Pbar = P/(pi w R)`, interference `Dbar`, contact radius `A`. The form
+/// tables and the sphere solver keep critical points in.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct InstabilityBar {
+    /// `Pbar`.
+    pub load_bar: f64,
+    /// `Dbar`.
+    pub interference_bar: f64,
+    /// `A`.
+    pub radius_bar: f64,
+}
+
+impl InstabilityBar {
+    /// The instability in SI units for `scales` (N, m, m).
+    pub fn to_si(&self, scales: &MaugisScales) -> Instability {
+        Instability {
+            load: self.load_bar * scales.load,
+            interference: self.interference_bar * scales.interference,
+            radius: self.radius_bar * scales.radius,
+        }
+    }
 }
 
 /// A single-asperity contact law. Object-safe, `Send + Sync`.

@@ -43,7 +43,7 @@
 //! Hertz continuation `Pbar = P_last + Dbar^(3/2) - Dbar_last^(3/2)`,
 //! `A^2 = A_last^2 + Dbar - Dbar_last` (adhesion changes slowly there).
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar};
 use crate::error::{Error, Result};
 use crate::material::MaugisScales;
 use crate::numeric::pchip::Pchip;
@@ -61,17 +61,6 @@ pub struct BranchTable {
     pub radius_bar: Vec<f64>,
 }
 
-/// A critical point `(Pbar, Dbar, A)`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct TablePoint {
-    /// `Pbar`.
-    pub load_bar: f64,
-    /// `Dbar`.
-    pub interference_bar: f64,
-    /// `A`.
-    pub radius_bar: f64,
-}
-
 /// A dimensionless two-branch law table.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CurveTable {
@@ -86,9 +75,9 @@ pub struct CurveTable {
     /// Jump-out interference `Dbar`; `None` without hysteresis.
     pub detach_bar: Option<f64>,
     /// Load-controlled pull-off (minimum load).
-    pub pull_off: TablePoint,
+    pub pull_off: InstabilityBar,
     /// Displacement-controlled jump-out, if any.
-    pub jump_out: Option<TablePoint>,
+    pub jump_out: Option<InstabilityBar>,
     /// Zero-load contact radius `A`, if any.
     pub zero_load_radius_bar: Option<f64>,
     /// `s = mu (9 pi^2/16)^(1/3)`: rigid gap `H = 1 - s Dbar` for the far field.
@@ -275,11 +264,7 @@ impl AsperityLaw for Tabulated {
             Control::Load => Some(self.table.pull_off),
             Control::Displacement => self.table.jump_out,
         }?;
-        Some(Instability {
-            load: p.load_bar * self.scales.load,
-            interference: p.interference_bar * self.scales.interference,
-            radius: p.radius_bar * self.scales.radius,
-        })
+        Some(p.to_si(&self.scales))
     }
 
     fn zero_load_radius(&self) -> Option<f64> {
@@ -318,7 +303,7 @@ mod tests {
             attached,
             attach_bar: Some(0.0),
             detach_bar: Some(crate::law::jkr::JUMP_OUT_INTERFERENCE),
-            pull_off: TablePoint {
+            pull_off: InstabilityBar {
                 load_bar: -1.5,
                 interference_bar: -0.4,
                 radius_bar: 1.14,

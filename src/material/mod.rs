@@ -8,6 +8,7 @@
 //! - Tabor parameter `mu = (R w^2 / (E*^2 z0^3))^(1/3)`,
 //! - Maugis parameter `lambda = 2 sigma0 (R / (pi w K^2))^(1/3)`.
 
+pub mod gold;
 pub mod plastic;
 
 use crate::error::{non_negative, positive, Allowed, Result};
@@ -45,11 +46,12 @@ impl Material {
         })
     }
 
-    /// Gold: `E = 79 GPa`, `nu = 0.42` (the default microswitch material).
+    /// Gold: `E = 79 GPa`, `nu = 0.42` (the default microswitch material,
+    /// [`gold`]).
     pub fn gold() -> Self {
         Material {
-            youngs_modulus: 79e9,
-            poisson_ratio: 0.42,
+            youngs_modulus: gold::YOUNGS_MODULUS,
+            poisson_ratio: gold::POISSON_RATIO,
         }
     }
 
@@ -221,11 +223,11 @@ impl AsperityContact {
     pub fn gold_microswitch() -> Self {
         let g = Material::gold();
         AsperityContact {
-            radius: 1e-6,
+            radius: gold::SUMMIT_RADIUS,
             contact_modulus: contact_modulus(&g, &g),
             adhesion: Adhesion {
-                work: 0.5,
-                range: 0.3e-9,
+                work: gold::WORK_OF_ADHESION,
+                range: gold::FORCE_RANGE,
             },
         }
     }

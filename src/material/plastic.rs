@@ -87,10 +87,11 @@ impl Plasticity {
     /// `nu = 0.42`. With the default gold surface (`E* = 47.96 GPa`,
     /// `sigma = 5 nm`, `R = 1 um`) this gives `psi = 3.03`.
     pub fn gold() -> Self {
+        use super::gold;
         Plasticity {
-            yield_strength: 0.4e9,
-            hardness: HARDNESS_PER_YIELD * 0.4e9,
-            poisson_ratio: 0.42,
+            yield_strength: gold::YIELD_STRENGTH,
+            hardness: HARDNESS_PER_YIELD * gold::YIELD_STRENGTH,
+            poisson_ratio: gold::POISSON_RATIO,
         }
     }
 

@@ -14,6 +14,29 @@ pub fn clenshaw<const N: usize>(c: &[f64; N], x: f64) -> f64 {
     x * b1 - b2 + c[0]
 }
 
+/// [`clenshaw`] of degree `D` in `L` lanes: `clenshaw(c_l, x[l])` for
+/// every lane `l`, coefficient `j` of lane `l` given by `c(l, j)`, with
+/// the recurrences interleaved (independent chains in flight instead of
+/// one latency-bound chain; in SIMD lanes inside a `pulp` operation): the
+/// same operations per lane as [`clenshaw`], so the same bits.
+#[inline(always)]
+pub fn clenshaw_lanes<const D: usize, const L: usize>(
+    x: &[f64; L],
+    c: impl Fn(usize, usize) -> f64,
+) -> [f64; L] {
+    let mut b1 = [0.0; L];
+    let mut b2 = [0.0; L];
+    let x2 = x.map(|t| 2.0 * t);
+    for j in (1..=D).rev() {
+        for l in 0..L {
+            let b = x2[l] * b1[l] - b2[l] + c(l, j);
+            b2[l] = b1[l];
+            b1[l] = b;
+        }
+    }
+    std::array::from_fn(|l| x[l] * b1[l] - b2[l] + c(l, 0))
+}
+
 /// Evaluates a table of unit-width pieces starting at `lo` at `h`
 /// (`lo <= h < lo + pieces`).
 #[inline]

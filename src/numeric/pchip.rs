@@ -59,13 +59,38 @@ impl Pchip {
         let s = (t - self.x[k]) / h;
         let (y0, y1) = (self.y[k], self.y[k + 1]);
         let (d0, d1) = (self.d[k] * h, self.d[k + 1] * h);
-        let s2 = s * s;
-        let s3 = s2 * s;
-        (2.0 * s3 - 3.0 * s2 + 1.0) * y0
-            + (s3 - 2.0 * s2 + s) * d0
-            + (-2.0 * s3 + 3.0 * s2) * y1
-            + (s3 - s2) * d1
+        hermite(s, y0, y1, d0, d1)
     }
+}
+
+/// The cubic Hermite interpolant on the unit interval: value at `s` in
+/// `[0, 1]` of the cubic with end values `y0`, `y1` and end slopes `d0`,
+/// `d1` (per unit `s`), `h00 y0 + h10 d0 + h01 y1 + h11 d1` with
+/// `h00 = 2s^3 - 3s^2 + 1`, `h10 = s^3 - 2s^2 + s`, `h01 = -2s^3 + 3s^2`,
+/// `h11 = s^3 - s^2`.
+#[inline]
+pub fn hermite(s: f64, y0: f64, y1: f64, d0: f64, d1: f64) -> f64 {
+    let s2 = s * s;
+    let s3 = s2 * s;
+    (2.0 * s3 - 3.0 * s2 + 1.0) * y0
+        + (s3 - 2.0 * s2 + s) * d0
+        + (-2.0 * s3 + 3.0 * s2) * y1
+        + (s3 - s2) * d1
+}
+
+/// The derivative of the cubic Hermite interpolant on a piece of width `h`
+/// with end values `y0`, `y1` and end slopes `d0`, `d1` (per unit of the
+/// abscissa), as `p0 + p1 t + p2 t^2` in `t = (x - x0)/h`: `p0 = d0`,
+/// `p1 = 6 c - 4 d0 - 2 d1`, `p2 = -6 c + 3 d0 + 3 d1` with the chord
+/// `c = (y1 - y0)/h`.
+#[inline]
+pub fn hermite_derivative(h: f64, y0: f64, y1: f64, d0: f64, d1: f64) -> [f64; 3] {
+    let chord = (y1 - y0) / h;
+    [
+        d0,
+        6.0 * chord - 4.0 * d0 - 2.0 * d1,
+        -6.0 * chord + 3.0 * d0 + 3.0 * d1,
+    ]
 }
 
 /// PCHIP node slopes from the interval widths `h` and secants `del` (at

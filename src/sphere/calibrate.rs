@@ -14,7 +14,8 @@
 
 use super::{Shape, SphereFacts, SpherePoint, SphereProblem, SOLVER_VERSION};
 use crate::error::{Error, Result};
-use crate::law::tabulated::{BranchTable, CurveTable, TablePoint, Tabulated};
+use crate::law::tabulated::{BranchTable, CurveTable, Tabulated};
+use crate::law::InstabilityBar;
 use crate::material::LAMBDA_PER_TABOR;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
@@ -76,12 +77,8 @@ fn branch(points: &[SpherePoint]) -> BranchTable {
     b
 }
 
-fn table_point(c: &super::Critical) -> TablePoint {
-    TablePoint {
-        load_bar: c.load_bar,
-        interference_bar: c.interference_bar,
-        radius_bar: c.radius_bar,
-    }
+fn table_point(c: &super::Critical) -> InstabilityBar {
+    c.bar()
 }
 
 fn as_point(c: &super::Critical) -> SpherePoint {

@@ -223,6 +223,17 @@ pub struct Critical {
     pub arc: f64,
 }
 
+impl Critical {
+    /// The point in Maugis units, without the solver's own coordinates.
+    pub fn bar(&self) -> crate::law::InstabilityBar {
+        crate::law::InstabilityBar {
+            load_bar: self.load_bar,
+            interference_bar: self.interference_bar,
+            radius_bar: self.radius_bar,
+        }
+    }
+}
+
 /// The derived facts of one solver curve.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SphereFacts {

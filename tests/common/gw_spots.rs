@@ -243,4 +243,3 @@ impl GwSpots {
         q.value
     }
 }
-

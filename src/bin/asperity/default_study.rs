@@ -4,6 +4,7 @@
 //! surface, with its outputs written to `./asperity-out/`.
 
 use asperity::law::LawKind;
+use asperity::material::gold;
 use asperity::prelude::*;
 use asperity::study::{output::si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_SCENE};
 use std::path::Path;
@@ -28,9 +29,11 @@ fn laws_table() -> crate::CliResult {
     println!();
     println!("One summit:");
     println!(
-        "  R = {:.3e} m, E* = {:.4e} Pa (E = 79 GPa, nu = 0.42 both sides), w = {} J/m^2, z0 = {:.2e} m",
+        "  R = {:.3e} m, E* = {:.4e} Pa (E = {} GPa, nu = {} both sides), w = {} J/m^2, z0 = {:.2e} m",
         c.radius,
         c.contact_modulus,
+        gold::YOUNGS_MODULUS / 1e9,
+        gold::POISSON_RATIO,
         c.adhesion.work(),
         c.adhesion.range()
     );

@@ -227,13 +227,14 @@ fn shaped(
 fn shaped_error(scene: &Scene, e: Error) -> Error {
     let l = &scene.law;
     let m = &scene.materials;
+    use crate::material::gold;
     let candidates = [
         ("law.tan_angle", l.tan_angle, 0.3),
         ("law.exponent", l.exponent, 2.0),
-        ("law.radius", l.radius, 1e-6),
-        ("adhesion.w", Some(scene.adhesion.w), 0.5),
-        ("materials.e1", Some(m.e1), 8e10),
-        ("materials.e2", Some(m.e2), 8e10),
+        ("law.radius", l.radius, gold::SUMMIT_RADIUS),
+        ("adhesion.w", Some(scene.adhesion.w), gold::WORK_OF_ADHESION),
+        ("materials.e1", Some(m.e1), gold::YOUNGS_MODULUS),
+        ("materials.e2", Some(m.e2), gold::YOUNGS_MODULUS),
     ];
     let pick = candidates
         .iter()

@@ -4,7 +4,7 @@ use super::schema::{Scene, SurfaceSpec};
 use crate::error::{Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::material::{contact_modulus, Adhesion, AsperityContact, Material};
+use crate::material::{contact_modulus, gold, Adhesion, AsperityContact, Material};
 use std::sync::Arc;
 
 /// The asperity contact: summit radius, contact modulus of the two
@@ -67,14 +67,14 @@ fn field(e: Error, modulus: &str, poisson: &str) -> Error {
 /// Typical values of the numeric scene inputs (a gold microswitch), the
 /// reference against which [`map_derived`] finds the input furthest out.
 const TYPICAL: [(&str, f64); 8] = [
-    ("materials.e1", 8e10),
-    ("materials.e2", 8e10),
-    ("surface.density", 1e12),
-    ("surface.radius", 1e-6),
-    ("surface.sigma", 5e-9),
-    ("surface.nominal_area", 1e-8),
-    ("adhesion.w", 0.5),
-    ("adhesion.z0", 3e-10),
+    ("materials.e1", gold::YOUNGS_MODULUS),
+    ("materials.e2", gold::YOUNGS_MODULUS),
+    ("surface.density", gold::SUMMIT_DENSITY),
+    ("surface.radius", gold::SUMMIT_RADIUS),
+    ("surface.sigma", gold::SUMMIT_SIGMA),
+    ("surface.nominal_area", gold::NOMINAL_AREA),
+    ("adhesion.w", gold::WORK_OF_ADHESION),
+    ("adhesion.z0", gold::FORCE_RANGE),
 ];
 
 fn input(scene: &Scene, name: &str) -> f64 {
