@@ -1,4 +1,4 @@
-//! Speed targets of issue 15 (criterion):
+//! Speed targets (criterion):
 //! `cargo bench --bench electrical -- --warm-up-time 1 --measurement-time 3`.
 //! - a 1000-point resistance-force curve of Hertz summits over Gaussian
 //!   heights with Wexler spots and Greenwood's mean-field term (<= 50 ms);

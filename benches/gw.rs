@@ -1,4 +1,4 @@
-//! Greenwood–Williamson curves and the Maugis–Dugdale pull-off (issue 12),
+//! Greenwood–Williamson curves and the Maugis–Dugdale pull-off,
 //! criterion: `cargo bench --bench gw -- --warm-up-time 1 --measurement-time 3`.
 //!
 //! - `gw_md_curve/1000+1000_rtol_1e-6`: the planner's Maugis–Dugdale curve

@@ -1,4 +1,4 @@
-//! Elastic-plastic asperities (issue 14), criterion:
+//! Elastic-plastic asperities, criterion:
 //! `cargo bench --bench plastic -- --warm-up-time 1 --measurement-time 3`.
 //!
 //! - `plastic_gw_curve/*`: a 1000-point GW curve (approach and retraction

@@ -1,4 +1,4 @@
-//! Wavy punch speed targets (issue 17): a 10,000-point exact curve (target <= 10 ms) and a
+//! Wavy punch speed targets: a 10,000-point exact curve (target <= 10 ms) and a
 //! fit (target <= 1 s); also one Struve pair, an evolution with its energy loss, and the
 //! gelatin fit on 800 points.
 //! `cargo bench --bench punch -- --warm-up-time 1 --measurement-time 3`.

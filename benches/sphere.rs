@@ -1,6 +1,6 @@
 //! Full LJ sphere solver timings (criterion, 10 samples):
 //! `cargo bench --bench sphere -- --warm-up-time 1 --measurement-time 3`.
-//! Issue 12 goal: `pull_off_mu10` (facts: pull-off, jump-out, jump-in,
+//! `pull_off_mu10` (facts: pull-off, jump-out, jump-in,
 //! zero-load radius at the default resolution) in <= 0.5 s; `pull_off_mu30`
 //! and `pull_off_mu100` the same facts at larger mu (solver version 5: about
 //! 0.6 s and 1.2 s, docs/performance.md).

@@ -1,5 +1,5 @@
-//! Characterising a 4096 x 4096 height map (issue 13: <= 2 s on this
-//! 2-core machine): mean plane, moments, summits, statistics; and reading
+//! Characterising a 4096 x 4096 height map (target <= 2 s on this 2-core
+//! machine): mean plane, moments, summits, statistics; and reading
 //! it from `.npy` bytes.
 //!
 //! `cargo bench --bench surface -- --warm-up-time 1 --measurement-time 3`

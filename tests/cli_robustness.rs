@@ -165,3 +165,42 @@ fn a_run_reports_progress_on_a_non_terminal_stderr() {
     assert!(!err.contains("run: "), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// One exit-code rule for outputs that cannot be written (a file stands
+/// where the output directory should be): not the input's fault, exit 1,
+/// naming the path, for every command that writes files.
+#[test]
+fn unwritable_outputs_exit_1_everywhere() {
+    let dir = tmp("unwritable");
+    let blocker = dir.join("blocker");
+    std::fs::write(&blocker, "a file, not a directory").unwrap();
+    let out = blocker.join("sub");
+    let out = out.to_str().unwrap();
+    let map = format!(
+        "{}/examples/data/measured-topography.npy",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let curve = format!("{out}/curve.csv");
+    let scene = scene_path("hertz-exponential.toml");
+    let cases: Vec<Vec<&str>> = vec![
+        vec!["run", &scene[..], "--out", out],
+        vec!["map", "--tolerance", "0.05", "--out", out],
+        vec!["sphere", "--mu", "1", "--curve", &curve[..]],
+        vec![
+            "surface",
+            &map[..],
+            "--pixel-size",
+            "1e-7",
+            "--scale",
+            "1e-9",
+            "--out",
+            out,
+        ],
+    ];
+    for args in cases {
+        let (code, _, err) = run(&args, &dir);
+        assert_eq!(code, 1, "{args:?}: {err}");
+        assert!(err.contains("blocker"), "{args:?}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

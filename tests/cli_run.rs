@@ -178,7 +178,7 @@ fn map_writes_svg_and_csv_and_checks_tolerance() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// Issue 11: scenes outside GW's validity range or with impossible results
+/// scenes outside GW's validity range or with impossible results
 /// are refused naming the field (exit 2), or run with warnings in the text
 /// summary, on stderr and in summary.json `"warnings"`.
 #[test]
@@ -267,7 +267,7 @@ fn scenes_outside_the_model_are_refused_or_warned() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// Issue 11: Monte Carlo outputs say what each number is; no standard
+/// Monte Carlo outputs say what each number is; no standard
 /// errors where fewer than 20 summits are in contact; no NaN cells.
 #[test]
 fn montecarlo_outputs_are_honest() {

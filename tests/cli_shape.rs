@@ -1,4 +1,4 @@
-//! `asperity shape`: the JSON contract (keys exactly as issue 16 writes
+//! `asperity shape`: the JSON contract (keys exactly as the contract writes
 //! them), closed forms through the binary, warnings and exit codes.
 use std::f64::consts::PI;
 use std::process::Command;

@@ -91,7 +91,7 @@ fn bad_input_exits_2_naming_the_argument() {
     }
 }
 
-/// Issue 11: absurd or too-coarse resolutions exit 2 naming `--resolution`
+/// absurd or too-coarse resolutions exit 2 naming `--resolution`
 /// at once (1e6 once tried to allocate 16 PB); expensive ones (mu = 10 at
 /// resolution 4 once ran for minutes; since solver version 4 it takes ~20 s,
 /// resolution 16 would take ~30 min) are refused with the estimate and the

@@ -1,4 +1,4 @@
-//! `asperity surface`: the JSON contract (keys exactly as issue 13 writes
+//! `asperity surface`: the JSON contract (keys exactly as the contract writes
 //! them) against the numpy reference, flags, outputs, and bad files (exit
 //! 2, one stderr line naming the file and the problem).
 

@@ -1,4 +1,4 @@
-//! Issue 11 item 2: the quadrature path keeps relative accuracy in the far
+//! the quadrature path keeps relative accuracy in the far
 //! Gaussian tail (it used to drop summits whose tail probability is below
 //! 1e-300: 62 % wrong at h = 37, exactly 0 beyond). Hertz asperities on
 //! Gaussian heights integrated by quadrature against the mpmath `F_n` of

@@ -1,4 +1,4 @@
-//! Issue 12 (GW): the fast path of the Maugis–Dugdale curve (Chebyshev
+//! the fast path of the Maugis–Dugdale curve (Chebyshev
 //! table to 1e-7, load-only integrand evaluated a panel at a time,
 //! `AsperityLaw::load_near_batch`) meets its tolerance. The curve of
 //! `benches/gw.rs` (gold microswitch, lambda = 1, `6 sigma` to `0`, both

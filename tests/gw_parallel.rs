@@ -1,4 +1,4 @@
-//! Issue 12 (GW): the states of a curve are computed in parallel and the
+//! the states of a curve are computed in parallel and the
 //! tabulated law's panel search walks from the previous node
 //! (`AsperityLaw::state_near`); neither changes a single bit of the results.
 use asperity::gw::{Accuracy, GwModel, RoughSurface};

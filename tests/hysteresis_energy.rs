@@ -1,4 +1,4 @@
-//! Issue 11 item 1: the hysteresis energy follows the tolerance. JKR
+//! the hysteresis energy follows the tolerance. JKR
 //! asperities on Gaussian heights (Fuller & Tabor), against the mpmath
 //! reference of tests/data/hysteresis_energy.py (30 digits; the energy
 //! computed per asperity and then over heights, not over separation).

@@ -1,4 +1,4 @@
-//! Elastic-plastic asperities (issue 14) against the independent mpmath
+//! Elastic-plastic asperities against the independent mpmath
 //! evaluation in tests/data/plastic.py (40 digits; formulas from
 //! docs/physics.md, written independently of the Rust code):
 //! - each law's load and contact radius at 1e-12 relative, on both sides of

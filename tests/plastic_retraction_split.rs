@@ -1,4 +1,4 @@
-//! Issue 14: GW retraction over elastic-plastic summits splits its
+//! GW retraction over elastic-plastic summits splits its
 //! quadrature at the summit whose elastic unloading curve has just lost
 //! contact (`AsperityLaw::contact_loss_peaks`): the integrand's kink there
 //! (load `~ x^(3/2)`, radius `~ x^(1/2)`) no longer has to be found by

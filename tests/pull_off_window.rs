@@ -1,4 +1,4 @@
-//! Issue 11 item 7: the rough-surface pull-off is searched within the
+//! the rough-surface pull-off is searched within the
 //! loading program, not up to the interaction onset. The reference is the
 //! model's own retraction curve on a fine grid of the program (a load the
 //! flat never feels cannot be its pull-off).

@@ -1,4 +1,4 @@
-//! Scene fuzz test (issue 11): every field of every example scene is set to
+//! Scene fuzz test: every field of every example scene is set to
 //! 0, a negative value, NaN, inf, a huge and a tiny value, a value of the
 //! wrong type, removed, and duplicated. Each mutated scene is parsed, planned
 //! and run in-process (the library path of `asperity run`) on its own thread

@@ -1,4 +1,4 @@
-//! Issue 11: the sphere solver at its default resolution against converged
+//! the sphere solver at its default resolution against converged
 //! references (tests/data/sphere_converged.json: resolutions 4 and 8,
 //! Richardson-extrapolated; made by tests/data/sphere_converged.sh), and the
 //! refusal of meshes too coarse to resolve the contact edge or too large to

@@ -1,4 +1,4 @@
-//! Issue 12: the sphere solver up to mu = 100 (solver version 5) against
+//! the sphere solver up to mu = 100 (solver version 5) against
 //! converged references (tests/data/sphere_converged.json: resolutions 4 and
 //! 8, Richardson-extrapolated, made by tests/data/sphere_converged.sh) and
 //! against the JKR limit it approaches as mu grows: pull-off -1.5 (from

@@ -1,4 +1,4 @@
-//! Scenes from measurements (issue 13): `[surface] topography` keys, the
+//! Scenes from measurements: `[surface] topography` keys, the
 //! exact sum over the measured summits against an independent numpy direct
 //! sum (`tests/data/measured_summits.py`), and the moments model.
 

@@ -1,4 +1,4 @@
-//! Acceptance of issue 13 on synthetic isotropic Gaussian surfaces with a
+//! Acceptance on synthetic isotropic Gaussian surfaces with a
 //! known spectrum (`surface::synthetic`, Gaussian autocorrelation of length
 //! `l` pixels, `alpha = 3`): the measured summit statistics against Nayak's
 //! continuum predictions from the known moments, within the sampling error

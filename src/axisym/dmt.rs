@@ -7,7 +7,7 @@
 //! ```
 //!
 //! Valid only for the paraboloid (and what is locally one: the true sphere
-//! for `a << R`, the power law `n = 2`); Barthel (paper 001, section 5.3):
+//! for `a << R`, the power law `n = 2`); Barthel (2008, section 5.3):
 //! with a Dugdale stress `sigma0` of range `h0 = w/sigma0`, the force outside
 //! the contact is `pi sigma0 r_h^2` with `f(r_h) = h0`, which is
 //! `2 pi w R` for the paraboloid whatever the range, but grows without bound

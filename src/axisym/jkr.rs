@@ -1,5 +1,5 @@
-//! JKR (short-range) adhesion for any axisymmetric profile (Barthel, paper
-//! 001 of the seeds, eqs 5.6-5.7, with `calK = E*/2`):
+//! JKR (short-range) adhesion for any axisymmetric profile (Barthel 2008,
+//! eqs 5.6-5.7, with `calK = E*/2`):
 //!
 //! ```text
 //! delta(a) = delta_0(a) - sqrt(2 pi w a / E*)

@@ -1,5 +1,5 @@
 //! Maugis–Dugdale for any axisymmetric profile: Barthel's general contact
-//! solution (paper 001 of the seeds, eqs 3.1, 3.10, 4.8-4.13, 5.2) with a
+//! solution (Barthel 2008, eqs 3.1, 3.10, 4.8-4.13, 5.2) with a
 //! Dugdale cohesive zone, a constant tension `sigma0` on `a < r < c`, of
 //! range `h0 = w/sigma0`.
 //!

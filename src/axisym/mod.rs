@@ -1,5 +1,5 @@
 //! Adhesive contact of any axisymmetric profile against a flat (Barthel,
-//! paper 001 of the seeds): Sneddon's non-adhesive solution for the
+//! Barthel 2008): Sneddon's non-adhesive solution for the
 //! profile, then JKR (short-range) adhesion as a crack at the contact edge.
 //!
 //! - [`profile`]: the profiles (paraboloid, true sphere, cone, flat punch,

@@ -3,7 +3,7 @@
 //! non-adhesive (Sneddon) contact: the interference `delta_0(a)` and load
 //! `F_0(a)` at contact radius `a`.
 //!
-//! Sneddon (1965), in Barthel's form (paper 001 of the seeds, eqs 4.8, 4.14) with
+//! Sneddon (1965), in Barthel's form (Barthel 2008, eqs 4.8, 4.14) with
 //! `calK = E*/2`:
 //!
 //! ```text
@@ -22,7 +22,7 @@
 //! | power law | `A r^n` | `k_n A a^n` | `k_n A n a^(n+1)/(n+1)` |
 //!
 //! with `k_n = n sqrt(pi) Gamma(n/2) / (2 Gamma((n+1)/2))` (Steuermann;
-//! Greenwood, paper 000, appendix 2): `k_1 = pi/2`, `k_2 = 2`. A tabulated
+//! Greenwood 2009, appendix 2): `k_1 = pi/2`, `k_2 = 2`. A tabulated
 //! profile is interpolated by PCHIP and integrated by Gauss–Kronrod on the
 //! pieces between nodes (see [`super::tabulated`]).
 

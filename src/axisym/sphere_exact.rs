@@ -1,5 +1,5 @@
 //! The exact (true) sphere `f = R - sqrt(R^2 - r^2)` in JKR adhesion:
-//! Maugis (1995), *Langmuir* 11, 679; Greenwood (paper 000), appendix 2.
+//! Maugis (1995), *Langmuir* 11, 679; Greenwood (2009), appendix 2.
 //! With `x = a/R`:
 //!
 //! ```text
@@ -11,7 +11,7 @@
 //! gives them as standalone closed forms (the independent check of the
 //! general route) and the validity warning: linear elasticity and the
 //! small-strain boundary conditions fail once `a/R` exceeds about
-//! [`RATIO_WARNING`] (Greenwood, paper 000: "the Hertzian analysis ... fails
+//! [`RATIO_WARNING`] (Greenwood 2009: "the Hertzian analysis ... fails
 //! when the contact radius exceeds about 0.3 R"). As `w/(E* R) -> 0` the
 //! instabilities move to `a/R -> 0` and the sphere tends to the paraboloid
 //! (relative difference `O((w/(E* R))^(2/3))`).
@@ -19,7 +19,7 @@
 //! The Lin & Chen (2006) large-strain correction (neo-Hookean finite-element
 //! fit `P = (E* a^3/R) phi(a/R)`, `phi` an exponential of a quadratic in
 //! `a/R`) is not implemented: the fit's constants are lost in the seed's
-//! text extraction (paper 000, appendix 3) and the original paper was not
+//! text extraction (Greenwood 2009, appendix 3) and the original paper was not
 //! reachable; see docs/physics.md.
 
 use super::profile::Profile;

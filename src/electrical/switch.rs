@@ -14,7 +14,7 @@ pub struct Switch {
     travel: f64,
 }
 
-/// The stiction verdict (the issue's `"stiction"` JSON object).
+/// The stiction verdict (the `"stiction"` JSON object).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Stiction {
     /// Pull-off of the rough contact (N), negative (tensile).

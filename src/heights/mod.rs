@@ -9,7 +9,7 @@
 //! The central quantity of Greenwood–Williamson theory is
 //! `F_n(h) = int_h^inf (s - h)^n phi(s) ds` (no prefactor), for real `n >= 0`.
 //!
-//! Distributions (one file each; [`by_name`] builds them from scene names):
+//! Distributions (one file each; [`DistributionKind::build`] builds them from their names):
 //! [`Gaussian`] (closed `F_n` for `n = 0, 1/2, ..., 5/2`), [`Exponential`]
 //! (GW's `e^-s`; closed for integer and half-integer `n`), [`Weibull`]
 //! (unit standard deviation, origin at the lowest summit),

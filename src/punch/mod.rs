@@ -1,5 +1,5 @@
 //! Roughness-induced adhesion hysteresis of a wavy paraboloidal punch under JKR adhesion
-//! (Kesari & Lew 2011, paper 002 of the seeds).
+//! (Kesari & Lew 2011).
 //!
 //! A rigid punch with profile `f(r) + l R(r/l)`, `f(r) = r^2/(2 radius)`,
 //! `R(x) = A (1 - cos 2 pi x)` (so the surface is `r^2/(2 radius) + l A (1 - cos(2 pi r/l))`,

@@ -236,7 +236,7 @@ fn failure_is_an_error_not_a_hang() {
     assert!(t.elapsed().as_secs_f64() < 10.0);
 }
 
-/// Issue 12: continuation in the contact radius passes the (near-)fold of
+/// continuation in the contact radius passes the (near-)fold of
 /// the central gap where continuation in `H(0)` stopped (mu = 15-20): at
 /// mu = 20 the trace goes through a part where `|dP/dH(0)|` exceeds 1000
 /// and the pull-off lies between JKR's -1.5 and the mu = 10 value -1.5095
@@ -251,7 +251,7 @@ fn radius_continuation_passes_the_central_gap_fold() {
     assert!(pull > -1.5095 && pull < -1.5, "{pull}");
 }
 
-/// Issue 12: at mu = 10 (default mesh) the facts trace takes a bounded
+/// at mu = 10 (default mesh) the facts trace takes a bounded
 /// number of points, factorises about once per point (the corrector runs
 /// chord iterations on the previous point's factorisation) and assembles
 /// few compliance matrices (rescaled views share them). Before solver

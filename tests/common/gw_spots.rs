@@ -23,7 +23,7 @@ const QUAD_RTOL: f64 = 1e-12;
 const TAIL_EPS: f64 = 1e-300;
 
 /// One state of a Hertz-summit GW contact with its resistance (the
-/// `states` rows of the JSON contract).
+/// `states` rows of the JSON contract).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ElectricalState {
     /// Separation `d` (m) of the mean summit plane from the flat.

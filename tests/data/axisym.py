@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent JKR reference values for axisymmetric profiles (mpmath, 30 digits).
 
-What: for each profile, the Sneddon/Barthel integrals (Barthel 2008, paper 001;
+What: for each profile, the Sneddon/Barthel integrals (Barthel 2008;
 calK = E*/2)
     delta_0(a) = a int_0^a f'(r) dr / sqrt(a^2 - r^2)
     F_0(a)     = 2 E* int_0^a r^2 f'(r) dr / sqrt(a^2 - r^2)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent reference values for src/electrical (issue 15).
+"""Independent reference values for src/electrical.
 
 What: single-spot constriction resistances (Maxwell/Holm, Sharvin, Wexler with
 the Mikrajuddin Gamma(K) fit; two metals; film), Greenwood-Williamson sums of

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Independent reference for the hysteresis energy of a rough surface (issue 11
-item 1): JKR asperities (Fuller & Tabor 1975) on standard-normal summit heights,
+"""Independent reference for the hysteresis energy of a rough surface:
+JKR asperities (Fuller & Tabor 1975) on standard-normal summit heights,
 approached from h_start = d/sigma down to h_min, then retracted to h_start.
 
 Maugis units per asperity: loads pi w R, interferences (pi^2 w^2 R/K^2)^(1/3),

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent reference for the elastic-plastic asperity laws (issue 14).
+"""Independent reference for the elastic-plastic asperity laws.
 
 What: load P (N) and contact radius a (m) of the Kogut-Etsion 2002,
 Jackson-Green 2005, Chang-Etsion-Bogy 1987 and Zhao-Maietta-Chang 2000 laws on

@@ -5,7 +5,7 @@ What: total load (N), real contact area (m^2) and contact count of
 N = eta A_n conical summits (f = r tan(beta)) with JKR adhesion, summit heights
 Gaussian with standard deviation sigma about the mean, flat at separation d
 from the mean, on approach and on retraction from a closest separation.
-How: the cone's JKR branch in closed form (Barthel, paper 001, calK = E*/2):
+How: the cone's JKR branch in closed form (Barthel 2008, calK = E*/2):
     delta = (pi/2) t a - sqrt(2 pi w a/E*)  ->  sqrt(a) = (c + sqrt(c^2 + 2 pi t delta))/(pi t),
     c = sqrt(2 pi w/E*) (the stable, larger root), F = (pi/2) E* t a^2 - sqrt(8 pi E* w a^3),
 with jump-in at delta = 0 and jump-out at delta_c = -w/(E* t); then

@@ -4,7 +4,7 @@ small stored maps it is run on.
 
 What: for each stored map and both modes (interior / --periodic), the
 quantities of the `asperity surface --json` contract and the summit positions,
-written to surface_ref.json. How: the issue's definitions coded directly in
+written to surface_ref.json. How: the definitions coded directly in
 numpy, independently of the Rust code path: the mean plane by
 numpy.linalg.lstsq on the design matrix [1, x, y] (the Rust code uses the
 closed-form centred normal equations), differences by numpy.diff / numpy.roll,

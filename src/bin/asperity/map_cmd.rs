@@ -21,12 +21,12 @@ pub fn run(args: &MapArgs) -> crate::CliResult {
     let table = LawErrorTable::embedded();
     let dir = &args.out;
     std::fs::create_dir_all(dir)
-        .map_err(|e| crate::CliError::Usage(format!("--out: {}: {e}", dir.display())))?;
+        .map_err(|e| crate::CliError::Failed(format!("--out: {}: {e}", dir.display())))?;
     let svg = dir.join("map.svg");
     write_adhesion_map(table, args.tolerance, &svg)?;
     let csv = dir.join("map.csv");
     std::fs::write(&csv, adhesion_map_csv(table, args.tolerance))
-        .map_err(|e| crate::CliError::Usage(format!("--out: {}: {e}", csv.display())))?;
+        .map_err(|e| crate::CliError::Failed(format!("--out: {}: {e}", csv.display())))?;
     println!(
         "adhesion map at tolerance {:e} ({} Tabor parameters x {} loads; {})",
         args.tolerance,

@@ -160,7 +160,7 @@ pub fn run(args: &SphereArgs) -> crate::CliResult {
         let curve = problem.trace_with_progress(Some(&mut |p: &SpherePoint| progress.tick(p)))?;
         progress.done();
         let mut file = std::fs::File::create(path)
-            .map_err(|e| CliError::Usage(format!("--curve {}: {e}", path.display())))?;
+            .map_err(|e| CliError::Failed(format!("--curve {}: {e}", path.display())))?;
         let mut text = String::from(
             "central_gap,approach,load_bar,interference_bar,radius,radius_bar,d_approach,d_load\n",
         );

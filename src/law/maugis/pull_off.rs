@@ -1,4 +1,4 @@
-//! The load-controlled pull-off alone (issue 12): the same point as
+//! The load-controlled pull-off alone: the same point as
 //! [`MaugisCurve::new`]`(lambda).pull_off_bar()` (bit for bit for
 //! `lambda >= 1e-5`; below, where the load is flat to rounding at its
 //! minimum, the same load to a few ulp), without the displacement-controlled
@@ -22,7 +22,7 @@ impl MaugisCurve {
     /// [`MaugisCurve::new`] (bit for bit for `lambda >= 1e-5`; below it the
     /// load is flat to rounding around the minimum and agrees to a few
     /// ulp). The full scan's sample with the least load is
-    /// found from every [`STRIDE`]-th sample and the samples within a
+    /// found from every 8th sample (`STRIDE`) and the samples within a
     /// stride of the least of those (the full scan when that minimum lies at
     /// the window's edge), then refined by the same root search of
     /// `dPbar/dt`. About 1/5 of the work of `new`.

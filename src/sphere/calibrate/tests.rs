@@ -156,7 +156,7 @@ fn solver_at(curve: &[crate::sphere::SpherePoint], d: f64) -> (f64, f64) {
     )
 }
 
-/// Issue 11, item 6(a): out of contact, beyond the table's first point
+/// out of contact, beyond the table's first point
 /// (rigid gap ~6 z0), the law follows the solver traced from 60 z0, whose
 /// elastic enhancement over Bradley decays (mu = 1: 1.5 %, 0.53 %, 0.32 %,
 /// 0.16 % at H = 6, 10, 20, 50). Tolerance 0.5 %: the solver's own
@@ -203,7 +203,7 @@ fn far_field_follows_the_solver_out_to_50_z0() {
     assert!((got / bradley - 1.0).abs() < 1e-4, "{got} {bradley}");
 }
 
-/// Issue 11, item 6(b): the table reaches 100 pi w R and the law there is
+/// the table reaches 100 pi w R and the law there is
 /// the solver's: load and contact radius at Pbar ~ 5, 20, 50, 95 against an
 /// independent trace (arc step 0.5: other points) within 0.2 % (PCHIP
 /// between points 0.1 apart plus the reference's linear interpolation
@@ -252,7 +252,7 @@ fn table_reaches_100_pi_w_r() {
     }
 }
 
-/// Issue 11, item 6(c): the far field is never cut (the old cut at a rigid
+/// the far field is never cut (the old cut at a rigid
 /// gap of 100 z0 dropped ~1.3 % of a rough surface's pull-off once sigma
 /// exceeds ~100 z0): at 200 and 1e4 z0 the load is Bradley's, to 1e-6.
 #[test]
@@ -274,7 +274,7 @@ fn far_field_is_not_cut() {
     }
 }
 
-/// Issue 11, item 6(d): one interference origin. The solver's approach is
+/// one interference origin. The solver's approach is
 /// 0 at a rigid gap z0, where the continuum laws' surfaces touch (the
 /// Lennard-Jones traction changes sign at z0 as the continuum contact
 /// pressure does at zero gap), so in contact the calibrated law carries

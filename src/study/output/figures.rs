@@ -149,7 +149,7 @@ pub fn write_outputs(
     summary: &Summary,
     dir: &Path,
 ) -> Result<Vec<PathBuf>> {
-    let io = |e: std::io::Error| Error::invalid("out", format!("{}: {e}", dir.display()));
+    let io = |e: std::io::Error| Error::io(dir.display(), e);
     let curve = curve_csv(results, plan);
     let mc = super::montecarlo_csv(results, plan);
     let mut tables = vec![("curve.csv", curve.as_str())];

@@ -11,7 +11,7 @@ mod tables;
 mod topography;
 
 pub use feature_figures::{feature_charts, FeatureChart};
-pub use figures::{charts, si_prefix, si_prefix_area, write_outputs};
+pub use figures::{charts, si_prefix, si_prefix_area, write_outputs, OUTPUT_FILES};
 pub use report::text_report;
 pub use summary::{
     HeatingSummary, McSummary, PlasticitySummary, SampleSpotsSummary, StictionSummary, Summary,

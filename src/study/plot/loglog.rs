@@ -36,7 +36,7 @@ impl Chart {
         };
         let (x0, x1) = span(&mut all.iter().map(|p| p.0));
         let (y0, y1) = span(&mut all.iter().map(|p| p.1));
-        let fail = |e: String| Error::invalid("chart", format!("{}: {e}", path.display()));
+        let fail = |e: String| Error::io(path.display(), e);
         let root = SVGBackend::new(path, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
         let mut chart = ChartBuilder::on(&root)

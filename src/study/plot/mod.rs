@@ -77,7 +77,7 @@ impl Chart {
         let (y0, y1) = self
             .y_range
             .unwrap_or_else(|| range(all.iter().map(|p| p.1).collect()));
-        let fail = |e: String| Error::invalid("chart", format!("{}: {e}", path.display()));
+        let fail = |e: String| Error::io(path.display(), e);
         let root = SVGBackend::new(path, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
         let mut chart = ChartBuilder::on(&root)

@@ -1,5 +1,5 @@
-//! Load against real contact area, elastic against elastic-plastic summits
-//! (issue 14): the chart that shows how much an elastic law over-predicts
+//! Load against real contact area, elastic against elastic-plastic
+//! summits: the chart that shows how much an elastic law over-predicts
 //! the load at a given area when summits yield.
 
 use super::{Chart, Series};

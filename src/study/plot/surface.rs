@@ -19,7 +19,7 @@ fn unit(scale_m: f64) -> (f64, &'static str) {
 }
 
 fn fail(path: &Path, e: impl std::fmt::Display) -> Error {
-    Error::invalid("chart", format!("{}: {e}", path.display()))
+    Error::io(path.display(), e)
 }
 
 /// The histogram of summit heights (probability density, `sqrt(N)` bins
@@ -33,7 +33,10 @@ fn fail(path: &Path, e: impl std::fmt::Display) -> Error {
 pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
     let n = c.summits.len();
     if n < 2 {
-        return Err(fail(path, format!("{n} summits: no histogram")));
+        return Err(Error::invalid(
+            "chart",
+            format!("{}: {n} summits: no histogram", path.display()),
+        ));
     }
     let (u, name) = unit(c.moments.rms_height());
     let h: Vec<f64> = c.summits.iter().map(|s| s.height_m / u).collect();
@@ -125,7 +128,10 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
 /// cannot be written.
 pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
     if c.summits.is_empty() {
-        return Err(fail(path, "no summits: no map"));
+        return Err(Error::invalid(
+            "chart",
+            format!("{}: no summits: no map", path.display()),
+        ));
     }
     let dx = c.pixel_size_m;
     let (w, h) = (c.cols as f64 * dx, c.rows as f64 * dx);

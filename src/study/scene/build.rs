@@ -92,7 +92,7 @@ fn input(scene: &Scene, name: &str) -> f64 {
 }
 
 /// The numeric input furthest (in `|ln(value/typical)|`) from a typical
-/// gold microswitch ([`TYPICAL`]); with `among`, only those inputs.
+/// gold microswitch ([`crate::material::gold`]); with `among`, only those inputs.
 pub fn most_extreme_input(scene: &Scene, among: &[&str]) -> &'static str {
     TYPICAL
         .iter()
@@ -112,7 +112,7 @@ pub fn most_extreme_input(scene: &Scene, among: &[&str]) -> &'static str {
 /// closest separation gets the inputs that set the start appended).
 ///
 /// `mu = (R w^2 / (E*^2 z0^3))^(1/3)`, `lambda = 1.1570 mu`: each input's
-/// share of `ln mu` against a typical gold microswitch ([`TYPICAL`]) is
+/// share of `ln mu` against a typical gold microswitch ([`crate::material::gold`]) is
 /// `exponent x ln(value/typical)`; the input with the largest share in the
 /// direction of the failure is named (for `E*`, the more compliant body's
 /// modulus), and the message lists them all. Other derived quantities name

@@ -84,7 +84,7 @@ impl TopographySpec {
     /// The topography keys of `s`, `None` without `topography`.
     ///
     /// # Errors
-    /// As [`validate_surface`].
+    /// Missing or forbidden topography keys, naming them.
     pub fn of(s: &SurfaceSpec) -> Result<Option<TopographySpec>> {
         let Some(path) = &s.topography else {
             return Ok(None);

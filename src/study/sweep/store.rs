@@ -163,7 +163,7 @@ fn read_rows(
 impl ResultsFile {
     /// Opens (or creates) `dir/results.csv` for the sweep `meta`; refuses a
     /// directory holding a different sweep; drops a half-written last line.
-    /// The directory stays locked ([`DirLock`]) until the file is dropped.
+    /// The directory stays locked (an advisory lock file) until the file is dropped.
     ///
     /// # Errors
     /// [`Error::Invalid`] naming `out` (a different sweep, a row that is not
@@ -271,7 +271,7 @@ fn write_sorted(path: &Path, header: &str, rows: &BTreeMap<usize, String>) -> Re
 /// belong to one sweep, that every row lies inside the sweep and inside
 /// the shard its directory says it holds, that no point appears twice and
 /// none is missing. The merged `results.csv` equals the file of an
-/// unsharded run. `out` is locked ([`DirLock`]) while it is written.
+/// unsharded run. `out` is locked (an advisory lock file) while it is written.
 ///
 /// # Errors
 /// [`Error::Invalid`] naming `merge` and the offending shard directory
