@@ -26,9 +26,10 @@ fn bench_sphere(c: &mut Criterion) {
             b.iter(|| black_box(p.facts().unwrap()))
         });
     }
-    let o = SolverOptions {
-        arc_step: 0.027,
-        ..SolverOptions::default()
+    let o = {
+        let mut o = SolverOptions::default();
+        o.arc_step = 0.027;
+        o
     };
     let p = SphereProblem::new(1.0, Shape::Paraboloid, o).unwrap();
     let t = Instant::now();

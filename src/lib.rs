@@ -48,12 +48,55 @@ pub mod surface;
 
 pub use error::{Error, Result};
 
-/// The types most programs need.
+/// The types most programs need: one asperity and its laws; a GW surface
+/// with any law and its curve; populations; the contact resistance
+/// against force and the stiction margin of a switch; measured maps.
+///
+/// ```
+/// use asperity::prelude::*;
+/// use std::sync::Arc;
+///
+/// // A gold switch: Hertz summits, Maxwell spots, the load and resistance
+/// // of the surface 5 nm above its mean summit plane.
+/// let contact = AsperityContact::gold_microswitch();
+/// let law: Arc<dyn AsperityLaw> = Arc::from(LawKind::Hertz.build(&contact)?);
+/// let model = GwModel::new(RoughSurface::gold_microswitch(), Arc::new(Gaussian::new()), law)?;
+/// let spot = SpotResistance::same_metal(Spreading::Maxwell, 2.44e-8, None)?;
+/// let r = ResistanceObservables::new(spot, Interaction::None, 1e-4);
+/// let outputs = r.add_to(Observables::LOAD)?;
+/// let s = model.state(5e-9, History::Approach, &outputs)?;
+/// let ohm = r.value(&outputs, &s.totals).unwrap();
+/// assert!(s.load().unwrap() > 0.0 && ohm > 0.0);
+/// # Ok::<(), asperity::Error>(())
+/// ```
 pub mod prelude {
+    #[doc(no_inline)]
+    pub use crate::electrical::{
+        Conductor, Heating, Interaction, ResistanceObservables, SpotResistance, Spreading, Switch,
+    };
     #[doc(no_inline)]
     pub use crate::error::{Error, Result};
     #[doc(no_inline)]
-    pub use crate::law::{AsperityLaw, Branch, ContactState, Control, Instability, LawKind};
+    pub use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
+    #[doc(no_inline)]
+    pub use crate::heights::{DistributionKind, Exponential, Gaussian, HeightDistribution};
+    #[doc(no_inline)]
+    pub use crate::law::{
+        AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, LawKind,
+    };
+    #[doc(no_inline)]
+    pub use crate::loading::{
+        Curve, Derived, History, LoadingModel, LoadingProgram, Observable, Observables, PullOff,
+        State,
+    };
+    #[doc(no_inline)]
+    pub use crate::material::plastic::{Plasticity, Variant};
     #[doc(no_inline)]
     pub use crate::material::{contact_modulus, Adhesion, AsperityContact, Material, MaugisScales};
+    #[doc(no_inline)]
+    pub use crate::montecarlo::{MonteCarlo, Population, PopulationSpec, RadiusSpec, SummitLaw};
+    #[doc(no_inline)]
+    pub use crate::named::Named;
+    #[doc(no_inline)]
+    pub use crate::surface::{Characterisation, HeightMap, Topography};
 }

@@ -300,25 +300,28 @@ fn kinds_build_and_name_their_own_parameters() {
     let bad = |p: DistributionParams| p;
     let e = by_name(
         "weibull",
-        &bad(DistributionParams {
-            weibull_shape: Some(-1.0),
-            ..Default::default()
+        &bad({
+            let mut p = DistributionParams::default();
+            p.weibull_shape = Some(-1.0);
+            p
         }),
     );
     assert_eq!(e.unwrap_err().field(), Some("weibull_shape"));
     let e = by_name(
         "truncated-gaussian",
-        &bad(DistributionParams {
-            truncation: Some(f64::NAN),
-            ..Default::default()
+        &bad({
+            let mut p = DistributionParams::default();
+            p.truncation = Some(f64::NAN);
+            p
         }),
     );
     assert_eq!(e.unwrap_err().field(), Some("truncation"));
     let e = by_name(
         "empirical",
-        &bad(DistributionParams {
-            heights: Some(vec![1.0, f64::INFINITY]),
-            ..Default::default()
+        &bad({
+            let mut p = DistributionParams::default();
+            p.heights = Some(vec![1.0, f64::INFINITY]);
+            p
         }),
     );
     assert_eq!(e.unwrap_err().field(), Some("heights[1]"));

@@ -122,6 +122,7 @@ proptest! {
                 (Variant::ChangEtsionBogy, _) => (1.5, 1.0),
                 (Variant::ZhaoMaiettaChang, _) => (1.0, 1.0),
                 (Variant::JacksonGreen, _) => (jg_jump(s.e / s.y, s.nu), 1.0),
+                (other, _) => panic!("no expected jumps for {other:?}"),
             };
             prop_assert!((jp / ep - 1.0).abs() < 1e-9, "{v:?} at {b}: load x{jp}, expected x{ep}");
             prop_assert!((ja / ea - 1.0).abs() < 1e-9, "{v:?} at {b}: area x{ja}, expected x{ea}");

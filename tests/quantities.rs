@@ -119,10 +119,8 @@ fn a_toy_quantity_gets_a_sweep_column() {
         log: false,
         seed: 1,
     };
-    let options = SweepOptions {
-        quantities: vec![q],
-        ..SweepOptions::default()
-    };
+    let mut options = SweepOptions::default();
+    options.quantities = vec![q];
     run_sweep(&scene(), &spec, &dir, &options, &|_, _| {}).unwrap();
     let csv = std::fs::read_to_string(dir.join("results.csv")).unwrap();
     let cells = column(&csv, "perimeter_m");

@@ -74,17 +74,19 @@ fn zero_load_radii_within_half_a_percent() {
 fn too_coarse_or_too_large_meshes_are_refused() {
     let t = std::time::Instant::now();
     for res in [0.05, 0.2, 0.49, 65.0, 1e6] {
-        let o = SolverOptions {
-            resolution: res,
-            ..SolverOptions::default()
+        let o = {
+            let mut o = SolverOptions::default();
+            o.resolution = res;
+            o
         };
         let e = SphereProblem::new(1.0, Shape::Paraboloid, o).unwrap_err();
         assert_eq!(e.field(), Some("resolution"), "{res}: {e}");
         assert!(matches!(e, Error::OutOfRange { .. }), "{res}: {e}");
     }
-    let o = SolverOptions {
-        resolution: MAX_RESOLUTION,
-        ..SolverOptions::default()
+    let o = {
+        let mut o = SolverOptions::default();
+        o.resolution = MAX_RESOLUTION;
+        o
     };
     let e = SphereProblem::new(10.0, Shape::Paraboloid, o).unwrap_err();
     assert_eq!(e.field(), Some("resolution"), "{e}");
@@ -96,9 +98,10 @@ fn too_coarse_or_too_large_meshes_are_refused() {
     assert!(t.elapsed().as_secs_f64() < 1.0);
     // the bounds themselves are accepted
     for res in [MIN_RESOLUTION, 4.0] {
-        let o = SolverOptions {
-            resolution: res,
-            ..SolverOptions::default()
+        let o = {
+            let mut o = SolverOptions::default();
+            o.resolution = res;
+            o
         };
         assert!(SphereProblem::new(1.0, Shape::Paraboloid, o).is_ok());
     }
@@ -110,9 +113,10 @@ fn too_coarse_or_too_large_meshes_are_refused() {
 #[test]
 fn cost_estimate_tracks_the_mesh() {
     let at = |mu: f64, res: f64| {
-        let o = SolverOptions {
-            resolution: res,
-            ..SolverOptions::default()
+        let o = {
+            let mut o = SolverOptions::default();
+            o.resolution = res;
+            o
         };
         SphereProblem::new(mu, Shape::Paraboloid, o).unwrap()
     };

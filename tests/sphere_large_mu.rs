@@ -39,9 +39,10 @@ fn reference(mu: f64) -> Reference {
 }
 
 fn solve(mu: f64, resolution: f64) -> SphereFacts {
-    let o = SolverOptions {
-        resolution,
-        ..SolverOptions::default()
+    let o = {
+        let mut o = SolverOptions::default();
+        o.resolution = resolution;
+        o
     };
     SphereProblem::new(mu, Shape::Paraboloid, o)
         .unwrap()
@@ -210,9 +211,10 @@ fn calibration_at_mu_100() {
 #[test]
 fn mu_ten_converges_for_any_far_gap() {
     let at = |far_gap: f64| {
-        let o = SolverOptions {
-            far_gap,
-            ..SolverOptions::default()
+        let o = {
+            let mut o = SolverOptions::default();
+            o.far_gap = far_gap;
+            o
         };
         SphereProblem::new(10.0, Shape::Paraboloid, o)
             .unwrap()

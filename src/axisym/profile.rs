@@ -33,6 +33,7 @@ use std::f64::consts::PI;
 
 /// An axisymmetric profile. Built by the validating constructors.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum Profile {
     /// `f = r^2/(2R)`: the Hertz paraboloid of radius `R` (m).
     Paraboloid {
@@ -70,6 +71,7 @@ pub enum Profile {
 
 /// The kinds of [`Profile`], by name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum ProfileKind {
     /// [`Profile::Paraboloid`].
     Paraboloid,

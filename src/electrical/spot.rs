@@ -25,6 +25,7 @@ use std::f64::consts::PI;
 
 /// Spreading model of one spot.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Spreading {
     /// Maxwell/Holm diffusive constriction `rho/(2a)` (no mean free path).
     Maxwell,

@@ -8,6 +8,17 @@
 use crate::error::{finite, positive, Result};
 
 /// A switch spring.
+///
+/// # Examples
+/// A 10 N/m spring over 2 um of travel pulls back with 20 uN; a pull-off
+/// of -30 uN holds the contact shut by 10 uN.
+/// ```
+/// use asperity::prelude::*;
+/// let s = Switch::new(10.0, 2e-6)?.stiction(-3e-5)?;
+/// assert!((s.restoring_force - 2e-5).abs() < 1e-20);
+/// assert!((s.margin + 1e-5).abs() < 1e-20 && s.sticks);
+/// # Ok::<(), asperity::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Switch {
     spring_constant: f64,

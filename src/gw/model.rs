@@ -33,6 +33,7 @@ use std::sync::Arc;
 
 /// How to integrate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Method {
     /// Closed forms where they exist, adaptive quadrature otherwise.
     Auto,
@@ -51,6 +52,7 @@ pub enum Method {
 
 /// Accuracy asked of the integration.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Accuracy {
     /// Relative tolerance, in `[1e-13, 0.1]`, measured against the integral
     /// of the magnitude of each integrand.
@@ -103,6 +105,27 @@ pub const REACH_FLOOR_SIGMAS: f64 = 10.0;
 pub const REACH_CEILING_SIGMAS: f64 = 40.0;
 
 /// A rough surface with one asperity law and one height distribution.
+///
+/// # Examples
+/// Hertz summits on Gaussian heights at the mean plane (`d = 0`): the
+/// closed forms `P = (4/3) E* sqrt(R) N sigma^(3/2) F_3/2(0)`,
+/// `A = pi R sigma N F_1(0)`, `n = N F_0(0) = N/2` with `F_3/2(0) =
+/// 0.430020`, `F_1(0) = 1/sqrt(2 pi)` (mpmath): 97.22 mN, 62.67 um^2 and
+/// 5000 contacts for the gold switch surface.
+/// ```
+/// use asperity::prelude::*;
+/// use std::sync::Arc;
+///
+/// let surface = RoughSurface::gold_microswitch(); // 1e4 summits, R 1 um, sigma 5 nm
+/// let contact = AsperityContact::gold_microswitch();
+/// let hertz = LawKind::Hertz.build(&contact)?;
+/// let model = GwModel::new(surface, Arc::new(Gaussian::new()), Arc::from(hertz))?;
+/// let s = model.state(0.0, History::Approach, &Observables::ALL)?;
+/// assert!((s.load().unwrap() / 0.0972216862214102 - 1.0).abs() < 1e-12);
+/// assert!((s.area().unwrap() / 6.26657068657750e-11 - 1.0).abs() < 1e-12);
+/// assert!((s.count().unwrap() - 5000.0).abs() < 1e-9);
+/// # Ok::<(), asperity::Error>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct GwModel {
     surface: RoughSurface,

@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 /// The height distributions a study can name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum DistributionKind {
     /// [`Gaussian`]: standard normal heights.
     Gaussian,
@@ -22,6 +23,7 @@ pub enum DistributionKind {
 /// Parameters of the distributions; each is used by one kind only
 /// ([`DistributionKind::parameter`]).
 #[derive(Debug, Clone, Default, PartialEq)]
+#[non_exhaustive]
 pub struct DistributionParams {
     /// Weibull shape `k` in `[0.1, 100]` (`weibull`).
     pub weibull_shape: Option<f64>,

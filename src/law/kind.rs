@@ -11,6 +11,7 @@ use crate::material::AsperityContact;
 
 /// The laws the CLI and scenes can name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum LawKind {
     /// [`Hertz`]: no adhesion.
     Hertz,

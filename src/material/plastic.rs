@@ -163,6 +163,7 @@ pub const ZMC_PRESSURE_FACTOR: f64 = 0.6;
 
 /// The elastic-plastic law variants (their constants differ).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Variant {
     /// Kogut & Etsion (2002) finite-element fit.
     KogutEtsion,

@@ -43,6 +43,7 @@ pub const MAX_SUMMITS: usize = 1 << 30;
 
 /// How summit radii are distributed.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum RadiusSpec {
     /// Every summit has radius `R` (m), as in Greenwood–Williamson.
     Fixed(f64),
@@ -80,6 +81,7 @@ impl RadiusSpec {
 
 /// What to draw: how many summits, their height scale and radii, the seed.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct PopulationSpec {
     /// Number of summits `N`, in `[1, MAX_SUMMITS]`.
     pub summits: usize,

@@ -48,6 +48,7 @@ const WG: [f64; 5] = [
 
 /// Tolerances and limits of [`integrate`].
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct QuadOptions {
     /// Relative tolerance on the integral (e.g. 1e-8).
     pub rel_tol: f64,

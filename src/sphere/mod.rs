@@ -97,6 +97,7 @@ pub const MAX_NODES: usize = 4096;
 
 /// The undeformed shape of the rigid body.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub enum Shape {
     /// `f(r) = r^2/(2R)` (Hertz).
     Paraboloid,
@@ -111,6 +112,7 @@ pub enum Shape {
 /// Numerical controls; [`Default`] meets the accuracy targets of
 /// docs/performance.md (pull-off converged to < 1e-3).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct SolverOptions {
     /// Mesh resolution multiplier (> 0): spacing at the edge and grading
     /// scale as `1/resolution`. Default 1.

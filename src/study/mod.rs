@@ -5,6 +5,23 @@
 //!
 //! Compiled with the default feature `study`; the physics core builds without
 //! it (`cargo build --lib --no-default-features`).
+//!
+//! ```
+//! use asperity::study::{Plan, PlanMode, Scene, Summary, DEFAULT_SCENE};
+//!
+//! // The default gold switch without adhesion, pressed to the mean summit
+//! // plane: Hertz summits on Gaussian heights in closed form,
+//! // (4/3) E* sqrt(R) N sigma^(3/2) F_3/2(0) = 97.22 mN (mpmath).
+//! let text = DEFAULT_SCENE
+//!     .replacen("w = 0.5", "w = 0.0", 1)
+//!     .replacen("closest_separation = 5e-9", "closest_separation = 0.0", 1);
+//! let scene = Scene::from_toml(&text)?;
+//! let plan = Plan::new(&scene, PlanMode::Planned)?;
+//! let summary = Summary::new(&plan, &plan.run()?);
+//! let max_load = summary.headlines.get("max_load").flatten().unwrap();
+//! assert!((max_load / 0.0972216862214102 - 1.0).abs() < 1e-12);
+//! # Ok::<(), asperity::Error>(())
+//! ```
 
 pub mod cache;
 pub mod measured;

@@ -90,11 +90,9 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     // A bar on a terminal; plain lines (every 10 % or 10 s) in logs.
     let bar = Progress::new("sweep", "points", std::time::Duration::ZERO);
     let progress = |done: usize, total: usize| bar.update(done, total);
-    let options = SweepOptions {
-        shard,
-        threads: args.threads,
-        ..SweepOptions::default()
-    };
+    let mut options = SweepOptions::default();
+    options.shard = shard;
+    options.threads = args.threads;
     let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress).map_err(as_flag)?;
     bar.finish();
     eprintln!(

@@ -14,6 +14,7 @@ use std::sync::Mutex;
 
 /// How to run a sweep.
 #[derive(Debug, Clone, Default)]
+#[non_exhaustive]
 pub struct SweepOptions {
     /// The slice to run (`None`: all points).
     pub shard: Option<Shard>,

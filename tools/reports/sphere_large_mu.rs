@@ -34,9 +34,10 @@ fn main() {
     }
     for &mu in &mus {
         for &r in &res {
-            let o = SolverOptions {
-                resolution: r,
-                ..SolverOptions::default()
+            let o = {
+                let mut o = SolverOptions::default();
+                o.resolution = r;
+                o
             };
             let p = SphereProblem::new(mu, Shape::Paraboloid, o).unwrap();
             let t = Instant::now();

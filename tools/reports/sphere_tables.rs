@@ -33,9 +33,10 @@ fn md_pull_off(lambda: f64) -> f64 {
 }
 
 fn facts(mu: f64, shape: Shape, res: f64) -> (asperity::sphere::SphereFacts, f64) {
-    let o = SolverOptions {
-        resolution: res,
-        ..SolverOptions::default()
+    let o = {
+        let mut o = SolverOptions::default();
+        o.resolution = res;
+        o
     };
     let t = Instant::now();
     let f = SphereProblem::new(mu, shape, o).unwrap().facts().unwrap();
@@ -106,9 +107,10 @@ fn main() {
     println!("| far_gap (rigid gap at the last node, z0) | pull-off |");
     println!("|---|---|");
     for far in [15.0, 30.0, 60.0, 240.0, 1000.0] {
-        let o = SolverOptions {
-            far_gap: far,
-            ..SolverOptions::default()
+        let o = {
+            let mut o = SolverOptions::default();
+            o.far_gap = far;
+            o
         };
         let f = SphereProblem::new(1.0, Shape::Paraboloid, o)
             .unwrap()

@@ -8,7 +8,7 @@ use std::time::Instant;
 
 fn main() {
     let refs: serde_json::Value =
-        serde_json::from_str(include_str!("../tests/data/sphere_converged.json")).unwrap();
+        serde_json::from_str(include_str!("../../tests/data/sphere_converged.json")).unwrap();
     let reference = |mu: f64, key: &str| {
         refs["cases"]
             .as_array()
@@ -25,9 +25,10 @@ fn main() {
     println!("|---|---|---|---|---|---|---|");
     for mu in [0.5, 1.0, 10.0] {
         for res in [0.5, 1.0, 2.0, 4.0] {
-            let o = SolverOptions {
-                resolution: res,
-                ..SolverOptions::default()
+            let o = {
+                let mut o = SolverOptions::default();
+                o.resolution = res;
+                o
             };
             let p = SphereProblem::new(mu, Shape::Paraboloid, o).unwrap();
             let mut best = f64::INFINITY;

@@ -18,9 +18,10 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(1.0);
     for mu in mus {
-        let o = SolverOptions {
-            resolution: res,
-            ..SolverOptions::default()
+        let o = {
+            let mut o = SolverOptions::default();
+            o.resolution = res;
+            o
         };
         let p = SphereProblem::new(mu, Shape::Paraboloid, o).unwrap();
         let t = Instant::now();

@@ -51,9 +51,10 @@ fn main() {
     );
     for &mu in &MU {
         let t0 = std::time::Instant::now();
-        let options = SolverOptions {
-            max_load_bar: LOADS[LOADS.len() - 1] + 0.5,
-            ..SolverOptions::default()
+        let options = {
+            let mut o = SolverOptions::default();
+            o.max_load_bar = LOADS[LOADS.len() - 1] + 0.5;
+            o
         };
         let problem = SphereProblem::new(mu, Shape::Paraboloid, options).unwrap();
         let curve = problem.trace().unwrap();
