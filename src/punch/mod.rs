@@ -105,6 +105,11 @@ impl WavyPunch {
     pub fn wavelength(&self) -> f64 {
         self.wavelength
     }
+    /// The dimensionless adhesion of the smooth punch, `2 pi w / (E* R)`.
+    pub fn adhesion_number(&self) -> f64 {
+        2.0 * std::f64::consts::PI * self.w / (self.estar * self.radius)
+    }
+
     /// `A sqrt(l)` (m^1/2), the only roughness parameter of the envelopes.
     pub fn amplitude_sqrt_wavelength(&self) -> f64 {
         self.amplitude * self.wavelength.sqrt()

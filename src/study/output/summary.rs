@@ -208,7 +208,7 @@ impl Summary {
             pull_off_load: results.pull_off.map(|p| p.load),
             pull_off_separation: results.pull_off.map(|p| p.separation),
             hysteresis_energy: results.hysteresis_energy,
-            rtol: plan.scene.accuracy.rtol,
+            rtol: plan.budget.rtol,
             law_model_error: plan.law.measured_error.filter(|_| adhesive),
             seconds: results.seconds,
             evaluations: results.evaluations,

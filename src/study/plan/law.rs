@@ -1,6 +1,7 @@
 //! The law decision: the scene's law, or for `auto` the cheapest law whose
 //! measured error against the full Lennard-Jones solution meets `rtol`.
 
+use super::budget::Budget;
 use super::decision::{Decision, LawReason};
 use super::inputs::CalibrationInput;
 use super::PlanMode;
@@ -32,17 +33,18 @@ pub(super) fn choose(
     scene: &Scene,
     contact: &AsperityContact,
     mode: PlanMode,
+    budget: &Budget,
     calibration: Option<&CalibrationInput>,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
     let mu = contact.tabor();
     let lambda = contact.lambda();
-    let rtol = scene.accuracy.rtol;
+    let rtol = budget.rtol;
     let table = LawErrorTable::embedded();
     let w = contact.adhesion.work();
     let given = scene.law.kind;
     let (kind, reason) = match given {
-        LawName::Plastic(v) => return plastic(scene, contact, v, decisions),
+        LawName::Plastic(v) => return plastic(scene, contact, v, budget, decisions),
         LawName::Shaped => return shaped(scene, contact, decisions),
         LawName::Calibrated if w > 0.0 => return calibrated(contact, calibration, decisions),
         _ if w == 0.0 => {
@@ -135,6 +137,7 @@ fn plastic(
     scene: &Scene,
     contact: &AsperityContact,
     variant: Variant,
+    budget: &Budget,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
     use crate::law::plastic::{build, AdhesivePlastic, PlasticLaw};
@@ -159,7 +162,6 @@ fn plastic(
     } else {
         0.0
     };
-    let budget = super::Budget::new(scene.accuracy.rtol);
     let negligible = jkr_scale < budget.negligible_adhesion() * scene.surface.sigma;
     let law: Arc<dyn AsperityLaw> = if w > 0.0 && !negligible {
         Arc::new(AdhesivePlastic::new(loading.as_loading(), w)?)

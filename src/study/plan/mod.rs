@@ -26,11 +26,14 @@
 //! report compare the two to show that skipping pays and costs nothing.
 
 mod budget;
+mod build;
 mod decision;
 mod inputs;
 mod law;
 mod montecarlo;
+mod outputs;
 mod preview;
+mod program;
 mod topography;
 
 pub use budget::{Budget, Share, START_TAIL_FRACTION, TABLE_TOLERANCE_FRACTION};
@@ -38,22 +41,24 @@ pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
 pub use inputs::{CalibrationInput, Inputs, Pending};
 pub use law::LawChoice;
 pub use montecarlo::McPlan;
+pub use outputs::accuracy_of;
+use outputs::{outputs, resistance};
 pub use preview::Preview;
+pub use program::start_of;
+use program::{program, tabulation};
 pub use topography::TopographyPlan;
 
-use crate::electrical::{Heating, Interaction, ResistanceObservables, Switch};
-use crate::error::{Error, Result};
-use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
+use crate::electrical::{Heating, ResistanceObservables, Switch};
+use crate::error::Result;
+use crate::gw::{Accuracy, GwModel, RoughSurface};
 use crate::heights::HeightDistribution;
 use crate::law::interpolated::InterpolatedLaw;
 use crate::law::AsperityLaw;
-use crate::loading::{LoadingModel, Observables};
+use crate::loading::LoadingModel;
 use crate::material::plastic::Plasticity;
 use crate::material::AsperityContact;
 use crate::study::quantity::{Quantity, QuantitySet};
-use crate::study::scene::{
-    build_contact, build_distribution, build_surface, LawName, ProgramTarget, Scene,
-};
+use crate::study::scene::{ProgramTarget, Scene};
 use std::fmt;
 use std::path::Path;
 use std::sync::Arc;
@@ -217,139 +222,6 @@ impl Plan {
         })
     }
 
-    fn build(scene: &Scene, mode: PlanMode, inputs: &Inputs) -> Result<Plan> {
-        scene.validate()?;
-        let resolved = inputs.map.as_ref();
-        let scene = resolved.map_or(scene, |r| &r.scene);
-        let contact = build_contact(scene)?;
-        let surface = build_surface(scene)?;
-        let distribution = build_distribution(&scene.surface)?;
-        let mut decisions = Vec::new();
-        let budget = Budget::new(scene.accuracy.rtol);
-        let law = law::choose(
-            scene,
-            &contact,
-            mode,
-            inputs.calibration.as_ref(),
-            &mut decisions,
-        )?;
-        let topography = match resolved {
-            Some(r) => {
-                let t = TopographyPlan::new(r, &law, &contact)?;
-                decisions.push(Decision::Topography {
-                    choice: t.choice(),
-                    why: t.why(),
-                });
-                Some(t)
-            }
-            None => None,
-        };
-        let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
-        let (observables, accuracy) = outputs(scene, mode, &model, &law, &mut decisions)?;
-        let resistance = resistance(scene, &surface, &mut decisions)?;
-        let heating = match &scene.electrical {
-            Some(e) => e.heating()?,
-            None => None,
-        };
-        let o = scene.outputs;
-        let mut quantities = QuantitySet::standard(o.load, o.area, o.count).over(observables)?;
-        if let Some(r) = &resistance {
-            quantities = quantities.with_electrical(r, o.resistance, heating)?;
-        }
-        let mut warnings = Vec::new();
-        let plasticity = scene.plasticity()?;
-        if let Some(p) = plasticity {
-            let psi = surface
-                .plasticity_index(contact.contact_modulus, p.hardness())
-                .map_err(|e| e.in_table("materials"))?;
-            let plastic_law = matches!(law.source, LawName::Plastic(_));
-            decisions.push(Decision::Plasticity {
-                psi,
-                hardness: p.hardness(),
-                plastic_law,
-            });
-            if !plastic_law {
-                warnings.extend(crate::law::plastic::elastic_law_warning(&law.name, psi));
-            }
-        }
-        let model = model.with_accuracy(accuracy);
-        let (target, start, listed) = program(scene, mode, &model, &mut decisions)?;
-        let tabulation = tabulation(&law, &model, start, target, &budget, mode);
-        if let Some((interval, tolerance)) = tabulation {
-            decisions.push(Decision::Tabulation {
-                law: law.name.clone(),
-                tolerance,
-                interval,
-            });
-        }
-        let hysteresis_free = !law.law.has_history();
-        let compute_retraction = mode == PlanMode::EverythingOn || !hysteresis_free;
-        decisions.push(Decision::Retraction {
-            computed: compute_retraction,
-            hysteresis: (!hysteresis_free)
-                .then(|| (law.law.attach_interference(), law.law.detach_interference())),
-            law: law.name.clone(),
-        });
-        let o = scene.outputs;
-        let adhesive = contact.adhesion.work() > 0.0;
-        let pull_off = o.pull_off && (adhesive || mode == PlanMode::EverythingOn);
-        decisions.push(Decision::PullOff {
-            searched: pull_off,
-            asked: o.pull_off || mode == PlanMode::EverythingOn,
-            adhesive,
-        });
-        let hysteresis_energy = o.hysteresis_energy || mode == PlanMode::EverythingOn;
-        decisions.push(Decision::HysteresisEnergy {
-            computed: hysteresis_energy,
-        });
-        let montecarlo = match &scene.montecarlo {
-            Some(spec) => {
-                let mc = McPlan::new(spec, &surface, &contact, &law)?;
-                decisions.push(Decision::MonteCarlo {
-                    summits: mc.summits,
-                    seed: spec.seed,
-                    distribution: distribution.name().into(),
-                    radius_log_std: spec.radius_log_std,
-                    factor: mc.factor,
-                });
-                Some(mc)
-            }
-            None => None,
-        };
-        Ok(Plan {
-            scene: scene.clone(),
-            mode,
-            budget,
-            montecarlo,
-            contact,
-            surface,
-            distribution,
-            law,
-            quantities,
-            accuracy,
-            start,
-            target,
-            points: scene.program.points,
-            tabulation,
-            compute_retraction,
-            pull_off,
-            hysteresis_energy,
-            decisions,
-            plasticity,
-            listed,
-            resistance,
-            switch: match &scene.switch {
-                Some(s) => Some(
-                    Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch"))?,
-                ),
-                None => None,
-            },
-            heating,
-            warnings,
-            topography,
-        })
-    }
-
     /// This plan with one more quantity of the states: its column in
     /// `curve.csv`, its key in the listed states, its headline number in
     /// the summary and the sweep's results follow.
@@ -401,203 +273,6 @@ impl Plan {
                 .map_err(|e| e.in_table("program")),
         }
     }
-}
-
-/// The default start of a program on `model`: where the summits beyond the
-/// flat's reach carry less than the budget's tail probability (everything
-/// on: where the first summit comes in range).
-pub fn start_of(model: &GwModel, budget: &Budget, mode: PlanMode) -> (f64, StartReason) {
-    match mode {
-        PlanMode::Planned => (
-            model.start_separation(budget.start_tail()),
-            StartReason::TailFraction(budget.start_tail()),
-        ),
-        PlanMode::EverythingOn => (model.interaction_onset(), StartReason::EverythingOn),
-    }
-}
-
-/// Where the program starts and where its approach stops, and the listed
-/// states (`separations` or `loads`), if any.
-fn program(
-    scene: &Scene,
-    mode: PlanMode,
-    model: &GwModel,
-    decisions: &mut Vec<Decision>,
-) -> Result<(Target, f64, Option<ProgramTarget>)> {
-    let given = scene.program_target()?;
-    let (target, listed) = match &given {
-        ProgramTarget::Separation(d) => (Target::Separation(*d), None),
-        ProgramTarget::Load(p) => (Target::Load(*p), None),
-        ProgramTarget::Separations(xs) => (
-            Target::Separation(xs.iter().copied().fold(f64::INFINITY, f64::min)),
-            Some(given.clone()),
-        ),
-        ProgramTarget::Loads(xs) => (
-            Target::Load(xs.iter().copied().fold(0.0, f64::max)),
-            Some(given.clone()),
-        ),
-    };
-    let (start, reason) = match (scene.program.start_separation, mode) {
-        (Some(s), _) => (s, StartReason::Given),
-        (None, _) => start_of(model, &Budget::new(scene.accuracy.rtol), mode),
-    };
-    if !start.is_finite() {
-        // Derived from sigma, the distribution and the force range: named
-        // by the caller's mapping to the input furthest out.
-        return Err(Error::invalid(
-            "start separation",
-            format!("the program's start separation is {start:e} m"),
-        ));
-    }
-    decisions.push(Decision::Start {
-        separation: start,
-        reason,
-    });
-    if let Some(l) = &listed {
-        let (count, loads) = match l {
-            ProgramTarget::Separations(xs) => (xs.len(), false),
-            ProgramTarget::Loads(xs) => (xs.len(), true),
-            _ => (0, false),
-        };
-        decisions.push(Decision::Listed { count, loads });
-    }
-    if let Target::Separation(d) = target {
-        if !(start > d) {
-            let name = if listed.is_some() {
-                "program.separations"
-            } else {
-                "program.closest_separation"
-            };
-            return Err(Error::OutOfRange {
-                name: name.into(),
-                value: d,
-                allowed: crate::error::Allowed::open(f64::NEG_INFINITY, start),
-            });
-        }
-    }
-    Ok((target, start, listed))
-}
-
-/// The contact resistance's observables and decision, with `[electrical]`.
-fn resistance(
-    scene: &Scene,
-    surface: &RoughSurface,
-    decisions: &mut Vec<Decision>,
-) -> Result<Option<ResistanceObservables>> {
-    let Some(e) = &scene.electrical else {
-        return Ok(None);
-    };
-    let spot = e.spot_resistance()?;
-    let interaction = e.interaction()?;
-    decisions.push(Decision::Resistance {
-        spreading: spot.spreading().name(),
-        greenwood: interaction == Interaction::Greenwood,
-        film: spot.has_film(),
-    });
-    Ok(Some(ResistanceObservables::new(
-        spot,
-        interaction,
-        surface.nominal_area.sqrt(),
-    )))
-}
-
-/// The integration accuracy of `model`: the budget's tolerance, closed
-/// forms where the law and the distribution have them (everything on:
-/// quadrature everywhere).
-///
-/// # Errors
-/// [`Error::OutOfRange`] naming `accuracy.rtol`.
-pub fn accuracy_of(model: &GwModel, budget: &Budget, mode: PlanMode) -> Result<Accuracy> {
-    let closed = model.has_closed_form(&Observables::ALL);
-    let method = if closed && mode == PlanMode::Planned {
-        Method::Auto
-    } else {
-        Method::Quadrature
-    };
-    Ok(Accuracy::new(budget.integrals())
-        .map_err(|e| e.renamed("accuracy.rtol"))?
-        .with_method(method))
-}
-
-/// Which observables the curve computes, the integration method, and the
-/// decision for each output.
-fn outputs(
-    scene: &Scene,
-    mode: PlanMode,
-    model: &GwModel,
-    law: &LawChoice,
-    decisions: &mut Vec<Decision>,
-) -> Result<(Observables, Accuracy)> {
-    let o = scene.outputs;
-    let all = mode == PlanMode::EverythingOn;
-    let observables = Observables::standard(
-        o.load || o.hysteresis_energy || all,
-        o.area || all,
-        o.count || all,
-    );
-    let closed = model.has_closed_form(&Observables::ALL);
-    let accuracy = accuracy_of(model, &Budget::new(scene.accuracy.rtol), mode)?;
-    let method = accuracy.method;
-    let distribution = model.distribution();
-    let evaluation = if distribution.sample_points().is_some() && !closed {
-        Evaluation::SampleSum
-    } else if method == Method::Auto {
-        Evaluation::ClosedForm
-    } else {
-        Evaluation::Quadrature
-    };
-    for (name, asked, needed) in [
-        ("load", o.load, observables.load),
-        ("area", o.area, observables.area),
-        ("count", o.count, observables.count),
-    ] {
-        let (evaluation, reason) = if !needed {
-            (Evaluation::Skipped, OutputReason::NotAsked)
-        } else if asked && !all {
-            (
-                evaluation,
-                OutputReason::Asked {
-                    law: law.name.clone(),
-                    distribution: distribution.name().into(),
-                    rtol: scene.accuracy.rtol,
-                },
-            )
-        } else if all {
-            (evaluation, OutputReason::EverythingOn)
-        } else {
-            (evaluation, OutputReason::NeededByHysteresis)
-        };
-        decisions.push(Decision::Output {
-            observable: name,
-            evaluation,
-            reason,
-        });
-    }
-    Ok((observables, accuracy))
-}
-
-/// The table of an expensive law ([`LawKind::worth_tabulating`](crate::law::LawKind::worth_tabulating)):
-/// the interference interval the program reaches ([`GwModel::reachable_interferences`])
-/// and the table's tolerance; `None` when not worth it.
-fn tabulation(
-    law: &LawChoice,
-    model: &GwModel,
-    start: f64,
-    target: Target,
-    budget: &Budget,
-    mode: PlanMode,
-) -> Option<((f64, f64), f64)> {
-    // Laws that are already tables (calibrated, shaped) or cheap say so.
-    let worth = law.law.worth_tabulating();
-    if mode == PlanMode::EverythingOn || !worth {
-        return None;
-    }
-    let closest = match target {
-        Target::Separation(d) => d,
-        Target::Load(_) => start - MAX_LOAD_TABLE_DEPTH * model.surface().sigma,
-    };
-    let (lo, hi) = model.reachable_interferences(closest);
-    (hi > lo).then_some(((lo, hi), budget.table()))
 }
 
 impl fmt::Display for Plan {

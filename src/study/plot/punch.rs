@@ -72,7 +72,7 @@ impl PunchChart {
                 "wavy punch: A = {}, l/R = {}, 2 pi w/(E* R) = {:.3}",
                 punch.amplitude(),
                 punch.wavelength() / punch.radius(),
-                2.0 * std::f64::consts::PI * punch.w() / (punch.estar() * punch.radius())
+                punch.adhesion_number()
             ),
             curve,
             loading,

@@ -3,6 +3,7 @@
 
 use super::{tick, COLOURS};
 use crate::error::{Error, Result};
+use crate::heights::{Gaussian, HeightDistribution};
 use crate::surface::Characterisation;
 use plotters::prelude::*;
 use std::path::Path;
@@ -62,11 +63,7 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
     let model: Vec<(f64, f64)> = (0..=200)
         .map(|k| {
             let x = x0 + (x1 - x0) * k as f64 / 200.0;
-            let t = (x - mean) / sd;
-            (
-                x,
-                (-0.5 * t * t).exp() / (sd * (2.0 * std::f64::consts::PI).sqrt()),
-            )
+            (x, Gaussian::new().pdf((x - mean) / sd) / sd)
         })
         .collect();
     let ymax = dens
