@@ -36,7 +36,7 @@ pub(super) fn resistance(
 /// quadrature everywhere).
 ///
 /// # Errors
-/// [`Error::OutOfRange`] naming `accuracy.rtol`.
+/// [`Error::OutOfRange`](crate::Error::OutOfRange) naming `accuracy.rtol`.
 pub fn accuracy_of(model: &GwModel, budget: &Budget, mode: PlanMode) -> Result<Accuracy> {
     let closed = model.has_closed_form(&Observables::ALL);
     let method = if closed && mode == PlanMode::Planned {
