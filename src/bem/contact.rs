@@ -1,0 +1,144 @@
+//! Non-adhesive contact under load control: constrained conjugate
+//! gradients in the pressure (Polonsky & Keer 1999).
+//!
+//! Unknowns: the pressure `p >= 0` on every pixel and the rigid approach.
+//! With the gap `g = K p - h - c` (`h` the rigid surface's heights, `c` the
+//! approach, chosen each iteration as the mean of `K p - h` over the
+//! contact set `S = {p > 0}`), one iteration is Polonsky & Keer's:
+//! 1. `G = sum_S g^2`; search direction `t = g + delta (G/G_old) t` on `S`,
+//!    0 elsewhere (`delta = 0` after a step that added contact points);
+//! 2. `r = K t` minus its mean over `S`; step `tau = sum_S g t / sum_S r t`;
+//! 3. `p -= tau t` on `S`, then `p = max(p, 0)`;
+//! 4. pixels outside contact that penetrate (`p = 0`, `g < 0`) enter with
+//!    `p = -tau g`;
+//! 5. `p` is rescaled to the imposed mean pressure.
+//!
+//! Convergence criterion (explicit): before each update the contact
+//! conditions are measured on the current iterate, whose `p >= 0`, `p g = 0`
+//! off `S` and mean pressure hold exactly; what remains is the gap on the
+//! contact set and the penetration outside it:
+//! `residual = sqrt((sum_S g^2 + sum_{not S} min(g, 0)^2)/N) / h_rms`,
+//! `h_rms` the RMS of `h` about its mean. The solve stops when
+//! `residual < tolerance` and returns that iterate.
+
+use super::operator::HalfSpace;
+use super::{Options, Solution};
+use crate::error::{Error, Result};
+use rayon::prelude::*;
+
+/// Sums over the contact set and its complement, in parallel chunks.
+fn par_sum<F: Fn(usize) -> [f64; 3] + Sync>(n: usize, f: F) -> [f64; 3] {
+    (0..n)
+        .into_par_iter()
+        .with_min_len(4096)
+        .fold(|| [0.0; 3], |mut a, i| {
+            let v = f(i);
+            a[0] += v[0];
+            a[1] += v[1];
+            a[2] += v[2];
+            a
+        })
+        .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]])
+}
+
+/// Solves for mean pressure `p_mean > 0` starting from `warm` (a previous
+/// pressure field, rescaled) or a uniform pressure.
+///
+/// # Errors
+/// [`Error::NoConvergence`] after `options.max_iterations`.
+pub(crate) fn solve_load(
+    op: &HalfSpace,
+    h: &[f64],
+    h_rms: f64,
+    p_mean: f64,
+    options: &Options,
+    warm: Option<&[f64]>,
+) -> Result<Solution> {
+    let n = h.len();
+    let nf = n as f64;
+    let mut p = match warm {
+        Some(w) if w.iter().sum::<f64>() > 0.0 => {
+            let s = p_mean * nf / w.iter().sum::<f64>();
+            w.iter().map(|v| v * s).collect()
+        }
+        _ => vec![p_mean; n],
+    };
+    let mut g = vec![0.0; n];
+    let mut t = vec![0.0; n];
+    let mut r = vec![0.0; n];
+    let (mut g_old, mut delta) = (1.0, false);
+    let mut residual = f64::INFINITY;
+    for it in 0..options.max_iterations {
+        op.displacement(&p, &mut g);
+        // g = K p - h, then shift by its mean over S.
+        let [sum_s, count_s, _] = par_sum(n, |i| {
+            if p[i] > 0.0 {
+                [g[i] - h[i], 1.0, 0.0]
+            } else {
+                [0.0; 3]
+            }
+        });
+        let c = sum_s / count_s.max(1.0);
+        g.par_iter_mut().zip(h).for_each(|(gi, hi)| *gi -= hi + c);
+        let [big_g, pen, _] = par_sum(n, |i| {
+            if p[i] > 0.0 {
+                [g[i] * g[i], 0.0, 0.0]
+            } else {
+                [0.0, g[i].min(0.0).powi(2), 0.0]
+            }
+        });
+        residual = ((big_g + pen) / nf).sqrt() / h_rms;
+        if residual < options.tolerance {
+            return Ok(Solution::from_fields(p, g, c, it, residual));
+        }
+        let ratio = if delta { big_g / g_old } else { 0.0 };
+        t.par_iter_mut()
+            .zip(&g)
+            .zip(&p)
+            .for_each(|((ti, gi), pi)| *ti = if *pi > 0.0 { gi + ratio * *ti } else { 0.0 });
+        g_old = big_g;
+        op.displacement(&t, &mut r);
+        let [rs, _, _] = par_sum(n, |i| if p[i] > 0.0 { [r[i], 0.0, 0.0] } else { [0.0; 3] });
+        let rbar = rs / count_s.max(1.0);
+        let [num, den, _] = par_sum(n, |i| {
+            if p[i] > 0.0 {
+                [g[i] * t[i], (r[i] - rbar) * t[i], 0.0]
+            } else {
+                [0.0; 3]
+            }
+        });
+        let tau = if den > 0.0 { num / den } else { 0.0 };
+        // Update, clip, let penetrating points in; count them.
+        let stats: [f64; 3] = p
+            .par_iter_mut()
+            .zip(&t)
+            .zip(&g)
+            .with_min_len(4096)
+            .fold(|| [0.0; 3], |mut a, ((pi, ti), gi)| {
+                if *pi > 0.0 {
+                    *pi = (*pi - tau * ti).max(0.0);
+                } else if *gi < 0.0 {
+                    *pi = -tau * gi;
+                    a[0] += 1.0;
+                }
+                a[1] += *pi;
+                a
+            })
+            .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], 0.0]);
+        delta = stats[0] == 0.0;
+        if !(stats[1] > 0.0) {
+            return Err(Error::NoConvergence {
+                what: "boundary elements (Polonsky-Keer): the pressure vanished".into(),
+                iterations: it + 1,
+                residual,
+            });
+        }
+        let s = p_mean * nf / stats[1];
+        p.par_iter_mut().for_each(|v| *v *= s);
+    }
+    Err(Error::NoConvergence {
+        what: "boundary elements (Polonsky-Keer)".into(),
+        iterations: options.max_iterations,
+        residual,
+    })
+}
