@@ -24,22 +24,7 @@
 use super::operator::HalfSpace;
 use super::{Options, Solution};
 use crate::error::{Error, Result};
-use rayon::prelude::*;
-
-/// Sums over the contact set and its complement, in parallel chunks.
-fn par_sum<F: Fn(usize) -> [f64; 3] + Sync>(n: usize, f: F) -> [f64; 3] {
-    (0..n)
-        .into_par_iter()
-        .with_min_len(4096)
-        .fold(|| [0.0; 3], |mut a, i| {
-            let v = f(i);
-            a[0] += v[0];
-            a[1] += v[1];
-            a[2] += v[2];
-            a
-        })
-        .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]])
-}
+use super::passes::{reduce, update};
 
 /// Solves for mean pressure `p_mean > 0` starting from `warm` (a previous
 /// pressure field, rescaled) or a uniform pressure.
@@ -70,51 +55,63 @@ pub(crate) fn solve_load(
     let mut residual = f64::INFINITY;
     for it in 0..options.max_iterations {
         op.displacement(&p, &mut g);
-        // g = K p - h, then shift by its mean over S.
-        let [sum_s, count_s, _] = par_sum(n, |i| {
-            if p[i] > 0.0 {
-                [g[i] - h[i], 1.0, 0.0]
-            } else {
-                [0.0; 3]
+        // g = K p - h, then shifted by its mean over S.
+        let [sum_s, count_s] = reduce(n, |rg| {
+            let mut a = [0.0; 2];
+            for ((gi, hi), pi) in g[rg.clone()].iter().zip(&h[rg.clone()]).zip(&p[rg]) {
+                if *pi > 0.0 {
+                    a[0] += gi - hi;
+                    a[1] += 1.0;
+                }
             }
+            a
         });
         let c = sum_s / count_s.max(1.0);
-        g.par_iter_mut().zip(h).for_each(|(gi, hi)| *gi -= hi + c);
-        let [big_g, pen, _] = par_sum(n, |i| {
-            if p[i] > 0.0 {
-                [g[i] * g[i], 0.0, 0.0]
-            } else {
-                [0.0, g[i].min(0.0).powi(2), 0.0]
+        let [big_g, pen] = update(&mut g, |rg, gs| {
+            let mut a = [0.0; 2];
+            for ((gi, hi), pi) in gs.iter_mut().zip(&h[rg.clone()]).zip(&p[rg]) {
+                *gi -= hi + c;
+                if *pi > 0.0 {
+                    a[0] += *gi * *gi;
+                } else if *gi < 0.0 {
+                    a[1] += *gi * *gi;
+                }
             }
+            a
         });
         residual = ((big_g + pen) / nf).sqrt() / h_rms;
         if residual < options.tolerance {
             return Ok(Solution::from_fields(p, g, c, it, residual));
         }
         let ratio = if delta { big_g / g_old } else { 0.0 };
-        t.par_iter_mut()
-            .zip(&g)
-            .zip(&p)
-            .for_each(|((ti, gi), pi)| *ti = if *pi > 0.0 { gi + ratio * *ti } else { 0.0 });
+        let [num, sum_t] = update(&mut t, |rg, ts| {
+            let mut a = [0.0; 2];
+            for ((ti, gi), pi) in ts.iter_mut().zip(&g[rg.clone()]).zip(&p[rg]) {
+                *ti = if *pi > 0.0 { gi + ratio * *ti } else { 0.0 };
+                a[0] += gi * *ti;
+                a[1] += *ti;
+            }
+            a
+        });
         g_old = big_g;
         op.displacement(&t, &mut r);
-        let [rs, _, _] = par_sum(n, |i| if p[i] > 0.0 { [r[i], 0.0, 0.0] } else { [0.0; 3] });
-        let rbar = rs / count_s.max(1.0);
-        let [num, den, _] = par_sum(n, |i| {
-            if p[i] > 0.0 {
-                [g[i] * t[i], (r[i] - rbar) * t[i], 0.0]
-            } else {
-                [0.0; 3]
+        // sum_S (r - rbar) t = sum_S r t - rbar sum_S t.
+        let [rs, rt] = reduce(n, |rg| {
+            let mut a = [0.0; 2];
+            for ((ri, ti), pi) in r[rg.clone()].iter().zip(&t[rg.clone()]).zip(&p[rg]) {
+                if *pi > 0.0 {
+                    a[0] += ri;
+                    a[1] += ri * ti;
+                }
             }
+            a
         });
+        let den = rt - rs / count_s.max(1.0) * sum_t;
         let tau = if den > 0.0 { num / den } else { 0.0 };
         // Update, clip, let penetrating points in; count them.
-        let stats: [f64; 3] = p
-            .par_iter_mut()
-            .zip(&t)
-            .zip(&g)
-            .with_min_len(4096)
-            .fold(|| [0.0; 3], |mut a, ((pi, ti), gi)| {
+        let [entered, total] = update(&mut p, |rg, ps| {
+            let mut a = [0.0; 2];
+            for ((pi, ti), gi) in ps.iter_mut().zip(&t[rg.clone()]).zip(&g[rg]) {
                 if *pi > 0.0 {
                     *pi = (*pi - tau * ti).max(0.0);
                 } else if *gi < 0.0 {
@@ -122,19 +119,22 @@ pub(crate) fn solve_load(
                     a[0] += 1.0;
                 }
                 a[1] += *pi;
-                a
-            })
-            .reduce(|| [0.0; 3], |a, b| [a[0] + b[0], a[1] + b[1], 0.0]);
-        delta = stats[0] == 0.0;
-        if !(stats[1] > 0.0) {
+            }
+            a
+        });
+        delta = entered == 0.0;
+        if !(total > 0.0) {
             return Err(Error::NoConvergence {
                 what: "boundary elements (Polonsky-Keer): the pressure vanished".into(),
                 iterations: it + 1,
                 residual,
             });
         }
-        let s = p_mean * nf / stats[1];
-        p.par_iter_mut().for_each(|v| *v *= s);
+        let s = p_mean * nf / total;
+        update::<0, _>(&mut p, |_, ps| {
+            ps.iter_mut().for_each(|v| *v *= s);
+            []
+        });
     }
     Err(Error::NoConvergence {
         what: "boundary elements (Polonsky-Keer)".into(),

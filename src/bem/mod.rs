@@ -28,6 +28,7 @@ pub mod clusters;
 mod contact;
 pub(crate) mod fft;
 mod gap_control;
+mod passes;
 pub mod operator;
 pub mod resistance;
 

@@ -157,12 +157,10 @@ impl HalfSpace {
         let b = &mut *guard;
         let kernel = if stiff { &self.stiffness } else { &self.compliance };
         if self.periodic {
-            self.fft.forward(x, &mut b.spec, &mut b.work);
-            mul(&mut b.spec, kernel);
-            self.fft.inverse(&mut b.spec, y, &mut b.work);
+            self.fft.convolve(x, y, kernel, &mut b.spec, &mut b.work);
         } else {
             let (r, c) = (self.rows, self.cols);
-            b.padded.par_chunks_mut(2 * c).enumerate().for_each(|(i, row)| {
+            b.padded.chunks_mut(2 * c).enumerate().for_each(|(i, row)| {
                 if i < r {
                     row[..c].copy_from_slice(&x[i * c..(i + 1) * c]);
                     row[c..].fill(0.0);
@@ -170,21 +168,17 @@ impl HalfSpace {
                     row.fill(0.0);
                 }
             });
-            self.fft.forward(&b.padded, &mut b.spec, &mut b.work);
-            mul(&mut b.spec, kernel);
-            self.fft.inverse(&mut b.spec, &mut b.padded, &mut b.work);
-            y.par_chunks_mut(c)
+            let padded = std::mem::take(&mut b.padded);
+            let mut out = vec![0.0; padded.len()];
+            self.fft.convolve(&padded, &mut out, kernel, &mut b.spec, &mut b.work);
+            b.padded = out;
+            y.chunks_mut(c)
                 .enumerate()
                 .for_each(|(i, row)| row.copy_from_slice(&b.padded[i * 2 * c..i * 2 * c + c]));
         }
     }
 }
 
-fn mul(spec: &mut [Complex<f64>], kernel: &[f64]) {
-    spec.par_chunks_mut(4096)
-        .zip(kernel.par_chunks(4096))
-        .for_each(|(s, k)| s.iter_mut().zip(k).for_each(|(a, b)| *a *= *b));
-}
 
 #[cfg(test)]
 mod tests {
