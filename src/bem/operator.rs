@@ -10,7 +10,7 @@
 //!   with Love's (1929) influence coefficient of a uniformly loaded square
 //!   pixel of side `dx`, `G(x, y) = (1/(pi E*)) int_pixel dA'/|x - x'|`
 //!   `= (1/(pi E*)) [F(x+a, y+a) - F(x-a, y+a) - F(x+a, y-a) + F(x-a, y-a)]`,
-//!   `F(X, Y) = X asinh(Y/X) + Y asinh(X/Y)`, `a = dx/2`; the map is padded
+//!   `F(X, Y) = X ln(Y + r) + Y ln(X + r)`, `a = dx/2`; the map is padded
 //!   with zeros to `2 rows x 2 cols`, where the circular convolution equals
 //!   the linear one on the map.
 
@@ -46,10 +46,22 @@ impl std::fmt::Debug for HalfSpace {
     }
 }
 
-/// `int int dX dY / sqrt(X^2 + Y^2)`'s antiderivative `X asinh(Y/X) + Y asinh(X/Y)`.
+/// An antiderivative of `1/sqrt(X^2 + Y^2)` in `X` and `Y`:
+/// `X ln(Y + r) + Y ln(X + r)`, `r = sqrt(X^2 + Y^2)`, with
+/// `ln(s + r) = ln(t^2) - ln(r - s)` for `s < 0` (`t` the other variable),
+/// which avoids the cancellation in `s + r`.
 fn love_f(x: f64, y: f64) -> f64 {
-    let t = |a: f64, b: f64| if a == 0.0 { 0.0 } else { a * (b / a).asinh() };
-    t(x, y) + t(y, x)
+    let r = x.hypot(y);
+    let l = |s: f64, t: f64| {
+        if s >= 0.0 {
+            (s + r).ln()
+        } else {
+            2.0 * t.abs().ln() - (r - s).ln()
+        }
+    };
+    let tx = if x == 0.0 { 0.0 } else { x * l(y, x) };
+    let ty = if y == 0.0 { 0.0 } else { y * l(x, y) };
+    tx + ty
 }
 
 /// Love's coefficient `int_pixel dA'/|x - x'|` (m) of a square pixel of
@@ -184,6 +196,10 @@ impl HalfSpace {
 mod tests {
     use super::*;
 
+    fn vec_cos(n: usize, q: f64, dx: f64) -> Vec<f64> {
+        (0..n * n).map(|k| (q * (k % n) as f64 * dx).cos()).collect()
+    }
+
     #[test]
     fn love_coefficient_and_a_periodic_mode() {
         // Centre of a uniformly loaded square: 4 dx asinh(1).
@@ -203,9 +219,27 @@ mod tests {
         for (a, b) in u.iter().zip(&p) {
             assert!((a - 2.0 * b / (e * q)).abs() < 1e-12 * 2.0 / (e * q));
         }
+        // Padded: a unit pressure on pixel (3, 4) gives Love's coefficient.
+        let (r, c) = (12, 10);
+        let hs = HalfSpace::new(r, c, dx, e, false);
+        let mut p = vec![0.0; r * c];
+        p[3 * c + 4] = 1.0;
+        let mut u = vec![0.0; r * c];
+        for _ in 0..2 {
+            hs.displacement(&p, &mut u);
+            for i in 0..r {
+                for j in 0..c {
+                    let want = love_pixel((j as f64 - 4.0) * dx, (i as f64 - 3.0) * dx, dx) / (PI * e);
+                    assert!((u[i * c + j] - want).abs() < 1e-12 * want, "({i}, {j}) {} {want}", u[i * c + j]);
+                }
+            }
+        }
+        let hs = HalfSpace::new(n, n, dx, e, true);
+        let mut u = vec![0.0; n * n];
+        hs.displacement(&vec_cos(n, q, dx), &mut u);
         let mut back = vec![0.0; n * n];
         hs.pressure(&u, &mut back);
-        for (a, b) in back.iter().zip(&p) {
+        for (a, b) in back.iter().zip(&vec_cos(n, q, dx)) {
             assert!((a - b).abs() < 1e-12);
         }
     }
