@@ -21,14 +21,33 @@ use std::f64::consts::PI;
 pub fn selfaffine_map() -> (HeightMap, f64) {
     let (n, l) = (256, 1e-4);
     let q0 = 2.0 * PI / l;
-    let s = Spectrum::self_affine(0.8, 4.0 * q0, 4.0 * q0, 64.0 * q0, Normalisation::SlopeRms(0.1)).unwrap();
-    (random_phase_map(&s, n, n, l / n as f64, 1).unwrap(), l / n as f64)
+    let s = Spectrum::self_affine(
+        0.8,
+        4.0 * q0,
+        4.0 * q0,
+        64.0 * q0,
+        Normalisation::SlopeRms(0.1),
+    )
+    .unwrap();
+    (
+        random_phase_map(&s, n, n, l / n as f64, 1).unwrap(),
+        l / n as f64,
+    )
 }
 
 fn cpu_s() -> f64 {
     let s = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
-    let f: Vec<&str> = s.rsplit(')').next().unwrap_or("").split_whitespace().collect();
-    let t = |i: usize| f.get(i).and_then(|v| v.parse::<f64>().ok()).unwrap_or(f64::NAN);
+    let f: Vec<&str> = s
+        .rsplit(')')
+        .next()
+        .unwrap_or("")
+        .split_whitespace()
+        .collect();
+    let t = |i: usize| {
+        f.get(i)
+            .and_then(|v| v.parse::<f64>().ok())
+            .unwrap_or(f64::NAN)
+    };
     (t(11) + t(12)) / 100.0
 }
 
@@ -44,7 +63,10 @@ fn hertz(n: usize, periodic: bool) -> Value {
         })
         .collect();
     let map = HeightMap::new(n, n, h).unwrap();
-    let opts = Options { tolerance: 1e-10, ..Default::default() };
+    let opts = Options {
+        tolerance: 1e-10,
+        ..Default::default()
+    };
     let t = cpu_s();
     let prob = Problem::new(&map, dx, 1.0, periodic, &opts).unwrap();
     let a_h = 0.1;
@@ -65,7 +87,10 @@ fn rough() -> Value {
     let estar = 1e9;
     let mut rows = Vec::new();
     for tol in [1e-6, 1e-8, 1e-10, 1e-12] {
-        let opts = Options { tolerance: tol, ..Default::default() };
+        let opts = Options {
+            tolerance: tol,
+            ..Default::default()
+        };
         let t = cpu_s();
         let prob = Problem::new(&map, dx, estar, true, &opts).unwrap();
         let s = prob.solve_pressure(0.01 * estar, &opts, None).unwrap();
@@ -91,7 +116,10 @@ fn adhesive() -> Value {
     let (map, dx) = selfaffine_map();
     let estar = 1e9;
     let (w, rho) = (0.02, 2.0 * dx);
-    let opts = Options { tolerance: 1e-10, ..Default::default() };
+    let opts = Options {
+        tolerance: 1e-10,
+        ..Default::default()
+    };
     let prob = Problem::new(&map, dx, estar, true, &opts).unwrap();
     let plain = Problem::new(&map, dx, estar, true, &opts).unwrap();
     let prob = prob.with_adhesion(w, rho).unwrap();
@@ -125,10 +153,16 @@ fn main() {
         eprintln!("wrote examples/data/selfaffine-256.npy");
         return;
     }
-    let hertz: Vec<Value> = [(128, true), (256, true), (512, true), (128, false), (256, false)]
-        .iter()
-        .map(|&(n, p)| hertz(n, p))
-        .collect();
+    let hertz: Vec<Value> = [
+        (128, true),
+        (256, true),
+        (512, true),
+        (128, false),
+        (256, false),
+    ]
+    .iter()
+    .map(|&(n, p)| hertz(n, p))
+    .collect();
     let out = json!({
         "provenance": "cargo run --release --example bem_reference (asperity boundary elements)",
         "hertz": hertz,

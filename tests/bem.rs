@@ -64,17 +64,32 @@ fn rough_map_matches_its_converged_reference_and_gap_control_agrees() {
     let p = rough["pressure_Pa"].as_f64().unwrap();
     let best = rough["by_tolerance"].as_array().unwrap().last().unwrap();
     let map = selfaffine();
-    let opts = Options { tolerance: 1e-8, ..Default::default() };
+    let opts = Options {
+        tolerance: 1e-8,
+        ..Default::default()
+    };
     let prob = Problem::new(&map, dx, 1e9, true, &opts).unwrap();
     let s = prob.solve_pressure(p, &opts, None).unwrap();
     let a_ref = best["area_fraction"].as_f64().unwrap();
     let g_ref = best["mean_gap_m"].as_f64().unwrap();
     // Area stable to 1e-5 between tolerance 1e-8 and the 1e-12 reference.
-    assert!((s.area_fraction() - a_ref).abs() < 1e-5, "{} {a_ref}", s.area_fraction());
-    assert!((s.mean_gap / g_ref - 1.0).abs() < 1e-6, "{} {g_ref}", s.mean_gap);
+    assert!(
+        (s.area_fraction() - a_ref).abs() < 1e-5,
+        "{} {a_ref}",
+        s.area_fraction()
+    );
+    assert!(
+        (s.mean_gap / g_ref - 1.0).abs() < 1e-6,
+        "{} {g_ref}",
+        s.mean_gap
+    );
     // Gap control at that mean gap returns the pressure.
     let g = prob.solve_gap(s.mean_gap, &opts, None).unwrap();
-    assert!((g.mean_pressure / p - 1.0).abs() < 1e-5, "{}", g.mean_pressure);
+    assert!(
+        (g.mean_pressure / p - 1.0).abs() < 1e-5,
+        "{}",
+        g.mean_pressure
+    );
     assert!((g.area_fraction() - s.area_fraction()).abs() < 1e-4);
     // Clusters partition the contact pixels.
     let cl = prob.clusters(&s);
@@ -88,7 +103,9 @@ fn padded_gap_control_inverts_load_control() {
     let h: Vec<f64> = (0..n * n)
         .map(|k| {
             let (x, y) = ((k % n) as f64 * dx, (k / n) as f64 * dx);
-            1e-3 * ((2.0 * PI * 3.0 * x).cos() + (2.0 * PI * 2.0 * y).sin() + 0.5 * (2.0 * PI * 5.0 * (x + y)).cos())
+            1e-3 * ((2.0 * PI * 3.0 * x).cos()
+                + (2.0 * PI * 2.0 * y).sin()
+                + 0.5 * (2.0 * PI * 5.0 * (x + y)).cos())
         })
         .collect();
     let map = HeightMap::new(n, n, h).unwrap();
@@ -96,21 +113,34 @@ fn padded_gap_control_inverts_load_control() {
     let prob = Problem::new(&map, dx, 1.0, false, &opts).unwrap();
     let s = prob.solve_pressure(1e-3, &opts, None).unwrap();
     let g = prob.solve_gap(s.mean_gap, &opts, None).unwrap();
-    assert!((g.mean_pressure / 1e-3 - 1.0).abs() < 1e-6, "{}", g.mean_pressure);
+    assert!(
+        (g.mean_pressure / 1e-3 - 1.0).abs() < 1e-6,
+        "{}",
+        g.mean_pressure
+    );
 }
 
 #[test]
 fn adhesion_pulls_more_area_at_the_same_gap_and_vanishes_with_w() {
     let map = selfaffine();
     let dx = 1e-4 / 256.0;
-    let opts = Options { tolerance: 1e-9, ..Default::default() };
+    let opts = Options {
+        tolerance: 1e-9,
+        ..Default::default()
+    };
     let plain = Problem::new(&map, dx, 1e9, true, &opts).unwrap();
     let g = plain.h_rms();
     let s0 = plain.solve_gap(g, &opts, None).unwrap();
-    let weak = Problem::new(&map, dx, 1e9, true, &opts).unwrap().with_adhesion(1e-12, 2.0 * dx).unwrap();
+    let weak = Problem::new(&map, dx, 1e9, true, &opts)
+        .unwrap()
+        .with_adhesion(1e-12, 2.0 * dx)
+        .unwrap();
     let sw = weak.solve_gap(g, &opts, None).unwrap();
     assert!((sw.mean_pressure / s0.mean_pressure - 1.0).abs() < 1e-6);
-    let strong = Problem::new(&map, dx, 1e9, true, &opts).unwrap().with_adhesion(0.02, 2.0 * dx).unwrap();
+    let strong = Problem::new(&map, dx, 1e9, true, &opts)
+        .unwrap()
+        .with_adhesion(0.02, 2.0 * dx)
+        .unwrap();
     let sa = strong.solve_gap(g, &opts, None).unwrap();
     assert!(sa.area_fraction() > s0.area_fraction() && sa.mean_pressure < s0.mean_pressure);
     // The stored reference (tolerance 1e-10) at the same gap.
@@ -120,7 +150,10 @@ fn adhesion_pulls_more_area_at_the_same_gap_and_vanishes_with_w() {
     assert!((sa.area_fraction() - st["area_fraction"].as_f64().unwrap()).abs() < 1e-4);
     // Adhesion needs a periodic map.
     let padded = Problem::new(&map, dx, 1e9, false, &opts).unwrap();
-    assert_eq!(padded.with_adhesion(0.02, dx).unwrap_err().field(), Some("periodic"));
+    assert_eq!(
+        padded.with_adhesion(0.02, dx).unwrap_err().field(),
+        Some("periodic")
+    );
 }
 
 #[test]
@@ -130,14 +163,31 @@ fn memory_is_bounded_with_the_estimate_in_the_message() {
     assert!(memory_estimate(2048, 2048, false) < 1 << 30);
     assert!(memory_estimate(4096, 4096, false) > 1 << 30);
     let map = HeightMap::new(64, 64, (0..4096).map(|k| (k as f64 * 0.37).sin()).collect()).unwrap();
-    let opts = Options { memory_limit: 100_000, ..Default::default() };
+    let opts = Options {
+        memory_limit: 100_000,
+        ..Default::default()
+    };
     let e = Problem::new(&map, 1e-6, 1e9, true, &opts).unwrap_err();
     assert_eq!(e.field(), Some("topography"));
     assert!(e.to_string().contains("MiB"), "{e}");
     let ok = Options::default();
-    assert_eq!(Problem::new(&map, 0.0, 1e9, true, &ok).unwrap_err().field(), Some("pixel_size"));
-    assert_eq!(Problem::new(&map, 1e-6, -1.0, true, &ok).unwrap_err().field(), Some("contact_modulus"));
+    assert_eq!(
+        Problem::new(&map, 0.0, 1e9, true, &ok).unwrap_err().field(),
+        Some("pixel_size")
+    );
+    assert_eq!(
+        Problem::new(&map, 1e-6, -1.0, true, &ok)
+            .unwrap_err()
+            .field(),
+        Some("contact_modulus")
+    );
     let prob = Problem::new(&map, 1e-6, 1e9, true, &ok).unwrap();
-    assert_eq!(prob.solve_pressure(0.0, &ok, None).unwrap_err().field(), Some("pressure"));
-    assert_eq!(prob.solve_gap(f64::NAN, &ok, None).unwrap_err().field(), Some("gap"));
+    assert_eq!(
+        prob.solve_pressure(0.0, &ok, None).unwrap_err().field(),
+        Some("pressure")
+    );
+    assert_eq!(
+        prob.solve_gap(f64::NAN, &ok, None).unwrap_err().field(),
+        Some("gap")
+    );
 }

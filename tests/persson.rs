@@ -50,7 +50,10 @@ fn persson_and_gw_match_mpmath() {
         let u0 = model.mean_gap_slope();
         assert!(rel(u0, num(&c["mean_gap_slope"])) < 1e-9, "u0 {u0}");
         let uf = model.full_contact_energy();
-        assert!(rel(uf, num(&c["full_contact_energy"])) < 1e-13, "U_full {uf}");
+        assert!(
+            rel(uf, num(&c["full_contact_energy"])) < 1e-13,
+            "U_full {uf}"
+        );
         let gw = GwOnSpectrum::new(&s, e).unwrap();
         for st in c["states"].as_array().unwrap() {
             let p = num(&st["pressure"]);
@@ -64,9 +67,15 @@ fn persson_and_gw_match_mpmath() {
                 rel(g.area_fraction, num(&st["gw_area_fraction"])),
                 rel(g.mean_gap, num(&st["gw_mean_gap"])),
             ];
-            assert!(errs[0] < 1e-9 && errs[1] < 1e-9, "Persson at p = {p}: {errs:?}");
+            assert!(
+                errs[0] < 1e-9 && errs[1] < 1e-9,
+                "Persson at p = {p}: {errs:?}"
+            );
             assert!(ps.mean_gap_error < 1e-9 * ps.mean_gap);
-            assert!(gerrs[0] < 1e-12 && gerrs[1] < 1e-12, "GW at p = {p}: {gerrs:?}");
+            assert!(
+                gerrs[0] < 1e-12 && gerrs[1] < 1e-12,
+                "GW at p = {p}: {gerrs:?}"
+            );
             for (w, v) in worst.iter_mut().zip(errs.iter().chain(&gerrs)) {
                 *w = w.max(*v);
             }
@@ -81,14 +90,24 @@ fn bad_inputs_name_their_parameter() {
     let m = Persson::new(s.clone(), 1e9, 1.0).unwrap();
     assert_eq!(m.state(-1.0).unwrap_err().field(), Some("pressure"));
     assert_eq!(m.state(f64::NAN).unwrap_err().field(), Some("pressure"));
-    assert_eq!(Persson::new(s.clone(), 0.0, 1.0).unwrap_err().field(), Some("contact_modulus"));
     assert_eq!(
-        Spectrum::self_affine(0.8, 1e5, 1e5, 1e4, Normalisation::HRms(1e-9)).unwrap_err().field(),
+        Persson::new(s.clone(), 0.0, 1.0).unwrap_err().field(),
+        Some("contact_modulus")
+    );
+    assert_eq!(
+        Spectrum::self_affine(0.8, 1e5, 1e5, 1e4, Normalisation::HRms(1e-9))
+            .unwrap_err()
+            .field(),
         Some("q_short")
     );
     assert_eq!(
-        Spectrum::self_affine(0.8, 1e5, 1e5, 1e8, Normalisation::SlopeRms(0.0)).unwrap_err().field(),
+        Spectrum::self_affine(0.8, 1e5, 1e5, 1e8, Normalisation::SlopeRms(0.0))
+            .unwrap_err()
+            .field(),
         Some("slope_rms")
     );
-    assert_eq!(m.persson_tosatti_number(-1.0).unwrap_err().field(), Some("adhesion_energy"));
+    assert_eq!(
+        m.persson_tosatti_number(-1.0).unwrap_err().field(),
+        Some("adhesion_energy")
+    );
 }

@@ -67,10 +67,7 @@ pub fn clusters(contact: &[bool], rows: usize, cols: usize, periodic: bool) -> V
     // Accumulate per root: count and angle sums (periodic) or plain sums.
     let tau = std::f64::consts::TAU;
     let mut acc: std::collections::HashMap<u32, [f64; 5]> = std::collections::HashMap::new();
-    for k in 0..n {
-        if !contact[k] {
-            continue;
-        }
+    for (k, _) in contact.iter().enumerate().filter(|(_, c)| **c) {
         let root = find(&mut parent, k as u32);
         let (i, j) = ((k / cols) as f64, (k % cols) as f64);
         let e = acc.entry(root).or_insert([0.0; 5]);
@@ -90,9 +87,8 @@ pub fn clusters(contact: &[bool], rows: usize, cols: usize, periodic: bool) -> V
         .into_values()
         .map(|e| {
             let (x, y) = if periodic {
-                let ang = |c: f64, s: f64, len: usize| {
-                    (s.atan2(c).rem_euclid(tau)) / tau * len as f64
-                };
+                let ang =
+                    |c: f64, s: f64, len: usize| (s.atan2(c).rem_euclid(tau)) / tau * len as f64;
                 (ang(e[1], e[2], cols), ang(e[3], e[4], rows))
             } else {
                 (e[1] / e[0], e[3] / e[0])
@@ -150,13 +146,35 @@ mod tests {
         ];
         let contact: Vec<bool> = m.iter().flat_map(|r| r.chars().map(|c| c == 'X')).collect();
         let open = clusters(&contact, 4, 5, false);
-        assert_eq!(open.iter().map(|c| c.pixels).collect::<Vec<_>>(), vec![3, 1, 1]);
+        assert_eq!(
+            open.iter().map(|c| c.pixels).collect::<Vec<_>>(),
+            vec![3, 1, 1]
+        );
         let wrap = clusters(&contact, 4, 5, true);
         // (0,4) joins the L across x; nothing joins (3,2).
-        assert_eq!(wrap.iter().map(|c| c.pixels).collect::<Vec<_>>(), vec![4, 1]);
+        assert_eq!(
+            wrap.iter().map(|c| c.pixels).collect::<Vec<_>>(),
+            vec![4, 1]
+        );
         let bins = size_distribution(&open);
-        assert_eq!(bins[0], SizeBin { min_px: 1, max_px: 1, count: 2 });
-        assert_eq!(bins[1], SizeBin { min_px: 2, max_px: 3, count: 1 });
-        assert!((open[0].x_px - 1.0 / 3.0).abs() < 1e-12 && (open[0].y_px - 2.0 / 3.0).abs() < 1e-12);
+        assert_eq!(
+            bins[0],
+            SizeBin {
+                min_px: 1,
+                max_px: 1,
+                count: 2
+            }
+        );
+        assert_eq!(
+            bins[1],
+            SizeBin {
+                min_px: 2,
+                max_px: 3,
+                count: 1
+            }
+        );
+        assert!(
+            (open[0].x_px - 1.0 / 3.0).abs() < 1e-12 && (open[0].y_px - 2.0 / 3.0).abs() < 1e-12
+        );
     }
 }

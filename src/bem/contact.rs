@@ -22,9 +22,9 @@
 //! `residual < tolerance` and returns that iterate.
 
 use super::operator::HalfSpace;
+use super::passes::{reduce, update};
 use super::{Options, Solution};
 use crate::error::{Error, Result};
-use super::passes::{reduce, update};
 
 /// Solves for mean pressure `p_mean > 0` starting from `warm` (a previous
 /// pressure field, rescaled) or a uniform pressure.

@@ -92,11 +92,17 @@ impl Fft2 {
 
     /// Inverse transform of `spec` (destroyed) into `x` (row-major),
     /// unnormalised; `work` is scratch of `spectrum_len()`.
-    pub(crate) fn inverse(&self, spec: &mut [Complex<f64>], x: &mut [f64], work: &mut [Complex<f64>]) {
+    pub(crate) fn inverse(
+        &self,
+        spec: &mut [Complex<f64>],
+        x: &mut [f64],
+        work: &mut [Complex<f64>],
+    ) {
         let (rows, cols, nh) = (self.rows, self.cols, self.half_cols());
         self.columns(spec, &self.col_inv);
         transpose(spec, work, nh, rows, self.parallel());
-        let rows_inv = |scratch: &mut Vec<Complex<f64>>, (xout, win): (&mut [f64], &mut [Complex<f64>])| {
+        let rows_inv = |scratch: &mut Vec<Complex<f64>>,
+                        (xout, win): (&mut [f64], &mut [Complex<f64>])| {
             for (xr, w) in xout.chunks_mut(cols).zip(win.chunks_mut(nh)) {
                 // A real signal's DC and Nyquist terms are real.
                 w[0].im = 0.0;
@@ -197,19 +203,25 @@ impl Fft2 {
 
 /// `dst[j * n_rows + i] = src[i * n_cols + j]` for an `n_rows x n_cols`
 /// row-major `src`, in cache blocks, parallel over blocks of `dst` rows.
-fn transpose(src: &[Complex<f64>], dst: &mut [Complex<f64>], n_rows: usize, n_cols: usize, par: bool) {
+fn transpose(
+    src: &[Complex<f64>],
+    dst: &mut [Complex<f64>],
+    n_rows: usize,
+    n_cols: usize,
+    par: bool,
+) {
     const B: usize = 32;
     let one = |(jb, block): (usize, &mut [Complex<f64>])| {
-            let j0 = jb * B;
-            let jn = block.len() / n_rows;
-            for i0 in (0..n_rows).step_by(B) {
-                for i in i0..(i0 + B).min(n_rows) {
-                    let row = &src[i * n_cols + j0..i * n_cols + j0 + jn];
-                    for (dj, v) in row.iter().enumerate() {
-                        block[dj * n_rows + i] = *v;
-                    }
+        let j0 = jb * B;
+        let jn = block.len() / n_rows;
+        for i0 in (0..n_rows).step_by(B) {
+            for i in i0..(i0 + B).min(n_rows) {
+                let row = &src[i * n_cols + j0..i * n_cols + j0 + jn];
+                for (dj, v) in row.iter().enumerate() {
+                    block[dj * n_rows + i] = *v;
                 }
             }
+        }
     };
     if par {
         dst.par_chunks_mut(n_rows * B).enumerate().for_each(one);

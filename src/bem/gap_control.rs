@@ -43,14 +43,20 @@ fn sums<F: Fn(usize) -> [f64; 4] + Sync>(n: usize, f: F) -> [f64; 4] {
     (0..n)
         .into_par_iter()
         .with_min_len(4096)
-        .fold(|| [0.0; 4], |mut a, i| {
-            let v = f(i);
-            for k in 0..4 {
-                a[k] += v[k];
-            }
-            a
-        })
-        .reduce(|| [0.0; 4], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]])
+        .fold(
+            || [0.0; 4],
+            |mut a, i| {
+                let v = f(i);
+                for k in 0..4 {
+                    a[k] += v[k];
+                }
+                a
+            },
+        )
+        .reduce(
+            || [0.0; 4],
+            |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]],
+        )
 }
 
 /// The rigid-body start: `g = max(c - h, 0)` with `c` such that the mean is
@@ -96,7 +102,13 @@ pub(crate) fn solve_gap(
         _ => rigid_gap(h, g_mean),
     };
     let (w, rho) = adhesion.map_or((0.0, 1.0), |a| (a.energy, a.range));
-    let dphi = |g: f64| if w > 0.0 { w / rho * (-g / rho).exp() } else { 0.0 };
+    let dphi = |g: f64| {
+        if w > 0.0 {
+            w / rho * (-g / rho).exp()
+        } else {
+            0.0
+        }
+    };
     let mut u = vec![0.0; n];
     let mut q = vec![0.0; n];
     let mut t = vec![0.0; n];
@@ -104,7 +116,10 @@ pub(crate) fn solve_gap(
     let (mut g_old, mut delta) = (1.0, false);
     let mut residual = f64::INFINITY;
     for it in 0..options.max_iterations {
-        u.par_iter_mut().zip(&g).zip(h).for_each(|((ui, gi), hi)| *ui = gi + hi);
+        u.par_iter_mut()
+            .zip(&g)
+            .zip(h)
+            .for_each(|((ui, gi), hi)| *ui = gi + hi);
         op.pressure(&u, &mut q);
         let [qs, nfree, _, _] = sums(n, |i| {
             if g[i] > 0.0 {
@@ -139,7 +154,13 @@ pub(crate) fn solve_gap(
             .for_each(|((ti, qi), gi)| *ti = if *gi > 0.0 { qi + ratio * *ti } else { 0.0 });
         g_old = big_g;
         op.pressure(&t, &mut r);
-        let [rs, _, _, _] = sums(n, |i| if g[i] > 0.0 { [r[i], 0.0, 0.0, 0.0] } else { [0.0; 4] });
+        let [rs, _, _, _] = sums(n, |i| {
+            if g[i] > 0.0 {
+                [r[i], 0.0, 0.0, 0.0]
+            } else {
+                [0.0; 4]
+            }
+        });
         let rbar = rs / nfree.max(1.0);
         let [num, den_el, den_adh, _] = sums(n, |i| {
             if g[i] > 0.0 {
@@ -149,23 +170,30 @@ pub(crate) fn solve_gap(
                 [0.0; 4]
             }
         });
-        let den = if den_el + den_adh > 0.0 { den_el + den_adh } else { den_el };
+        let den = if den_el + den_adh > 0.0 {
+            den_el + den_adh
+        } else {
+            den_el
+        };
         let tau = if den > 0.0 { num / den } else { 0.0 };
         let [freed, total, _, _] = g
             .par_iter_mut()
             .zip(&t)
             .zip(&q)
             .with_min_len(4096)
-            .fold(|| [0.0; 4], |mut a, ((gi, ti), qi)| {
-                if *gi > 0.0 {
-                    *gi = (*gi - tau * ti).max(0.0);
-                } else if *qi < 0.0 {
-                    *gi = -tau * qi;
-                    a[0] += 1.0;
-                }
-                a[1] += *gi;
-                a
-            })
+            .fold(
+                || [0.0; 4],
+                |mut a, ((gi, ti), qi)| {
+                    if *gi > 0.0 {
+                        *gi = (*gi - tau * ti).max(0.0);
+                    } else if *qi < 0.0 {
+                        *gi = -tau * qi;
+                        a[0] += 1.0;
+                    }
+                    a[1] += *gi;
+                    a
+                },
+            )
             .reduce(|| [0.0; 4], |a, b| [a[0] + b[0], a[1] + b[1], 0.0, 0.0]);
         delta = freed == 0.0;
         if !(total > 0.0) {

@@ -28,8 +28,8 @@ pub mod clusters;
 mod contact;
 pub(crate) mod fft;
 mod gap_control;
-mod passes;
 pub mod operator;
+mod passes;
 pub mod resistance;
 
 pub use clusters::{Cluster, SizeBin};
@@ -186,7 +186,10 @@ impl Problem {
         let n = heights.len() as f64;
         let h_rms = (heights.iter().map(|v| v * v).sum::<f64>() / n).sqrt();
         if !(h_rms > 0.0) {
-            return Err(Error::invalid("topography", "flat: no contact problem to solve"));
+            return Err(Error::invalid(
+                "topography",
+                "flat: no contact problem to solve",
+            ));
         }
         let op = HalfSpace::new(rows, cols, pixel_size, contact_modulus, periodic);
         // Full-contact RMS pressure E* g/2, g from the discrete gradient.
@@ -269,7 +272,10 @@ impl Problem {
 
     /// The mean gap at first touch, `max h - mean h` (m).
     pub fn zero_load_gap(&self) -> f64 {
-        self.heights.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+        self.heights
+            .iter()
+            .cloned()
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// The state at mean pressure `pressure > 0` (Pa), warm-started from
@@ -310,7 +316,12 @@ impl Problem {
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `gap`; [`Error::NoConvergence`].
-    pub fn solve_gap(&self, gap: f64, options: &Options, warm: Option<&Solution>) -> Result<Solution> {
+    pub fn solve_gap(
+        &self,
+        gap: f64,
+        options: &Options,
+        warm: Option<&Solution>,
+    ) -> Result<Solution> {
         positive("gap", gap)?;
         if self.periodic {
             return gap_control::solve_gap(
@@ -320,15 +331,24 @@ impl Problem {
                 gap,
                 self.adhesion,
                 options,
-                warm.map(|w| w.gap.as_slice()).filter(|w| w.iter().sum::<f64>() > 0.0),
+                warm.map(|w| w.gap.as_slice())
+                    .filter(|w| w.iter().sum::<f64>() > 0.0),
             );
         }
         if gap >= self.zero_load_gap() {
             let g = gap_control::rigid_gap(&self.heights, gap);
-            return Ok(Solution::from_gap_fields(vec![0.0; g.len()], g, 0.0, 0, 0.0));
+            return Ok(Solution::from_gap_fields(
+                vec![0.0; g.len()],
+                g,
+                0.0,
+                0,
+                0.0,
+            ));
         }
         // Padded: the pressure that gives the gap (the gap decreases with p).
-        let start = warm.map_or(1e-2 * self.p_ref, |w| w.mean_pressure.max(1e-9 * self.p_ref));
+        let start = warm.map_or(1e-2 * self.p_ref, |w| {
+            w.mean_pressure.max(1e-9 * self.p_ref)
+        });
         let mut last: Option<Solution> = warm.cloned();
         let tol = (10.0 * options.tolerance).max(1e-12) * self.h_rms;
         monotone_root(start, gap, tol, true, |p| {

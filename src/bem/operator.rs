@@ -42,7 +42,11 @@ pub struct HalfSpace {
 
 impl std::fmt::Debug for HalfSpace {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "HalfSpace({} x {}, periodic {})", self.rows, self.cols, self.periodic)
+        write!(
+            f,
+            "HalfSpace({} x {}, periodic {})",
+            self.rows, self.cols, self.periodic
+        )
     }
 }
 
@@ -75,7 +79,11 @@ impl HalfSpace {
     /// The half-space on `rows x cols` pixels of side `dx` (m), contact
     /// modulus `estar` (Pa); `periodic` or padded.
     pub fn new(rows: usize, cols: usize, dx: f64, estar: f64, periodic: bool) -> Self {
-        let (fr, fc) = if periodic { (rows, cols) } else { (2 * rows, 2 * cols) };
+        let (fr, fc) = if periodic {
+            (rows, cols)
+        } else {
+            (2 * rows, 2 * cols)
+        };
         let fft = Fft2::new(fr, fc);
         let nh = fft.half_cols();
         let size = (fr * fc) as f64;
@@ -120,14 +128,22 @@ impl HalfSpace {
             buffers: Mutex::new(Buffers {
                 spec: vec![Complex::new(0.0, 0.0); len],
                 work: vec![Complex::new(0.0, 0.0); len],
-                padded: if periodic { Vec::new() } else { vec![0.0; 4 * rows * cols] },
+                padded: if periodic {
+                    Vec::new()
+                } else {
+                    vec![0.0; 4 * rows * cols]
+                },
             }),
         }
     }
 
     /// Bytes this operator holds (kernels and scratch).
     pub fn bytes(rows: usize, cols: usize, periodic: bool) -> usize {
-        let (fr, fc) = if periodic { (rows, cols) } else { (2 * rows, 2 * cols) };
+        let (fr, fc) = if periodic {
+            (rows, cols)
+        } else {
+            (2 * rows, 2 * cols)
+        };
         let len = fr * (fc / 2 + 1);
         let kernels = if periodic { 2 } else { 1 } * 8 * len;
         let complex = 2 * 16 * len;
@@ -167,7 +183,11 @@ impl HalfSpace {
     fn convolve(&self, x: &[f64], y: &mut [f64], stiff: bool) {
         let mut guard = self.buffers.lock().unwrap_or_else(|e| e.into_inner());
         let b = &mut *guard;
-        let kernel = if stiff { &self.stiffness } else { &self.compliance };
+        let kernel = if stiff {
+            &self.stiffness
+        } else {
+            &self.compliance
+        };
         if self.periodic {
             self.fft.convolve(x, y, kernel, &mut b.spec, &mut b.work);
         } else {
@@ -182,7 +202,8 @@ impl HalfSpace {
             });
             let padded = std::mem::take(&mut b.padded);
             let mut out = vec![0.0; padded.len()];
-            self.fft.convolve(&padded, &mut out, kernel, &mut b.spec, &mut b.work);
+            self.fft
+                .convolve(&padded, &mut out, kernel, &mut b.spec, &mut b.work);
             b.padded = out;
             y.chunks_mut(c)
                 .enumerate()
@@ -191,13 +212,14 @@ impl HalfSpace {
     }
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn vec_cos(n: usize, q: f64, dx: f64) -> Vec<f64> {
-        (0..n * n).map(|k| (q * (k % n) as f64 * dx).cos()).collect()
+        (0..n * n)
+            .map(|k| (q * (k % n) as f64 * dx).cos())
+            .collect()
     }
 
     #[test]
@@ -229,8 +251,13 @@ mod tests {
             hs.displacement(&p, &mut u);
             for i in 0..r {
                 for j in 0..c {
-                    let want = love_pixel((j as f64 - 4.0) * dx, (i as f64 - 3.0) * dx, dx) / (PI * e);
-                    assert!((u[i * c + j] - want).abs() < 1e-12 * want, "({i}, {j}) {} {want}", u[i * c + j]);
+                    let want =
+                        love_pixel((j as f64 - 4.0) * dx, (i as f64 - 3.0) * dx, dx) / (PI * e);
+                    assert!(
+                        (u[i * c + j] - want).abs() < 1e-12 * want,
+                        "({i}, {j}) {} {want}",
+                        u[i * c + j]
+                    );
                 }
             }
         }

@@ -16,8 +16,8 @@
 
 use crate::error::{positive, Error, Result};
 use crate::numeric::roots::brent;
-use crate::spectrum::Spectrum;
 use crate::special::gaussian_fn::gaussian_fn;
+use crate::spectrum::Spectrum;
 use crate::surface::{GwParameters, Moments, NayakPrediction};
 use std::f64::consts::PI;
 
@@ -63,7 +63,10 @@ impl GwOnSpectrum {
         let sigma = params.sigma_m.ok_or_else(|| {
             Error::invalid(
                 "spectrum",
-                format!("bandwidth alpha = {} <= 0.8968: no summit-height variance", m.alpha()),
+                format!(
+                    "bandwidth alpha = {} <= 0.8968: no summit-height variance",
+                    m.alpha()
+                ),
             )
         })?;
         Ok(GwOnSpectrum {

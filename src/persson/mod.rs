@@ -90,7 +90,8 @@ impl Persson {
 
     /// `A/A0 = erf(sqrt(2) p/(E* g))` at mean pressure `p` (Pa).
     pub fn area_fraction(&self, pressure: f64) -> f64 {
-        erf(std::f64::consts::SQRT_2 * pressure / (self.contact_modulus * self.spectrum.slope_rms()))
+        erf(std::f64::consts::SQRT_2 * pressure
+            / (self.contact_modulus * self.spectrum.slope_rms()))
     }
 
     /// `int f(q) dq` over the spectrum (module documentation).

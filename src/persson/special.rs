@@ -84,7 +84,11 @@ mod tests {
             (30.0, 3.021_552_010_688_812_5e-15),
         ];
         for (x, r) in e1_ref {
-            assert!((e1(x) / r - 1.0).abs() < 3e-15, "E1({x}) = {} vs {r}", e1(x));
+            assert!(
+                (e1(x) / r - 1.0).abs() < 3e-15,
+                "E1({x}) = {} vs {r}",
+                e1(x)
+            );
         }
         let erf_ref = [
             (1e-8, 1.128_379_167_095_512_5e-8),
@@ -93,7 +97,11 @@ mod tests {
             (1.5, 0.966_105_146_475_310_7),
         ];
         for (x, r) in erf_ref {
-            assert!((erf(x) / r - 1.0).abs() < 3e-15, "erf({x}) = {} vs {r}", erf(x));
+            assert!(
+                (erf(x) / r - 1.0).abs() < 3e-15,
+                "erf({x}) = {} vs {r}",
+                erf(x)
+            );
             assert_eq!(erf(-x), -erf(x));
         }
     }

@@ -114,7 +114,10 @@ impl Spectrum {
                 if (s.q_lo - prev).abs() > 1e-12 * prev {
                     return Err(Error::invalid(
                         "spectrum",
-                        format!("segment {i} starts at {} but the previous ends at {prev}", s.q_lo),
+                        format!(
+                            "segment {i} starts at {} but the previous ends at {prev}",
+                            s.q_lo
+                        ),
                     ));
                 }
             }
@@ -169,7 +172,9 @@ impl Spectrum {
         let unit = Spectrum { segments: segs };
         let scale = match norm {
             Normalisation::HRms(h) => positive("h_rms", h)?.powi(2) / unit.m0(),
-            Normalisation::SlopeRms(g) => positive("slope_rms", g)?.powi(2) / unit.mean_square_gradient(),
+            Normalisation::SlopeRms(g) => {
+                positive("slope_rms", g)?.powi(2) / unit.mean_square_gradient()
+            }
         };
         Ok(unit.scaled(scale))
     }

@@ -53,7 +53,11 @@ pub fn random_phase_map(
     spec[0] = Complex::new(0.0, 0.0);
     // Columns kx = 0 and (even cols) kx = cols/2 are their own mirror:
     // make them Hermitian in ky.
-    let self_mirrored: Vec<usize> = if cols % 2 == 0 { vec![0, nh - 1] } else { vec![0] };
+    let self_mirrored: Vec<usize> = if cols.is_multiple_of(2) {
+        vec![0, nh - 1]
+    } else {
+        vec![0]
+    };
     for kx in self_mirrored {
         let col = &mut spec[kx * rows..(kx + 1) * rows];
         for ky in 1..rows {
@@ -82,7 +86,14 @@ mod tests {
         let dx = 1e-8;
         let n = 64;
         let q0 = 2.0 * PI / (n as f64 * dx);
-        let s = Spectrum::self_affine(0.8, 2.0 * q0, 4.0 * q0, 28.0 * q0, Normalisation::HRms(1e-9)).unwrap();
+        let s = Spectrum::self_affine(
+            0.8,
+            2.0 * q0,
+            4.0 * q0,
+            28.0 * q0,
+            Normalisation::HRms(1e-9),
+        )
+        .unwrap();
         let map = random_phase_map(&s, n, n, dx, 3).unwrap();
         let var = map.heights().iter().map(|v| v * v).sum::<f64>() / (n * n) as f64;
         // The grid sum of C (2 pi)^2/A approximates m0 to a few per cent.

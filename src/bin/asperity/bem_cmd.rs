@@ -7,7 +7,9 @@ use crate::persson_cmd::positive_list;
 use crate::surface_cmd::read_map;
 use crate::CliError;
 use asperity::bem::resistance::cluster_resistance;
-use asperity::bem::{clusters::size_distribution, memory_estimate, Options, Problem, SizeBin, Solution};
+use asperity::bem::{
+    clusters::size_distribution, memory_estimate, Options, Problem, SizeBin, Solution,
+};
 use asperity::electrical::{GwSpots, Interaction, SpotResistance, Spreading};
 use asperity::error::positive;
 use asperity::heights::Gaussian;
@@ -38,7 +40,12 @@ pub struct BemArgs {
     #[arg(long, allow_negative_numbers = true)]
     estar: f64,
     /// Comma-separated mean pressures (Pa): load control.
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "gaps", required_unless_present = "gaps")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        conflicts_with = "gaps",
+        required_unless_present = "gaps"
+    )]
     pressures: Option<String>,
     /// Comma-separated mean gaps (m): mean-gap control.
     #[arg(long, allow_negative_numbers = true)]
@@ -147,22 +154,29 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     let (targets, by_gap) = match (&args.pressures, &args.gaps) {
         (Some(p), _) => (positive_list("--pressures", p)?, false),
         (None, Some(g)) => (positive_list("--gaps", g)?, true),
-        (None, None) => return Err(CliError::Usage("--pressures or --gaps: one is needed".into())),
+        (None, None) => {
+            return Err(CliError::Usage(
+                "--pressures or --gaps: one is needed".into(),
+            ))
+        }
     };
     let shown = args.map.display().to_string();
-    let map = read_map(&args.map)?.scaled(args.scale).map_err(|e| e.renamed("--scale"))?;
+    let map = read_map(&args.map)?
+        .scaled(args.scale)
+        .map_err(|e| e.renamed("--scale"))?;
     let options = Options {
         tolerance: args.tolerance,
         max_iterations: args.max_iterations,
         memory_limit: (args.memory_limit_mib * 1048576.0) as usize,
     };
     let memory = memory_estimate(map.rows(), map.cols(), args.periodic);
-    let mut problem = Problem::new(&map, args.pixel_size, args.estar, args.periodic, &options).map_err(|e| match e.field() {
-        Some("topography") => e.renamed(&shown),
-        Some("pixel_size") => e.renamed("--pixel-size"),
-        Some("contact_modulus") => e.renamed("--estar"),
-        _ => e,
-    })?;
+    let mut problem = Problem::new(&map, args.pixel_size, args.estar, args.periodic, &options)
+        .map_err(|e| match e.field() {
+            Some("topography") => e.renamed(&shown),
+            Some("pixel_size") => e.renamed("--pixel-size"),
+            Some("contact_modulus") => e.renamed("--estar"),
+            _ => e,
+        })?;
     if let (Some(w), Some(rho)) = (args.adhesion_energy, args.adhesion_range) {
         problem = problem.with_adhesion(w, rho).map_err(|e| match e.field() {
             Some("periodic") => e.renamed("--periodic"),
@@ -175,11 +189,17 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     }
     let spot = args
         .resistivity
-        .map(|r| SpotResistance::same_metal(Spreading::Maxwell, r, None).map_err(|e| e.renamed("--resistivity")))
+        .map(|r| {
+            SpotResistance::same_metal(Spreading::Maxwell, r, None)
+                .map_err(|e| e.renamed("--resistivity"))
+        })
         .transpose()?;
     // GW from the finite-difference moments (as `asperity surface`), Persson from the PSD.
-    let topo = Topography::new(map.clone(), args.pixel_size).map_err(|e| e.renamed("--pixel-size"))?;
-    let charac = topo.characterise(args.periodic).map_err(|e| e.renamed(&shown))?;
+    let topo =
+        Topography::new(map.clone(), args.pixel_size).map_err(|e| e.renamed("--pixel-size"))?;
+    let charac = topo
+        .characterise(args.periodic)
+        .map_err(|e| e.renamed(&shown))?;
     let gw = GwOnSpectrum::from_moments(&charac.moments, args.estar).ok();
     let psd = radial_psd(&map, args.pixel_size, args.periodic).map_err(|e| e.renamed(&shown))?;
     let persson = Persson::new(psd, args.estar, args.gamma).map_err(|e| e.renamed("--gamma"))?;
@@ -193,9 +213,13 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     for &t in &targets {
         let warm = solutions.last();
         let s = if by_gap {
-            problem.solve_gap(t, &options, warm).map_err(|e| e.renamed("--gaps"))?
+            problem
+                .solve_gap(t, &options, warm)
+                .map_err(|e| e.renamed("--gaps"))?
         } else {
-            problem.solve_pressure(t, &options, warm).map_err(|e| e.renamed("--pressures"))?
+            problem
+                .solve_pressure(t, &options, warm)
+                .map_err(|e| e.renamed("--pressures"))?
         };
         let cl = problem.clusters(&s);
         let singles = cl.iter().filter(|c| c.pixels == 1).count();
@@ -207,11 +231,15 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
             ));
         }
         let p = s.mean_pressure;
-        let gw_state = gw.as_ref().filter(|_| p > 0.0).and_then(|g| g.state(p).ok());
+        let gw_state = gw
+            .as_ref()
+            .filter(|_| p > 0.0)
+            .and_then(|g| g.state(p).ok());
         let pe_state = (p > 0.0).then(|| persson.state(p).ok()).flatten();
         let resistance = match &spot {
             Some(sp) => {
-                let bem = cluster_resistance(&problem, &cl, sp).map_err(|e| CliError::Failed(e.to_string()))?;
+                let bem = cluster_resistance(&problem, &cl, sp)
+                    .map_err(|e| CliError::Failed(e.to_string()))?;
                 let gw_r = match (&gw, gw_state) {
                     (Some(g), Some(st)) => {
                         let spots = GwSpots::new(
@@ -221,7 +249,11 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
                             nominal_area,
                             Arc::new(Gaussian::new()),
                         )?;
-                        Some(spots.hertz_resistance(sp, Interaction::Greenwood, st.h).resistance)
+                        Some(
+                            spots
+                                .hertz_resistance(sp, Interaction::Greenwood, st.h)
+                                .resistance,
+                        )
                     }
                     _ => None,
                 };
@@ -265,10 +297,15 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
         solutions.push(s);
     }
     if gw.is_none() {
-        warnings.push("GW: the map's bandwidth leaves McCool's summit heights no variance; no GW prediction".into());
+        warnings.push(
+            "GW: the map's bandwidth leaves McCool's summit heights no variance; no GW prediction"
+                .into(),
+        );
     }
     if args.adhesion_energy.is_some() {
-        warnings.push("GW and Persson columns are the non-adhesive theories at the same mean pressure".into());
+        warnings.push(
+            "GW and Persson columns are the non-adhesive theories at the same mean pressure".into(),
+        );
     }
     let out = BemJson {
         states,
@@ -300,7 +337,13 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     Ok(())
 }
 
-fn write_outputs(dir: &Path, json: &str, out: &BemJson, sols: &[Solution], problem: &Problem) -> crate::CliResult {
+fn write_outputs(
+    dir: &Path,
+    json: &str,
+    out: &BemJson,
+    sols: &[Solution],
+    problem: &Problem,
+) -> crate::CliResult {
     let io = |p: &Path, e: std::io::Error| CliError::from(Error::io(p.display(), e));
     std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
     let p = dir.join("bem.json");
@@ -308,7 +351,13 @@ fn write_outputs(dir: &Path, json: &str, out: &BemJson, sols: &[Solution], probl
     let (rows, cols) = problem.shape();
     for (k, s) in sols.iter().enumerate() {
         let fields: [(&str, Vec<f64>); 3] = [
-            ("contact", s.contact().iter().map(|c| f64::from(u8::from(*c))).collect()),
+            (
+                "contact",
+                s.contact()
+                    .iter()
+                    .map(|c| f64::from(u8::from(*c)))
+                    .collect(),
+            ),
             ("pressure", s.pressure.clone()),
             ("gap", s.gap.clone()),
         ];
@@ -324,14 +373,22 @@ fn write_outputs(dir: &Path, json: &str, out: &BemJson, sols: &[Solution], probl
         points: pts,
     };
     let pick = |l: &[ModelJson], f: fn(&ModelJson) -> Option<f64>| -> Vec<(f64, f64)> {
-        l.iter().filter_map(|m| f(m).map(|v| (m.pressure, v))).collect()
+        l.iter()
+            .filter_map(|m| f(m).map(|v| (m.pressure, v)))
+            .collect()
     };
     let area = Chart {
         title: "Contact area against mean pressure".into(),
         x_label: "mean pressure p (Pa)".into(),
         y_label: "A/A0".into(),
         series: vec![
-            series("boundary elements", out.states.iter().map(|s| (s.pressure, s.area_fraction)).collect()),
+            series(
+                "boundary elements",
+                out.states
+                    .iter()
+                    .map(|s| (s.pressure, s.area_fraction))
+                    .collect(),
+            ),
             series("GW", pick(&out.gw, |m| m.area_fraction)),
             series("Persson", pick(&out.persson, |m| m.area_fraction)),
         ],
@@ -342,15 +399,23 @@ fn write_outputs(dir: &Path, json: &str, out: &BemJson, sols: &[Solution], probl
         x_label: "mean pressure p (Pa)".into(),
         y_label: "mean gap (m)".into(),
         series: vec![
-            series("boundary elements", out.states.iter().map(|s| (s.pressure, s.mean_gap_m)).collect()),
+            series(
+                "boundary elements",
+                out.states
+                    .iter()
+                    .map(|s| (s.pressure, s.mean_gap_m))
+                    .collect(),
+            ),
             series("GW", pick(&out.gw, |m| m.mean_gap_m)),
             series("Persson", pick(&out.persson, |m| m.mean_gap_m)),
         ],
         y_range: None,
     };
     let chart = |e: Error| CliError::Failed(e.to_string());
-    area.write_svg_loglog(&dir.join("area_vs_pressure.svg"), 800, 560).map_err(chart)?;
-    gap.write_svg(&dir.join("gap_vs_pressure.svg"), 800, 560).map_err(chart)
+    area.write_svg_loglog(&dir.join("area_vs_pressure.svg"), 800, 560)
+        .map_err(chart)?;
+    gap.write_svg(&dir.join("gap_vs_pressure.svg"), 800, 560)
+        .map_err(chart)
 }
 
 fn print_table(o: &BemJson) {
@@ -364,7 +429,16 @@ fn print_table(o: &BemJson) {
     );
     println!(
         "{:>12} {:>12} {:>12} {:>8} {:>6} {:>9} | {:>12} {:>12} | {:>12} {:>12}",
-        "p (Pa)", "gap (m)", "A/A0", "clusters", "iter", "residual", "GW A/A0", "GW gap", "Persson A/A0", "Persson gap"
+        "p (Pa)",
+        "gap (m)",
+        "A/A0",
+        "clusters",
+        "iter",
+        "residual",
+        "GW A/A0",
+        "GW gap",
+        "Persson A/A0",
+        "Persson gap"
     );
     let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.5e}"));
     for ((s, g), p) in o.states.iter().zip(&o.gw).zip(&o.persson) {

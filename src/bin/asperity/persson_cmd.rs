@@ -25,7 +25,12 @@ pub struct PerssonArgs {
     #[arg(long, allow_negative_numbers = true)]
     q_short: f64,
     /// RMS height (m), to normalise the spectrum (or --slope-rms).
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "slope_rms", required_unless_present = "slope_rms")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        conflicts_with = "slope_rms",
+        required_unless_present = "slope_rms"
+    )]
     h_rms: Option<f64>,
     /// RMS gradient g = sqrt(<|grad h|^2>), to normalise the spectrum.
     #[arg(long, allow_negative_numbers = true)]
@@ -108,7 +113,11 @@ pub fn run(args: &PerssonArgs) -> crate::CliResult {
     let norm = match (args.h_rms, args.slope_rms) {
         (Some(h), _) => Normalisation::HRms(positive("--h-rms", h)?),
         (None, Some(g)) => Normalisation::SlopeRms(positive("--slope-rms", g)?),
-        (None, None) => return Err(CliError::Usage("--h-rms or --slope-rms: one is needed".into())),
+        (None, None) => {
+            return Err(CliError::Usage(
+                "--h-rms or --slope-rms: one is needed".into(),
+            ))
+        }
     };
     let flag = |e: asperity::Error| -> CliError {
         let f = e.field().unwrap_or("").replace('_', "-");
@@ -145,7 +154,11 @@ pub fn run(args: &PerssonArgs) -> crate::CliResult {
     }
     let pt = args
         .adhesion_energy
-        .map(|w| model.persson_tosatti_number(w).map_err(|e| e.renamed("--adhesion-energy")))
+        .map(|w| {
+            model
+                .persson_tosatti_number(w)
+                .map_err(|e| e.renamed("--adhesion-energy"))
+        })
         .transpose()?;
     let out = PerssonJson {
         states,
@@ -192,13 +205,18 @@ fn print_table(o: &PerssonJson) {
         o.gamma, o.mean_gap_slope_m, o.full_contact_energy
     );
     if let Some(pt) = o.persson_tosatti_number {
-        println!("Persson-Tosatti U_full/w = {pt:.4e} (below 1: adhesion can pull into full contact)");
+        println!(
+            "Persson-Tosatti U_full/w = {pt:.4e} (below 1: adhesion can pull into full contact)"
+        );
     }
     println!(
         "GW (McCool)     eta {:.4e} 1/m^2, R {:.4e} m, sigma {:.4e} m",
         o.gw.density_per_m2, o.gw.radius_m, o.gw.sigma_m
     );
-    println!("{:>14} {:>14} {:>14} {:>14} {:>14}", "p (Pa)", "A/A0", "u (m)", "GW A/A0", "GW u (m)");
+    println!(
+        "{:>14} {:>14} {:>14} {:>14} {:>14}",
+        "p (Pa)", "A/A0", "u (m)", "GW A/A0", "GW u (m)"
+    );
     for s in &o.states {
         println!(
             "{:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e}",
