@@ -191,3 +191,48 @@ fn memory_is_bounded_with_the_estimate_in_the_message() {
         Some("gap")
     );
 }
+
+#[test]
+fn adhesive_sphere_follows_jkr_near_pull_off() {
+    // R = 1, E* = 1, w such that a0 = 0.2 (51 pixels), Maugis lambda = 3.
+    // The converged check (1024^2, lambda = 5, pull-off within 1 %) is the
+    // example `bem_jkr`; here 256^2 holds P(a) to 5 % of the pull-off force
+    // (4 % measured: the cohesive zone is 2 pixels).
+    let n = 256;
+    let dx = 1.0 / n as f64;
+    let h: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let (i, j) = (
+                (k / n) as f64 - n as f64 / 2.0,
+                (k % n) as f64 - n as f64 / 2.0,
+            );
+            -(i * i + j * j) * dx * dx / 2.0
+        })
+        .collect();
+    let map = HeightMap::new(n, n, h).unwrap();
+    let (w, rho) = (5.66e-4, 3.11e-3);
+    let opts = Options {
+        tolerance: 1e-8,
+        ..Default::default()
+    };
+    let prob = Problem::new(&map, dx, 1.0, true, &opts)
+        .unwrap()
+        .with_adhesion(w, rho)
+        .unwrap();
+    let zero = prob.zero_load_gap();
+    let pc = 1.5 * PI * w;
+    let mut warm = None;
+    for k in 0..4 {
+        let s = prob
+            .solve_gap(zero - 0.004 + 0.001 * k as f64, &opts, warm.as_ref())
+            .unwrap();
+        let a = (s.contact_pixels as f64 / PI).sqrt() * dx;
+        let jkr = 4.0 * a.powi(3) / 3.0 - (8.0 * PI * w * a.powi(3)).sqrt();
+        assert!(
+            ((s.mean_pressure - jkr) / pc).abs() < 0.05,
+            "{k}: {} {jkr}",
+            s.mean_pressure
+        );
+        warm = Some(s);
+    }
+}

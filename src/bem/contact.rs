@@ -48,34 +48,35 @@ pub(crate) fn solve_load(
         }
         _ => vec![p_mean; n],
     };
+    let mut u = vec![0.0; n];
     let mut g = vec![0.0; n];
     let mut t = vec![0.0; n];
     let mut r = vec![0.0; n];
     let (mut g_old, mut delta) = (1.0, false);
     let mut residual = f64::INFINITY;
     for it in 0..options.max_iterations {
-        op.displacement(&p, &mut g);
+        op.displacement(&p, &mut u);
         // g = K p - h, then shifted by its mean over S.
         let [sum_s, count_s] = reduce(n, |rg| {
             let mut a = [0.0; 2];
-            for ((gi, hi), pi) in g[rg.clone()].iter().zip(&h[rg.clone()]).zip(&p[rg]) {
-                if *pi > 0.0 {
-                    a[0] += gi - hi;
-                    a[1] += 1.0;
-                }
+            // Branch-free: the contact pattern is random, branches mispredict.
+            for ((gi, hi), pi) in u[rg.clone()].iter().zip(&h[rg.clone()]).zip(&p[rg]) {
+                let m = f64::from(u8::from(*pi > 0.0));
+                a[0] += m * (gi - hi);
+                a[1] += m;
             }
             a
         });
         let c = sum_s / count_s.max(1.0);
         let [big_g, pen] = update(&mut g, |rg, gs| {
             let mut a = [0.0; 2];
-            for ((gi, hi), pi) in gs.iter_mut().zip(&h[rg.clone()]).zip(&p[rg]) {
-                *gi -= hi + c;
-                if *pi > 0.0 {
-                    a[0] += *gi * *gi;
-                } else if *gi < 0.0 {
-                    a[1] += *gi * *gi;
-                }
+            let (us, hs, ps) = (&u[rg.clone()], &h[rg.clone()], &p[rg]);
+            for (((gi, ui), hi), pi) in gs.iter_mut().zip(us).zip(hs).zip(ps) {
+                *gi = ui - hi - c;
+                let m = f64::from(u8::from(*pi > 0.0));
+                let neg = gi.min(0.0);
+                a[0] += m * *gi * *gi;
+                a[1] += (1.0 - m) * neg * neg;
             }
             a
         });
@@ -87,7 +88,8 @@ pub(crate) fn solve_load(
         let [num, sum_t] = update(&mut t, |rg, ts| {
             let mut a = [0.0; 2];
             for ((ti, gi), pi) in ts.iter_mut().zip(&g[rg.clone()]).zip(&p[rg]) {
-                *ti = if *pi > 0.0 { gi + ratio * *ti } else { 0.0 };
+                let m = f64::from(u8::from(*pi > 0.0));
+                *ti = m * (gi + ratio * *ti);
                 a[0] += gi * *ti;
                 a[1] += *ti;
             }
@@ -99,10 +101,9 @@ pub(crate) fn solve_load(
         let [rs, rt] = reduce(n, |rg| {
             let mut a = [0.0; 2];
             for ((ri, ti), pi) in r[rg.clone()].iter().zip(&t[rg.clone()]).zip(&p[rg]) {
-                if *pi > 0.0 {
-                    a[0] += ri;
-                    a[1] += ri * ti;
-                }
+                let m = f64::from(u8::from(*pi > 0.0));
+                a[0] += m * ri;
+                a[1] += ri * ti; // t = 0 off S
             }
             a
         });
@@ -112,12 +113,11 @@ pub(crate) fn solve_load(
         let [entered, total] = update(&mut p, |rg, ps| {
             let mut a = [0.0; 2];
             for ((pi, ti), gi) in ps.iter_mut().zip(&t[rg.clone()]).zip(&g[rg]) {
-                if *pi > 0.0 {
-                    *pi = (*pi - tau * ti).max(0.0);
-                } else if *gi < 0.0 {
-                    *pi = -tau * gi;
-                    a[0] += 1.0;
-                }
+                // In contact: step and clip; outside: penetrating points enter.
+                let m = f64::from(u8::from(*pi > 0.0));
+                let enter = (1.0 - m) * f64::from(u8::from(*gi < 0.0));
+                *pi = m * (*pi - tau * ti).max(0.0) + enter * (-tau * gi);
+                a[0] += enter;
                 a[1] += *pi;
             }
             a

@@ -1,3 +1,17 @@
+//! JKR check of the adhesive boundary-element solver: a sphere of radius
+//! R = 1 in a periodic unit cell (E* = 1), exponential adhesion of work `w`
+//! and range `rho`, stepped in mean gap from `zero-load gap + G0` by `DG`
+//! (`COUNT` states, warm-started). Prints, per state, the mean pressure P
+//! (= the force on the unit cell), the contact radius from the contact pixels
+//! `a = sqrt(n/pi) dx`, JKR's force at that radius
+//! `P_JKR(a) = 4 E* a^3/(3R) - sqrt(8 pi w E* a^3)` and the difference in units
+//! of the JKR pull-off `1.5 pi w R`; then the smallest P against `-1.5 pi w R`.
+//!
+//! ```text
+//! cargo run --release --example bem_jkr -- N RHO W G0 DG COUNT
+//! cargo run --release --example bem_jkr -- 1024 1.868e-3 5.66e-4 -0.004 0.0008 8
+//! ```
+//! (`a0 = 0.2`, Maugis `lambda = 2 (w/rho) (R/(pi w E*^2))^(1/3) = 5`.)
 use asperity::bem::{Options, Problem};
 use asperity::surface::HeightMap;
 
