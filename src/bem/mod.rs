@@ -22,7 +22,7 @@
 //!
 //! Memory is stated before anything is allocated ([`memory_estimate`]) and
 //! bounded by [`Options::memory_limit`] (1 GiB by default: a 2048 x 2048 map
-//! needs about 0.33 GiB periodic, 0.8 GiB padded).
+//! needs about 0.43 GiB periodic, 0.77 GiB padded).
 
 pub mod clusters;
 mod contact;

@@ -236,6 +236,12 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
             .filter(|_| p > 0.0)
             .and_then(|g| g.state(p).ok());
         let pe_state = (p > 0.0).then(|| persson.state(p).ok()).flatten();
+        if let Some(g) = gw_state.filter(|g| g.area_fraction > 0.1) {
+            warnings.push(format!(
+                "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity",
+                g.area_fraction
+            ));
+        }
         let resistance = match &spot {
             Some(sp) => {
                 let bem = cluster_resistance(&problem, &cl, sp)
