@@ -29,6 +29,7 @@
 #![allow(clippy::excessive_precision)]
 
 pub mod axisym;
+pub mod bem;
 pub mod electrical;
 pub mod error;
 pub mod gw;
@@ -39,8 +40,10 @@ pub mod material;
 pub mod montecarlo;
 pub mod named;
 pub mod numeric;
+pub mod persson;
 pub mod punch;
 pub mod special;
+pub mod spectrum;
 pub mod sphere;
 #[cfg(feature = "study")]
 pub mod study;

@@ -5,11 +5,13 @@
 //! argument), 1 a computation that failed, 141 stdout closed by its reader
 //! (e.g. `| head`; quiet, see `pipe.rs`).
 
+mod bem_cmd;
 mod default_study;
 mod fn_cmd;
 mod heating_cmd;
 mod law_cmd;
 mod map_cmd;
+mod persson_cmd;
 mod pipe;
 mod progress;
 mod punch_cmd;
@@ -59,6 +61,10 @@ enum Command {
     Heating(heating_cmd::HeatingArgs),
     /// JKR adhesion of an axisymmetric profile (paraboloid, sphere, cone, flat, power).
     Shape(shape_cmd::ShapeArgs),
+    /// Persson's theory on a self-affine spectrum, GW on the same spectrum.
+    Persson(persson_cmd::PerssonArgs),
+    /// Exact elastic contact of a map by FFT boundary elements, beside GW and Persson.
+    Bem(bem_cmd::BemArgs),
 }
 
 /// Result of a subcommand.
@@ -122,6 +128,8 @@ fn main() -> ExitCode {
         Some(Command::Spots(args)) => spots_cmd::run(&args),
         Some(Command::Heating(args)) => heating_cmd::run(&args),
         Some(Command::Shape(args)) => shape_cmd::run(&args),
+        Some(Command::Persson(args)) => persson_cmd::run(&args),
+        Some(Command::Bem(args)) => bem_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -73,7 +73,7 @@ struct SurfaceJson {
 }
 
 /// Reads the map by extension; every content error names the file.
-fn read_map(path: &Path) -> Result<HeightMap, CliError> {
+pub(crate) fn read_map(path: &Path) -> Result<HeightMap, CliError> {
     let shown = path.display().to_string();
     let ext = path
         .extension()

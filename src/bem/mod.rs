@@ -1,0 +1,439 @@
+//! FFT boundary elements: an elastic half-space (contact modulus `E*`)
+//! against a rigid rough surface given as a height map (equivalently two
+//! rough elastic bodies with the composite surface and the composite
+//! modulus).
+//!
+//! - [`operator`]: the half-space compliance by FFT, periodic or padded
+//!   (non-periodic).
+//! - `contact`: load control without adhesion, Polonsky & Keer's (1999)
+//!   constrained conjugate gradients in the pressure.
+//! - `gap_control`: mean-gap control on a periodic map, with or without the
+//!   exponential adhesion of Rey, Anciaux & Molinari (2017).
+//! - [`clusters`]: connected contact spots and their size distribution;
+//!   [`resistance`]: their constriction resistance.
+//!
+//! The remaining combinations are outer monotone root-finds around these
+//! two solvers: mean-gap control on a padded map (the pressure that gives the
+//! gap) and load control with adhesion (the gap that gives the pressure).
+//!
+//! Sign conventions: heights `h` of the rigid surface point towards the
+//! elastic body; the gap is `g = u - h + const >= 0`; pressure is positive
+//! when compressive; a pixel is in (hard) contact when its gap is exactly 0.
+//!
+//! Memory is stated before anything is allocated ([`memory_estimate`]) and
+//! bounded by [`Options::memory_limit`] (1 GiB by default: a 2048 x 2048 map
+//! needs about 0.43 GiB periodic, 0.77 GiB padded).
+
+pub mod clusters;
+mod contact;
+pub(crate) mod fft;
+mod gap_control;
+pub mod operator;
+mod passes;
+pub mod resistance;
+
+pub use clusters::{Cluster, SizeBin};
+pub use gap_control::Exponential;
+
+use crate::error::{positive, Error, Result};
+use crate::surface::{HeightMap, Plane};
+use operator::HalfSpace;
+
+/// Solver options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Stop when the residual of the contact conditions is below this
+    /// (dimensionless, see the solvers' documentation). Default `1e-10`.
+    pub tolerance: f64,
+    /// Most conjugate-gradient iterations per solve. Default 10000.
+    pub max_iterations: usize,
+    /// Bytes the solver may use (checked before allocating). Default 1 GiB.
+    pub memory_limit: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            tolerance: 1e-10,
+            max_iterations: 10_000,
+            memory_limit: 1 << 30,
+        }
+    }
+}
+
+/// One converged state's fields (row-major, the map's shape).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// Pressure (Pa), compressive > 0 (tensile where adhesion pulls).
+    pub pressure: Vec<f64>,
+    /// Gap (m), exactly 0 in contact.
+    pub gap: Vec<f64>,
+    /// Mean pressure (Pa).
+    pub mean_pressure: f64,
+    /// Mean gap (m): the separation of the mean planes.
+    pub mean_gap: f64,
+    /// Pixels in contact.
+    pub contact_pixels: usize,
+    /// Conjugate-gradient iterations of the last solve.
+    pub iterations: usize,
+    /// Final residual (see the solver).
+    pub residual: f64,
+}
+
+impl Solution {
+    /// From the pressure solver: contact where `p > 0`; gaps clipped at 0.
+    fn from_fields(p: Vec<f64>, g: Vec<f64>, _approach: f64, it: usize, residual: f64) -> Self {
+        let n = p.len() as f64;
+        let gap: Vec<f64> = p
+            .iter()
+            .zip(&g)
+            .map(|(pi, gi)| if *pi > 0.0 { 0.0 } else { gi.max(0.0) })
+            .collect();
+        let contact_pixels = p.iter().filter(|v| **v > 0.0).count();
+        Solution {
+            mean_pressure: p.iter().sum::<f64>() / n,
+            mean_gap: gap.iter().sum::<f64>() / n,
+            pressure: p,
+            gap,
+            contact_pixels,
+            iterations: it,
+            residual,
+        }
+    }
+
+    /// From the gap solver: contact where `g = 0`.
+    fn from_gap_fields(p: Vec<f64>, g: Vec<f64>, p_mean: f64, it: usize, residual: f64) -> Self {
+        let n = g.len() as f64;
+        Solution {
+            mean_pressure: p_mean,
+            mean_gap: g.iter().sum::<f64>() / n,
+            contact_pixels: g.iter().filter(|v| **v == 0.0).count(),
+            pressure: p,
+            gap: g,
+            iterations: it,
+            residual,
+        }
+    }
+
+    /// Fraction of the pixels in contact.
+    pub fn area_fraction(&self) -> f64 {
+        self.contact_pixels as f64 / self.gap.len() as f64
+    }
+
+    /// The contact map (`true` where the gap is 0).
+    pub fn contact(&self) -> Vec<bool> {
+        self.gap.iter().map(|g| *g == 0.0).collect()
+    }
+}
+
+/// Bytes a solve on `rows x cols` needs: the operator's kernels and FFT
+/// buffers (`HalfSpace::bytes`) plus 10 fields of `rows cols` f64 (heights,
+/// pressure, gap, search direction, its image, displacement, the previous
+/// state for warm starts, the returned fields) and the cluster labels.
+pub fn memory_estimate(rows: usize, cols: usize, periodic: bool) -> usize {
+    HalfSpace::bytes(rows, cols, periodic) + (10 * 8 + 4 + 1) * rows * cols
+}
+
+/// A map, a material and the half-space operator: everything but the load.
+#[derive(Debug)]
+pub struct Problem {
+    rows: usize,
+    cols: usize,
+    pixel_size: f64,
+    contact_modulus: f64,
+    periodic: bool,
+    heights: Vec<f64>,
+    h_rms: f64,
+    p_ref: f64,
+    op: HalfSpace,
+    adhesion: Option<Exponential>,
+}
+
+impl Problem {
+    /// The problem for `map` (heights in m, mean plane removed here, only
+    /// the mean when `periodic`), square pixels of `pixel_size` m and
+    /// contact modulus `contact_modulus` Pa.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `pixel_size` or `contact_modulus`;
+    /// [`Error::Invalid`] named `topography` when the map is flat or when
+    /// [`memory_estimate`] exceeds `options.memory_limit` (the message gives
+    /// both).
+    pub fn new(
+        map: &HeightMap,
+        pixel_size: f64,
+        contact_modulus: f64,
+        periodic: bool,
+        options: &Options,
+    ) -> Result<Self> {
+        positive("pixel_size", pixel_size)?;
+        positive("contact_modulus", contact_modulus)?;
+        let (rows, cols) = (map.rows(), map.cols());
+        let need = memory_estimate(rows, cols, periodic);
+        if need > options.memory_limit {
+            return Err(Error::invalid(
+                "topography",
+                format!(
+                    "{rows} x {cols} pixels ({}) need about {:.0} MiB, above the limit of {:.0} MiB",
+                    if periodic { "periodic" } else { "padded to twice the size" },
+                    need as f64 / 1048576.0,
+                    options.memory_limit as f64 / 1048576.0
+                ),
+            ));
+        }
+        let plane = Plane::fit(map.heights(), rows, cols, pixel_size, periodic);
+        let heights = plane.residual(map.heights(), cols);
+        let n = heights.len() as f64;
+        let h_rms = (heights.iter().map(|v| v * v).sum::<f64>() / n).sqrt();
+        if !(h_rms > 0.0) {
+            return Err(Error::invalid(
+                "topography",
+                "flat: no contact problem to solve",
+            ));
+        }
+        let op = HalfSpace::new(rows, cols, pixel_size, contact_modulus, periodic);
+        // Full-contact RMS pressure E* g/2, g from the discrete gradient.
+        let mut g2 = 0.0;
+        for i in 0..rows {
+            for j in 0..cols {
+                let k = i * cols + j;
+                if j + 1 < cols {
+                    g2 += (heights[k + 1] - heights[k]).powi(2);
+                }
+                if i + 1 < rows {
+                    g2 += (heights[k + cols] - heights[k]).powi(2);
+                }
+            }
+        }
+        let slope = (g2 / n).sqrt() / pixel_size;
+        Ok(Problem {
+            rows,
+            cols,
+            pixel_size,
+            contact_modulus,
+            periodic,
+            heights,
+            h_rms,
+            p_ref: 0.5 * contact_modulus * slope,
+            op,
+            adhesion: None,
+        })
+    }
+
+    /// The same problem with the exponential adhesion `-w exp(-g/rho)`
+    /// (`energy` `w` J/m^2, `range` `rho` m).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `adhesion_energy` or `adhesion_range`;
+    /// [`Error::Invalid`] named `periodic` on a padded map (the gap solver
+    /// needs the periodic stiffness).
+    pub fn with_adhesion(mut self, energy: f64, range: f64) -> Result<Self> {
+        positive("adhesion_energy", energy)?;
+        positive("adhesion_range", range)?;
+        if !self.periodic {
+            return Err(Error::invalid(
+                "periodic",
+                "adhesion is solved on periodic maps only (the gap solver needs the periodic stiffness)",
+            ));
+        }
+        self.adhesion = Some(Exponential { energy, range });
+        Ok(self)
+    }
+
+    /// Rows, columns.
+    pub fn shape(&self) -> (usize, usize) {
+        (self.rows, self.cols)
+    }
+
+    /// Pixel size (m).
+    pub fn pixel_size(&self) -> f64 {
+        self.pixel_size
+    }
+
+    /// Contact modulus (Pa).
+    pub fn contact_modulus(&self) -> f64 {
+        self.contact_modulus
+    }
+
+    /// Whether the map is periodic.
+    pub fn periodic(&self) -> bool {
+        self.periodic
+    }
+
+    /// The heights the solver uses (mean plane removed), row-major (m).
+    pub fn heights(&self) -> &[f64] {
+        &self.heights
+    }
+
+    /// RMS of the heights (m).
+    pub fn h_rms(&self) -> f64 {
+        self.h_rms
+    }
+
+    /// The mean gap at first touch, `max h - mean h` (m).
+    pub fn zero_load_gap(&self) -> f64 {
+        self.heights
+            .iter()
+            .cloned()
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
+
+    /// The state at mean pressure `pressure > 0` (Pa), warm-started from
+    /// `warm` (a previous solution) if given.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `pressure`; [`Error::NoConvergence`].
+    pub fn solve_pressure(
+        &self,
+        pressure: f64,
+        options: &Options,
+        warm: Option<&Solution>,
+    ) -> Result<Solution> {
+        positive("pressure", pressure)?;
+        if self.adhesion.is_some() {
+            // The gap that gives the pressure (P decreases with the gap).
+            let start = warm.map_or(self.h_rms, |w| w.mean_gap.max(1e-6 * self.h_rms));
+            let mut last: Option<Solution> = warm.cloned();
+            let tol = options.tolerance.max(1e-12) * pressure.abs().max(1e-3 * self.p_ref);
+            return monotone_root(start, pressure, tol, true, |g| {
+                let s = self.solve_gap(g, options, last.as_ref())?;
+                let v = s.mean_pressure;
+                last = Some(s.clone());
+                Ok((v, s))
+            });
+        }
+        contact::solve_load(
+            &self.op,
+            &self.heights,
+            self.h_rms,
+            pressure,
+            options,
+            warm.map(|w| w.pressure.as_slice()),
+        )
+    }
+
+    /// The state at mean gap `gap > 0` (m).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `gap`; [`Error::NoConvergence`].
+    pub fn solve_gap(
+        &self,
+        gap: f64,
+        options: &Options,
+        warm: Option<&Solution>,
+    ) -> Result<Solution> {
+        positive("gap", gap)?;
+        if self.periodic {
+            return gap_control::solve_gap(
+                &self.op,
+                &self.heights,
+                self.p_ref,
+                gap,
+                self.adhesion,
+                options,
+                warm.map(|w| w.gap.as_slice())
+                    .filter(|w| w.iter().sum::<f64>() > 0.0),
+            );
+        }
+        if gap >= self.zero_load_gap() {
+            let g = gap_control::rigid_gap(&self.heights, gap);
+            return Ok(Solution::from_gap_fields(
+                vec![0.0; g.len()],
+                g,
+                0.0,
+                0,
+                0.0,
+            ));
+        }
+        // Padded: the pressure that gives the gap (the gap decreases with p).
+        let start = warm.map_or(1e-2 * self.p_ref, |w| {
+            w.mean_pressure.max(1e-9 * self.p_ref)
+        });
+        let mut last: Option<Solution> = warm.cloned();
+        let tol = (10.0 * options.tolerance).max(1e-12) * self.h_rms;
+        monotone_root(start, gap, tol, true, |p| {
+            let s = self.solve_pressure(p, options, last.as_ref())?;
+            let v = s.mean_gap;
+            last = Some(s.clone());
+            Ok((v, s))
+        })
+    }
+
+    /// Contact clusters of a solution, largest first.
+    pub fn clusters(&self, s: &Solution) -> Vec<Cluster> {
+        clusters::clusters(&s.contact(), self.rows, self.cols, self.periodic)
+    }
+}
+
+/// Finds `x > 0` with `f(x) = target` for `f` monotone (decreasing when
+/// `decreasing`): bracket by factors of 4 from `x0`, then the Illinois
+/// variant of regula falsi in `ln x`, until `|f - target| <= tol`.
+fn monotone_root<F>(x0: f64, target: f64, tol: f64, decreasing: bool, mut f: F) -> Result<Solution>
+where
+    F: FnMut(f64) -> Result<(f64, Solution)>,
+{
+    let sign = if decreasing { -1.0 } else { 1.0 };
+    let mut eval = |x: f64| -> Result<(f64, Solution)> {
+        let (v, s) = f(x)?;
+        Ok((sign * (v - target), s))
+    };
+    let (mut a, (mut fa, sa)) = (x0, eval(x0)?);
+    if fa.abs() <= tol {
+        return Ok(sa);
+    }
+    // fa > 0: x too large (increasing form); step down, else up.
+    let step = if fa > 0.0 { 0.25 } else { 4.0 };
+    let (mut b, mut fb);
+    let mut k = 0;
+    loop {
+        b = a * step;
+        let (v, s) = eval(b)?;
+        fb = v;
+        if fb.abs() <= tol {
+            return Ok(s);
+        }
+        if fb.signum() != fa.signum() {
+            break;
+        }
+        a = b;
+        fa = fb;
+        k += 1;
+        if k > 60 {
+            return Err(Error::NoConvergence {
+                what: "boundary elements: bracketing the control variable".into(),
+                iterations: k,
+                residual: fb.abs(),
+            });
+        }
+    }
+    let (mut la, mut lb) = (a.ln(), b.ln());
+    let mut side = 0;
+    for it in 0..100 {
+        let lc = (la * fb - lb * fa) / (fb - fa);
+        let (fc, s) = eval(lc.exp())?;
+        if fc.abs() <= tol || (lb - la).abs() < 1e-14 {
+            return Ok(s);
+        }
+        if fc.signum() == fb.signum() {
+            lb = lc;
+            fb = fc;
+            if side == -1 {
+                fa *= 0.5;
+            }
+            side = -1;
+        } else {
+            la = lc;
+            fa = fc;
+            if side == 1 {
+                fb *= 0.5;
+            }
+            side = 1;
+        }
+        let _ = it;
+    }
+    Err(Error::NoConvergence {
+        what: "boundary elements: the control variable".into(),
+        iterations: 100,
+        residual: fa.abs().min(fb.abs()),
+    })
+}
