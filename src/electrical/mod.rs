@@ -37,4 +37,4 @@ pub use observable::{ContactHeating, ResistanceObservables, SpotConductance};
 pub use sample::{population_spots, SampleResistance, EXACT_MAX_SPOTS};
 pub use spot::{Conductor, SpotResistance, Spreading};
 pub use spots::Spots;
-pub use switch::{Stiction, Switch};
+pub use switch::{Stiction, StictionOdds, Switch};

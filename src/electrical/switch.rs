@@ -6,6 +6,7 @@
 //! (tensile). Margin `F_r - |P_c|`; the switch sticks when it is negative.
 
 use crate::error::{finite, positive, Result};
+use crate::montecarlo::pull_off::PullOffStatistics;
 
 /// A switch spring.
 ///
@@ -72,6 +73,47 @@ impl Switch {
     }
 }
 
+/// The verdict against the pull-offs of many populations of the same
+/// surface ([`PullOffStatistics`]): the probability that one switch
+/// sticks, and the margin at a conservative quantile of the pull-off.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StictionOdds {
+    /// The verdict at the pull-off that only a fraction `1 - confidence` of
+    /// the populations exceed (the `1 - confidence` quantile: the more
+    /// tensile end).
+    pub verdict: Stiction,
+    /// The confidence of that quantile, in (0, 1).
+    pub confidence: f64,
+    /// Fraction of the populations whose pull-off exceeds the restoring
+    /// force: the probability that one switch sticks.
+    pub probability: f64,
+    /// Its Clopper–Pearson interval at 95 %.
+    pub interval: (f64, f64),
+}
+
+impl Switch {
+    /// The odds against the pull-offs `stats` (N), the margin at
+    /// confidence `confidence` in (0, 1).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfRange`] naming `confidence` outside (0, 1).
+    pub fn stiction_odds(
+        &self,
+        stats: &PullOffStatistics,
+        confidence: f64,
+    ) -> Result<StictionOdds> {
+        crate::error::Allowed::open(0.0, 1.0).check("confidence", confidence)?;
+        let quantile = stats.quantile(1.0 - confidence).min(0.0);
+        let (probability, interval) = stats.fraction_beyond(self.restoring_force());
+        Ok(StictionOdds {
+            verdict: self.stiction(quantile)?,
+            confidence,
+            probability,
+            interval,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -105,5 +147,25 @@ mod tests {
             s.stiction(f64::INFINITY).unwrap_err().field(),
             Some("pull_off")
         );
+    }
+
+    #[test]
+    fn odds_count_the_populations_beyond_the_spring() {
+        // Five switches; a 10 N/m spring over 2.5 um pulls back with
+        // 2.5e-5 N: two of five pull off harder. At confidence 0.75 the
+        // margin uses the 25 % quantile of (-4, -3, -2, -1, 0) x 1e-5,
+        // i.e. -3e-5.
+        let stats = PullOffStatistics::new(vec![-4e-5, -1e-5, -3e-5, -2e-5, 0.0]).unwrap();
+        let odds = Switch::new(10.0, 2.5e-6)
+            .unwrap()
+            .stiction_odds(&stats, 0.75)
+            .unwrap();
+        assert_eq!(odds.probability, 0.4);
+        assert!((odds.verdict.pull_off + 3e-5).abs() < 1e-20);
+        assert!((odds.verdict.margin + 0.5e-5).abs() < 1e-18 && odds.verdict.sticks);
+        assert!(Switch::new(1.0, 1.0)
+            .unwrap()
+            .stiction_odds(&stats, 1.0)
+            .is_err());
     }
 }

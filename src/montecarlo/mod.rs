@@ -47,6 +47,7 @@
 mod comparison;
 mod measured;
 mod population;
+pub mod pull_off;
 mod scaling;
 mod summation;
 

@@ -156,6 +156,32 @@ impl Population {
     /// As [`PopulationSpec::new`]; [`Error::Invalid`] naming `distribution`
     /// if its quantile returns a non-finite height.
     pub fn sample(spec: &PopulationSpec, distribution: &dyn HeightDistribution) -> Result<Self> {
+        Population::draw(spec, distribution, f64::NEG_INFINITY)
+    }
+
+    /// The population [`Population::sample`] draws, with only the summits
+    /// at or above `min_height` (m) computed: the heights below it are
+    /// stored as `-inf` (their quantiles are never evaluated), everything
+    /// else, the random streams, the order and the radii included, is the
+    /// full draw's. Sums over the summits a flat reaches at separations
+    /// where the lower ones are out of range are bit for bit those of the
+    /// full population.
+    ///
+    /// # Errors
+    /// As [`Population::sample`].
+    pub fn sample_above(
+        spec: &PopulationSpec,
+        distribution: &dyn HeightDistribution,
+        min_height: f64,
+    ) -> Result<Self> {
+        Population::draw(spec, distribution, min_height)
+    }
+
+    fn draw(
+        spec: &PopulationSpec,
+        distribution: &dyn HeightDistribution,
+        min_height: f64,
+    ) -> Result<Self> {
         spec.validate()?;
         let n = spec.summits;
         let blocks = n.div_ceil(SAMPLING_BLOCK);
@@ -211,16 +237,31 @@ impl Population {
         // floating point so the quantile stays finite.
         const BELOW_ONE: f64 = 1.0 - f64::EPSILON / 2.0;
         let sigma = spec.sigma;
+        // Summits below `min_height` (u below `u_min`) are not computed;
+        // the margin keeps every summit whose quantile could round to or
+        // above the bound.
+        let u_min = if min_height == f64::NEG_INFINITY {
+            -1.0
+        } else {
+            (1.0 - distribution.tail(min_height / sigma)) * (1.0 - 1e-12) - 1e-300
+        };
         heights
             .par_chunks_mut(SAMPLING_BLOCK)
             .zip(offsets.par_iter())
             .for_each(|(h, &off)| {
                 for hj in h.iter_mut() {
                     let u = ((off + *hj) / total).min(BELOW_ONE);
-                    *hj = sigma * distribution.quantile(u);
+                    *hj = if u >= u_min {
+                        sigma * distribution.quantile(u)
+                    } else {
+                        f64::NEG_INFINITY
+                    };
                 }
             });
-        if let Some(bad) = heights.iter().find(|z| !z.is_finite()) {
+        if let Some(bad) = heights
+            .iter()
+            .find(|z| !z.is_finite() && **z != f64::NEG_INFINITY)
+        {
             return Err(Error::invalid(
                 "distribution",
                 format!(
@@ -362,6 +403,6 @@ pub(crate) fn open_uniform(rng: &mut impl Rng) -> f64 {
 
 /// Standard exponential `-ln U`, `U` open uniform: always finite and > 0.
 #[inline]
-fn standard_exponential(rng: &mut impl Rng) -> f64 {
+pub(crate) fn standard_exponential(rng: &mut impl Rng) -> f64 {
     -open_uniform(rng).ln()
 }

@@ -28,6 +28,7 @@ pub mod measured;
 pub mod output;
 pub mod plan;
 pub mod plot;
+pub mod population;
 pub mod quantity;
 pub mod run;
 pub mod scene;

@@ -2,7 +2,7 @@
 
 use super::plan::{McPlan, Plan};
 use super::scene::{LawName, ProgramTarget};
-use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction};
+use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction, StictionOdds};
 use crate::error::Result;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
 use crate::law::{AsperityLaw, LawKind};
@@ -49,8 +49,11 @@ pub struct Results {
     /// Contact-regime fractions at the closest approach, when the materials
     /// give a yield strength.
     pub regimes: Option<RegimeFractions>,
-    /// The switch's stiction verdict, with `[switch]`.
+    /// The switch's stiction verdict, with `[switch]` (at the confidence
+    /// quantile of the populations' pull-offs when there are any).
     pub stiction: Option<Stiction>,
+    /// The probability that a switch sticks, over the populations.
+    pub stiction_odds: Option<StictionOdds>,
     /// For an elastic-plastic law: the approach states of the elastic law it
     /// reduces to as `psi -> 0` (JKR with adhesion, Hertz without) at the
     /// same separations, for the load–area comparison.
@@ -61,6 +64,9 @@ pub struct Results {
     /// The measured map's part (the other model's headline numbers when
     /// asked), when the scene has `[surface] topography`.
     pub topography: Option<super::measured::TopographyResults>,
+    /// The pull-off distribution over populations of the surface's
+    /// summits, when the pull-off is searched on a finite surface.
+    pub pull_off_population: Option<super::population::PopulationResults>,
 }
 
 /// The records of a curve's two legs.
@@ -104,11 +110,6 @@ pub struct McResults {
     /// states, then retraction states). Standard errors are reported only
     /// where at least [`MIN_SUMMITS_FOR_Z`] are.
     pub contacts: Vec<f64>,
-    /// Most tensile sampled retraction load of populations drawn with
-    /// other seeds (`seed + 1 ..`), to show how one realisation's pull-off
-    /// scatters; empty when the population is too large for
-    /// [`SEED_SPREAD_BUDGET`].
-    pub seed_pull_offs: Vec<(u64, Option<f64>)>,
     /// Wall-clock time of drawing and summing (s).
     pub seconds: f64,
     /// With `[electrical]`: the sample's own spots at the closest
@@ -120,13 +121,6 @@ pub struct McResults {
 /// Most contact spots of a population for which explicit-position
 /// resistances are computed (Greenwood's formula is `O(n^2)`).
 pub const MAX_SAMPLE_SPOTS: usize = 20_000;
-
-/// Extra seeds drawn for the pull-off scatter of one realisation.
-pub const EXTRA_SEEDS: u64 = 4;
-
-/// Largest `summits x points` for which [`EXTRA_SEEDS`] more populations
-/// are summed (a few tenths of a second in a release build).
-pub const SEED_SPREAD_BUDGET: f64 = 2e7;
 
 /// Draws the plan's population and sums it over `program`.
 fn run_montecarlo(
@@ -167,31 +161,10 @@ fn run_montecarlo(
         }
         None => None,
     };
-    let mut seed_pull_offs = Vec::new();
-    if plan.pull_off && (mc.summits as f64) * (curve.program.points as f64) <= SEED_SPREAD_BUDGET {
-        for k in 1..=EXTRA_SEEDS {
-            let mut other = mc.clone();
-            other.spec.seed = mc.spec.seed.wrapping_add(k);
-            let spec = other.population_spec(&plan.surface)?;
-            let population = Arc::new(Population::sample(&spec, plan.distribution.as_ref())?);
-            let law = match mc.law.scaling() {
-                None => SummitLaw::fixed(run_law.clone(), mc.law.reference_radius())?,
-                Some(_) => mc.law.clone(),
-            };
-            let c = MonteCarlo::new(population, law)?
-                .curve(
-                    &curve.program,
-                    &crate::loading::Observables::standard(true, false, false),
-                )?
-                .scaled(mc.factor);
-            seed_pull_offs.push((other.spec.seed, c.sampled_pull_off().map(|p| p.load)));
-        }
-    }
     Ok(McResults {
         records: LegRecords::new(&plan.quantities, &mc_curve),
         spots,
         contacts,
-        seed_pull_offs,
         pull_off: mc_curve.sampled_pull_off(),
         curve: mc_curve,
         z,
@@ -222,6 +195,20 @@ fn curve_with_progress(
         approach: states,
         retract,
     })
+}
+
+/// Default `switch.confidence`: the margin uses the pull-off only the 5 %
+/// most tensile populations exceed.
+pub const DEFAULT_CONFIDENCE: f64 = 0.95;
+
+impl Plan {
+    /// The confidence of the stiction margin (`switch.confidence`).
+    pub fn stiction_confidence(&self) -> f64 {
+        self.scene
+            .switch
+            .and_then(|s| s.confidence)
+            .unwrap_or(DEFAULT_CONFIDENCE)
+    }
 }
 
 impl Results {
@@ -300,6 +287,12 @@ impl Plan {
         } else {
             None
         };
+        let pull_off_population = match &self.pull_off_population {
+            Ok(p) => Some(super::population::run(
+                self, p, model, &run_law, &program, pull_off,
+            )?),
+            Err(_) => None,
+        };
         // A continuous model's energy is integrated to the scene's
         // tolerance; a discrete one (a finite sample of summits) has step
         // loads, and its trapezoid on the program is the honest estimate.
@@ -327,7 +320,11 @@ impl Plan {
             .flat_map(|l| l.iter())
             .map(|s| s.evaluations)
             .sum();
-        let warnings = super::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
+        let mut warnings = super::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
+        if let Some(r) = &pull_off_population {
+            warnings.extend(r.note.clone());
+            warnings.extend(super::population::warning(r, self.budget.rtol));
+        }
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
             None => None,
@@ -343,9 +340,11 @@ impl Plan {
             listed: Vec::new(),
             regimes: None,
             stiction: None,
+            stiction_odds: None,
             elastic_approach: None,
             warnings,
             topography: None,
+            pull_off_population,
         })
         .and_then(|r| self.finish(model, r))
     }
@@ -418,8 +417,25 @@ impl Plan {
                 Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
         }
         if let Some(sw) = &self.switch {
-            let pull = r.pull_off.map_or(0.0, |p| p.load.min(0.0));
-            r.stiction = Some(sw.stiction(pull)?);
+            // The populations' pull-offs when there are any: a switch is one
+            // realisation; the integral's pull-off otherwise.
+            let stats = r
+                .pull_off_population
+                .as_ref()
+                .and_then(|p| p.statistics.as_ref());
+            match stats {
+                Some(s) => {
+                    let odds = sw
+                        .stiction_odds(s, self.stiction_confidence())
+                        .map_err(|e| e.renamed("switch.confidence"))?;
+                    r.stiction = Some(odds.verdict);
+                    r.stiction_odds = Some(odds);
+                }
+                None => {
+                    let pull = r.pull_off.map_or(0.0, |p| p.load.min(0.0));
+                    r.stiction = Some(sw.stiction(pull)?);
+                }
+            }
         }
         if let Some(res) = &self.resistance {
             if res.interaction() == Interaction::Greenwood {

@@ -197,7 +197,8 @@ mod tests {
             Scene::from_toml(&DEFAULT_SCENE.replacen("points = 200", "points = 20", 1)).unwrap();
         let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
         let results = plan.run().unwrap();
-        assert!(results.warnings.is_empty(), "{:?}", results.warnings);
+        let quiet = |w: &[String]| w.iter().all(|s| s.starts_with("pull-off:"));
+        assert!(quiet(&results.warnings), "{:?}", results.warnings);
         let mut e = Some(-1e-30);
         let w = run_warnings(&plan, &results.curve, &mut e).unwrap();
         assert_eq!(e, Some(0.0));
@@ -209,9 +210,7 @@ mod tests {
             "{err}"
         );
         let mut e = Some(1e-12);
-        assert!(run_warnings(&plan, &results.curve, &mut e)
-            .unwrap()
-            .is_empty());
+        assert!(quiet(&run_warnings(&plan, &results.curve, &mut e).unwrap()));
         assert_eq!(e, Some(1e-12));
     }
 

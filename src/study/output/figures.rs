@@ -6,7 +6,7 @@ use super::{curve_csv, Summary};
 use crate::error::{Error, Result};
 use crate::loading::State;
 use crate::study::plan::Plan;
-use crate::study::plot::{Chart, Series};
+use crate::study::plot::{Chart, Histogram, Series};
 use crate::study::run::Results;
 use std::path::{Path, PathBuf};
 
@@ -49,7 +49,7 @@ pub fn si_prefix_area(values: impl Iterator<Item = f64>) -> (f64, &'static str) 
 /// this time are removed from the directory, so no output of an earlier run
 /// (a `montecarlo.csv` beside a run without a population) is left to be
 /// read as this run's.
-pub const OUTPUT_FILES: [&str; 7] = [
+pub const OUTPUT_FILES: [&str; 8] = [
     "curve.csv",
     "montecarlo.csv",
     "summary.json",
@@ -57,6 +57,7 @@ pub const OUTPUT_FILES: [&str; 7] = [
     "load_separation_adhesive.svg",
     "area_load.svg",
     "count_load.svg",
+    "pull_off_distribution.svg",
 ];
 
 /// The first numeric cell of a CSV text that is not finite:
@@ -207,7 +208,38 @@ pub fn write_outputs(
         written.push(path);
     }
     written.extend(super::topography::write_charts(plan, dir)?);
+    if let Some(h) = pull_off_histogram(plan, results) {
+        let path = dir.join("pull_off_distribution.svg");
+        h.write_svg(&path, 800, 500)?;
+        written.push(path);
+    }
     Ok(written)
+}
+
+/// The pull-off distribution over the populations, with the integral's
+/// pull-off and the 5 % and 95 % quantiles marked.
+fn pull_off_histogram(plan: &Plan, results: &Results) -> Option<Histogram> {
+    let r = results.pull_off_population.as_ref()?;
+    let s = r.statistics.as_ref()?;
+    let (u, p) = si_prefix(s.values.iter().copied().chain(r.integral));
+    let title = plan.scene.title.clone().unwrap_or_default();
+    let mut markers = vec![
+        ("5 % quantile".to_string(), s.quantile(0.05) / u),
+        ("95 % quantile".to_string(), s.quantile(0.95) / u),
+    ];
+    if let Some(i) = r.integral {
+        markers.insert(0, ("GW integral".to_string(), i / u));
+    }
+    Some(Histogram {
+        title: format!(
+            "{title}: pull-off of one switch ({} summits, {} populations)",
+            r.plan.summits,
+            s.len()
+        ),
+        x_label: format!("pull-off force ({p}N), < 0 tensile"),
+        values: s.values.iter().map(|v| v / u).collect(),
+        markers,
+    })
 }
 
 /// The charts of a run: `(file name, chart)`.
@@ -255,21 +287,41 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 y_range: None,
             },
         ));
-        // The adhesive part is invisible at full scale: zoom on it.
-        if let Some(p) = results.pull_off {
-            let (ps, pp) = si_prefix([p.load].into_iter());
-            let series = legs
+        // The adhesive part is invisible at full scale: zoom on it, with a
+        // few switches' own retraction curves (their pull-offs can be far
+        // deeper than the integral's).
+        let examples = results
+            .pull_off_population
+            .as_ref()
+            .map_or(&[][..], |p| &p.examples[..]);
+        let deepest = examples
+            .iter()
+            .flat_map(|(_, c)| c.iter().map(|p| p.1))
+            .chain(results.pull_off.map(|p| p.load))
+            .fold(0.0f64, f64::min);
+        if deepest < 0.0 {
+            let (ps, pp) = si_prefix([deepest].into_iter());
+            let mut series: Vec<Series> = legs
                 .iter()
                 .map(|(name, leg)| Series {
-                    label: (*name).into(),
+                    label: format!("{name} (GW integral)"),
                     points: pick(&|s| Some((s.separation / ds, s.load()? / ps)), leg),
                 })
                 .collect();
-            let m = p.load.abs() / ps;
+            for (seed, c) in examples {
+                series.push(Series {
+                    label: format!("one switch (seed {seed}), retraction"),
+                    points: c.iter().map(|&(d, p)| (d / ds, p / ps)).collect(),
+                });
+            }
+            let m = deepest.abs() / ps;
+            let integral = results
+                .pull_off
+                .map_or("none".into(), |p| format!("{:.3} {pp}N", p.load / ps));
             out.push((
                 "load_separation_adhesive.svg".into(),
                 Chart {
-                    title: format!("{title}: adhesive range, pull-off {:.3} {pp}N", p.load / ps),
+                    title: format!("{title}: adhesive range, integral pull-off {integral}"),
                     x_label: format!("separation d ({dp}m)"),
                     y_label: format!("load P ({pp}N), < 0 tensile"),
                     series,

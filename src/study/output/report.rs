@@ -2,7 +2,7 @@
 //! numbers with their units, one line each; the states' quantities follow
 //! the plan's quantity set.
 
-use super::summary::{McSummary, Summary};
+use super::summary::{McSummary, PopulationSummary, Summary};
 use crate::study::plan::Plan;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -66,6 +66,9 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
         (None, false) => "-".into(),
     };
     let _ = writeln!(out, "  pull-off force     {pull}");
+    if let Some(p) = &summary.pull_off_population {
+        population(&mut out, p);
+    }
     let _ = writeln!(
         out,
         "  hysteresis energy  {}",
@@ -109,6 +112,24 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
         let _ = writeln!(out, "    {}", f.display());
     }
     out
+}
+
+fn population(out: &mut String, p: &PopulationSummary) {
+    if let (Some(mean), Some(p05), Some(p95)) = (p.mean_n, p.p05_n, p.p95_n) {
+        {
+            let _ = writeln!(
+                out,
+                "    one switch       {mean:.4e} N +- {:.1e} N (mean over {} populations of {} summits; 5 %-95 %: {p05:.4e} .. {p95:.4e} N; {} summits carry the integral's pull-off)",
+                p.mean_se_n.unwrap_or(f64::NAN),
+                p.seeds,
+                p.summits,
+                p.carriers.map_or("no".into(), |c| format!("{c:.3}"))
+            );
+        }
+    }
+    if let Some(n) = &p.note {
+        let _ = writeln!(out, "    ({n})");
+    }
 }
 
 fn montecarlo(out: &mut String, m: &McSummary) {
@@ -202,12 +223,27 @@ fn features(out: &mut String, summary: &Summary) {
     if let Some(s) = &summary.stiction {
         let _ = writeln!(
             out,
-            "  stiction           pull-off {:.4e} N, spring k x travel {:.4e} N, margin {:.4e} N: {}",
+            "  stiction           pull-off {:.4e} N ({}), spring k x travel {:.4e} N, margin {:.4e} N: {}",
             s.pull_off_n,
+            if s.pull_off_basis == "population" {
+                format!(
+                    "exceeded by {:.0} % of the populations",
+                    100.0 * (1.0 - s.confidence)
+                )
+            } else {
+                "the integral's".into()
+            },
             s.restoring_force_n,
             s.margin_n,
             if s.sticks { "STICKS (margin < 0)" } else { "reopens" }
         );
+        if let Some((lo, hi)) = s.sticks_probability_interval {
+            let _ = writeln!(
+                out,
+                "                     probability that a switch sticks {:.3} (95 %: {lo:.3} .. {hi:.3})",
+                s.sticks_probability
+            );
+        }
     }
 }
 

@@ -39,6 +39,10 @@ pub struct Summary {
     pub pull_off_load: Option<f64>,
     /// Separation of the pull-off (m).
     pub pull_off_separation: Option<f64>,
+    /// The pull-off of one switch over populations of its `eta A_n`
+    /// summits, with a finite surface whose pull-off is searched.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pull_off_population: Option<PopulationSummary>,
     /// Energy lost per cycle (J).
     pub hysteresis_energy: Option<f64>,
     /// Requested relative tolerance.
@@ -126,6 +130,99 @@ pub struct StictionSummary {
     pub margin_n: f64,
     /// Whether the margin is negative.
     pub sticks: bool,
+    /// Probability that one switch sticks: the fraction of the populations
+    /// whose pull-off exceeds the restoring force (0 or 1 on the integral
+    /// basis).
+    pub sticks_probability: f64,
+    /// Its Clopper–Pearson 95 % interval (population basis only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sticks_probability_interval: Option<(f64, f64)>,
+    /// Confidence of `pull_off_N` (population basis: its `1 - confidence`
+    /// quantile; `switch.confidence`).
+    pub confidence: f64,
+    /// `"population"` (the populations' quantile) or `"integral"` (the GW
+    /// integral's pull-off).
+    pub pull_off_basis: &'static str,
+}
+
+/// The pull-off distribution over populations (N, signed: negative is
+/// tensile; quantiles ascend, so `p05_N` is the more tensile end).
+#[derive(Debug, Clone, Serialize)]
+pub struct PopulationSummary {
+    /// Populations drawn.
+    pub seeds: usize,
+    /// Seed of the first (the others follow it).
+    pub first_seed: u64,
+    /// Summits of each, `eta A_n` rounded.
+    pub summits: usize,
+    /// `"exact"` (each the `[montecarlo]` population of its seed) or
+    /// `"tail"` (the summits above the flat's reach, drawn from the top).
+    pub draw: &'static str,
+    /// Mean pull-off.
+    #[serde(rename = "mean_N")]
+    pub mean_n: Option<f64>,
+    /// Its standard error, `std / sqrt(seeds)`.
+    #[serde(rename = "mean_se_N")]
+    pub mean_se_n: Option<f64>,
+    /// Median.
+    #[serde(rename = "median_N")]
+    pub median_n: Option<f64>,
+    /// Sample standard deviation (divisor `n - 1`).
+    #[serde(rename = "std_N")]
+    pub std_n: Option<f64>,
+    /// 5 % quantile (type 7).
+    #[serde(rename = "p05_N")]
+    pub p05_n: Option<f64>,
+    /// Its distribution-free 95 % interval.
+    #[serde(rename = "p05_interval_N")]
+    pub p05_interval_n: Option<(f64, f64)>,
+    /// 95 % quantile.
+    #[serde(rename = "p95_N")]
+    pub p95_n: Option<f64>,
+    /// Its distribution-free 95 % interval.
+    #[serde(rename = "p95_interval_N")]
+    pub p95_interval_n: Option<(f64, f64)>,
+    /// Expected summits in contact at the integral's pull-off separation.
+    pub carriers: Option<f64>,
+    /// The integral's pull-off, for comparison.
+    #[serde(rename = "integral_N")]
+    pub integral_n: Option<f64>,
+    /// Numerical error: each population's minimum is sampled at the
+    /// program's separations.
+    pub numerical_error: &'static str,
+    /// Why none or fewer were drawn.
+    pub note: Option<String>,
+    /// Wall-clock time (s).
+    pub seconds: f64,
+}
+
+impl PopulationSummary {
+    fn new(r: &crate::study::population::PopulationResults) -> PopulationSummary {
+        let s = r.statistics.as_ref();
+        PopulationSummary {
+            seeds: r.drawn,
+            first_seed: r.plan.first_seed,
+            summits: r.plan.summits,
+            draw: match r.plan.draw {
+                crate::montecarlo::pull_off::Draw::Tail => "tail",
+                _ => "exact",
+            },
+            mean_n: s.map(|s| s.mean()),
+            mean_se_n: s.map(|s| s.mean_standard_error()),
+            median_n: s.map(|s| s.quantile(0.5)),
+            std_n: s.map(|s| s.std()),
+            p05_n: s.map(|s| s.quantile(0.05)),
+            p05_interval_n: s.map(|s| s.quantile_interval(0.05)),
+            p95_n: s.map(|s| s.quantile(0.95)),
+            p95_interval_n: s.map(|s| s.quantile_interval(0.95)),
+            carriers: r.carriers,
+            integral_n: r.integral,
+            numerical_error: "each population's pull-off is its most tensile load at the \
+                              program's separations (within one step of its true minimum)",
+            note: r.note.clone(),
+            seconds: r.seconds,
+        }
+    }
 }
 
 /// The Monte Carlo part of a summary.
@@ -150,10 +247,9 @@ pub struct McSummary {
     /// detach at their own separations), so the two differ by far more than
     /// the standard errors of the curve.
     pub integral_sampled_pull_off_load: Option<f64>,
-    /// Pull-offs (N) of populations with seeds `seed + 1 ..` (the scatter
-    /// of one switch's pull-off; empty when the population is too large,
-    /// see [`crate::study::run::SEED_SPREAD_BUDGET`]); `null` entries have
-    /// no tensile load.
+    /// Pull-offs (N) of the populations with seeds `seed + 1 ..` (the
+    /// scatter of one switch's pull-off, from `pull_off_population`; empty
+    /// without it); `null` entries have no tensile load.
     pub pull_off_other_seeds: Vec<Option<f64>>,
     /// Mean of the pull-offs of all seeds drawn (this one and the others).
     pub pull_off_seed_mean: Option<f64>,
@@ -207,6 +303,10 @@ impl Summary {
             headlines: plan.quantities.headlines(&results.records.approach),
             pull_off_load: results.pull_off.map(|p| p.load),
             pull_off_separation: results.pull_off.map(|p| p.separation),
+            pull_off_population: results
+                .pull_off_population
+                .as_ref()
+                .map(PopulationSummary::new),
             hysteresis_energy: results.hysteresis_energy,
             rtol: plan.budget.rtol,
             law_model_error: plan.law.measured_error.filter(|_| adhesive),
@@ -224,6 +324,18 @@ impl Summary {
                 restoring_force_n: s.restoring_force,
                 margin_n: s.margin,
                 sticks: s.sticks,
+                sticks_probability: results
+                    .stiction_odds
+                    .map_or(f64::from(u8::from(s.sticks)), |o| o.probability),
+                sticks_probability_interval: results.stiction_odds.map(|o| o.interval),
+                confidence: results
+                    .stiction_odds
+                    .map_or(plan.stiction_confidence(), |o| o.confidence),
+                pull_off_basis: if results.stiction_odds.is_some() {
+                    "population"
+                } else {
+                    "integral"
+                },
             }),
             states: plan.listed.as_ref().map(|_| {
                 results
@@ -363,18 +475,26 @@ impl McSummary {
                 })
             })
             .max_by(|a, b| a.0.total_cmp(&b.0));
-        let seeds: Vec<f64> = m
-            .pull_off
-            .map(|p| p.load)
-            .into_iter()
-            .chain(m.seed_pull_offs.iter().filter_map(|s| s.1))
-            .collect();
-        let (mean, std) = mean_std(&seeds);
         let mc = plan.montecarlo.as_ref();
+        // The pull-off populations start with this population's seed when
+        // they draw the same summits: the others are its other seeds.
+        let same = |p: &crate::study::population::PopulationResults| {
+            mc.is_some_and(|m| m.spec.seed == p.plan.first_seed && m.summits == p.plan.summits)
+        };
+        let stats = results
+            .pull_off_population
+            .as_ref()
+            .filter(|p| same(p))
+            .and_then(|p| p.statistics.as_ref());
         McSummary {
-            pull_off_other_seeds: m.seed_pull_offs.iter().map(|s| s.1).collect(),
-            pull_off_seed_mean: mean,
-            pull_off_seed_std: std,
+            pull_off_other_seeds: stats.map_or(Vec::new(), |s| {
+                s.values[1..]
+                    .iter()
+                    .map(|&v| (v < 0.0).then_some(v))
+                    .collect()
+            }),
+            pull_off_seed_mean: stats.map(|s| s.mean()),
+            pull_off_seed_std: stats.filter(|s| s.len() > 1).map(|s| s.std()),
             states_without_standard_error: m.contacts.iter().filter(|&&c| c < min).count(),
             summits: mc.map_or(0, |p| p.summits),
             seed: mc.map_or(0, |p| p.spec.seed),
@@ -393,17 +513,4 @@ impl McSummary {
             }),
         }
     }
-}
-
-/// Mean and sample standard deviation (divisor `n - 1`) of `x`; `None`
-/// for the deviation with fewer than two values.
-fn mean_std(x: &[f64]) -> (Option<f64>, Option<f64>) {
-    if x.is_empty() {
-        return (None, None);
-    }
-    let n = x.len() as f64;
-    let mean = x.iter().sum::<f64>() / n;
-    let std = (x.len() >= 2)
-        .then(|| (x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt());
-    (Some(mean), std)
 }

@@ -76,6 +76,14 @@ impl Plan {
             )?),
             None => None,
         };
+        let pull_off_population = super::population::plan(
+            scene,
+            legs.pull_off,
+            &surface,
+            distribution.as_ref(),
+            &law,
+            &mut decisions,
+        )?;
         let switch = match &scene.switch {
             Some(s) => {
                 Some(Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch"))?)
@@ -87,6 +95,7 @@ impl Plan {
             mode,
             budget,
             montecarlo,
+            pull_off_population,
             contact,
             surface,
             distribution,

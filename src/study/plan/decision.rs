@@ -189,6 +189,17 @@ pub enum Decision {
         /// Whether they are loads (else separations).
         loads: bool,
     },
+    /// The pull-off distribution over populations of the surface's summits.
+    PullOffPopulation {
+        /// Populations asked for (0: none).
+        seeds: usize,
+        /// Summits of each.
+        summits: usize,
+        /// How they are drawn (`None`: not drawn).
+        draw: Option<crate::montecarlo::pull_off::Draw>,
+        /// Why, in a sentence.
+        why: String,
+    },
     /// Which model of a measured map (`[surface] topography`).
     Topography {
         /// The choice, in a few words.
@@ -214,6 +225,7 @@ impl Decision {
             Decision::Resistance { .. } => "resistance",
             Decision::Listed { .. } => "listed states",
             Decision::Topography { .. } => "topography",
+            Decision::PullOffPopulation { .. } => "pull-off spread",
         }
     }
 
@@ -252,6 +264,13 @@ impl Decision {
                 format!("{count} {}", if *loads { "loads" } else { "separations" })
             }
             Decision::Topography { choice, .. } => choice.clone(),
+            Decision::PullOffPopulation { seeds, draw, .. } => match draw {
+                Some(crate::montecarlo::pull_off::Draw::Tail) => {
+                    format!("{seeds} populations (tails)")
+                }
+                Some(_) => format!("{seeds} populations"),
+                None => "none".into(),
+            },
         }
     }
 
@@ -368,6 +387,7 @@ impl Decision {
                 if *loads { "largest load" } else { "closest separation" }
             ),
             Decision::Topography { why, .. } => why.clone(),
+            Decision::PullOffPopulation { why, .. } => why.clone(),
         }
     }
 }

@@ -32,6 +32,7 @@ mod inputs;
 mod law;
 mod montecarlo;
 mod outputs;
+pub mod population;
 mod preview;
 mod program;
 mod topography;
@@ -129,6 +130,10 @@ pub struct Plan {
     pub hysteresis_energy: bool,
     /// The explicit random population, when the scene asks for one.
     pub montecarlo: Option<McPlan>,
+    /// The populations whose pull-offs give the pull-off distribution, or
+    /// why there are none.
+    pub pull_off_population:
+        std::result::Result<population::PopulationPlan, population::NoPopulation>,
     /// The decisions, in order.
     pub decisions: Vec<Decision>,
     /// Plastic data of the yielding body, when the materials give it.

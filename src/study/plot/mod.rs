@@ -1,12 +1,14 @@
 //! SVG line charts of result curves (plotters, SVG backend; no fonts or
 //! system libraries needed).
 
+mod histogram;
 mod loglog;
 mod map;
 pub mod plastic;
 pub mod punch;
 pub mod surface;
 
+pub use histogram::Histogram;
 pub use map::{adhesion_map_csv, write_adhesion_map};
 
 use crate::error::{Error, Result};

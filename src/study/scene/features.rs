@@ -217,6 +217,9 @@ impl Scene {
             positive("switch.spring_constant", s.spring_constant)?;
             positive("switch.travel", s.travel)?;
             Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch"))?;
+            if let Some(c) = s.confidence {
+                Allowed::open(0.0, 1.0).check("switch.confidence", c)?;
+            }
         }
         Ok(())
     }

@@ -23,7 +23,8 @@ pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, ElectricalSpec, LawSpec, MaterialsSpec, MonteCarloSpec,
-    OutputsSpec, ProgramSpec, Scene, SurfaceSpec, SwitchSpec, MAX_LISTED_STATES,
+    OutputsSpec, ProgramSpec, Scene, SurfaceSpec, SwitchSpec, DEFAULT_POPULATIONS, DEFAULT_SEED,
+    MAX_LISTED_STATES, MAX_POPULATIONS,
 };
 
 /// The default scene (`examples/scenes/mems-gold.toml`), embedded so that
@@ -84,7 +85,8 @@ mod tests {
             ("summits = 2000000000", "montecarlo.summits"),
             ("radius_log_std = -0.1", "montecarlo.radius_log_std"),
             ("radius_log_std = nan", "montecarlo.radius_log_std"),
-            ("seeds = 3", "montecarlo.seeds"),
+            ("seeds = 0", "montecarlo.seeds"),
+            ("seeds = 1000000000", "montecarlo.seeds"),
             ("seed = -1", "montecarlo.seed"),
         ] {
             let text = format!("{DEFAULT_SCENE}\n[montecarlo]\n{extra}\n");

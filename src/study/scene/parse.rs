@@ -73,6 +73,16 @@ impl Scene {
                 }
             }
             non_negative("montecarlo.radius_log_std", mc.radius_log_std)?;
+            if let Some(n) = mc.seeds {
+                let max = super::schema::MAX_POPULATIONS;
+                if n == 0 || n > max {
+                    return Err(Error::OutOfRange {
+                        name: "montecarlo.seeds".into(),
+                        value: n as f64,
+                        allowed: Allowed::closed(1.0, max as f64),
+                    });
+                }
+            }
         }
         costs(self)?;
         Ok(())

@@ -115,6 +115,11 @@ pub struct SwitchSpec {
     pub spring_constant: f64,
     /// Travel (m), > 0: the restoring force is `k x travel`.
     pub travel: f64,
+    /// Confidence of the stiction margin, in (0, 1); default 0.95: the
+    /// margin uses the pull-off that only the 5 % most tensile
+    /// populations exceed (with the population basis).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub confidence: Option<f64>,
 }
 
 /// `[montecarlo]`: an explicit random population of summits drawn from the
@@ -127,14 +132,33 @@ pub struct MonteCarloSpec {
     /// then measure the distance to the expectation).
     #[serde(default)]
     pub summits: Option<usize>,
-    /// Seed of the population (default 0); sweeps set it per point.
-    #[serde(default)]
+    /// Seed of the population (default 1); sweeps set it per point. The
+    /// pull-off populations use seeds `seed, seed + 1, ...`.
+    #[serde(default = "default_seed")]
     pub seed: u64,
+    /// Number of populations of `eta A_n` summits whose pull-offs give the
+    /// pull-off distribution (`pull_off_population` in the summary),
+    /// >= 1; default [`DEFAULT_POPULATIONS`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seeds: Option<usize>,
     /// Standard deviation of `ln R` (lognormal radii with median
     /// `surface.radius`), >= 0; default 0 (every summit of radius R, as in
     /// GW). Not available for Maugis–Dugdale or calibrated laws.
     #[serde(default)]
     pub radius_log_std: f64,
+}
+
+/// Default `montecarlo.seed`.
+pub const DEFAULT_SEED: u64 = 1;
+
+/// Default number of pull-off populations (`montecarlo.seeds`).
+pub const DEFAULT_POPULATIONS: usize = 100;
+
+/// Most pull-off populations a scene may ask for.
+pub const MAX_POPULATIONS: usize = 100_000;
+
+fn default_seed() -> u64 {
+    DEFAULT_SEED
 }
 
 /// `[materials]`: Young's moduli (Pa) and Poisson ratios of body 1 (the

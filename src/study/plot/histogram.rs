@@ -1,0 +1,111 @@
+//! A histogram of a sample with marked values: the pull-off distribution
+//! of a switch's populations, with the integral's pull-off and the
+//! quantiles marked.
+
+use super::{tick, COLOURS};
+use crate::error::{Error, Result};
+use plotters::prelude::*;
+use std::path::Path;
+
+/// A histogram chart: the sample (in display units), its bins, and
+/// labelled vertical markers.
+#[derive(Debug, Clone)]
+pub struct Histogram {
+    /// Title on top.
+    pub title: String,
+    /// x-axis label with its unit.
+    pub x_label: String,
+    /// The sample, in display units.
+    pub values: Vec<f64>,
+    /// Vertical markers `(label, x)` in display units.
+    pub markers: Vec<(String, f64)>,
+}
+
+impl Histogram {
+    /// Writes the histogram (counts in `sqrt(n)` bins, 5 to 40) as an SVG
+    /// file of `width x height` pixels.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `chart` without finite values; an
+    /// [`Error::Io`] when the file cannot be written.
+    pub fn write_svg(&self, path: &Path, width: u32, height: u32) -> Result<()> {
+        let v: Vec<f64> = self
+            .values
+            .iter()
+            .copied()
+            .filter(|x| x.is_finite())
+            .collect();
+        if v.is_empty() {
+            return Err(Error::invalid("chart", "no finite value to draw"));
+        }
+        let fail = |e: String| Error::io(path.display(), e);
+        let marks = self.markers.iter().map(|m| m.1).filter(|x| x.is_finite());
+        let lo = v
+            .iter()
+            .copied()
+            .chain(marks.clone())
+            .fold(f64::INFINITY, f64::min);
+        let hi = v
+            .iter()
+            .copied()
+            .chain(marks)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let span = if hi > lo { hi - lo } else { lo.abs().max(1.0) };
+        let (x0, x1) = (lo - 0.05 * span, hi + 0.05 * span);
+        let bins = ((v.len() as f64).sqrt() as usize).clamp(5, 40);
+        let w = (hi - lo).max(span * 1e-9) / bins as f64;
+        let mut counts = vec![0usize; bins];
+        for x in &v {
+            counts[(((x - lo) / w) as usize).min(bins - 1)] += 1;
+        }
+        let top = *counts.iter().max().unwrap_or(&1) as f64 * 1.15;
+        let root = SVGBackend::new(path, (width, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(&self.title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(48)
+            .y_label_area_size(64)
+            .build_cartesian_2d(x0..x1, 0.0..top)
+            .map_err(|e| fail(e.to_string()))?;
+        chart
+            .configure_mesh()
+            .x_desc(&self.x_label)
+            .y_desc("populations")
+            .label_style(("sans-serif", 14))
+            .axis_desc_style(("sans-serif", 16))
+            .x_label_formatter(&|x| tick(*x))
+            .y_label_formatter(&|y| format!("{y:.0}"))
+            .draw()
+            .map_err(|e| fail(e.to_string()))?;
+        let bar = COLOURS[0];
+        chart
+            .draw_series(counts.iter().enumerate().map(|(k, &c)| {
+                let a = lo + k as f64 * w;
+                Rectangle::new([(a, 0.0), (a + w, c as f64)], bar.mix(0.5).filled())
+            }))
+            .map_err(|e| fail(e.to_string()))?
+            .label(format!("{} populations", v.len()))
+            .legend(move |(x, y)| {
+                Rectangle::new([(x, y - 5), (x + 20, y + 5)], bar.mix(0.5).filled())
+            });
+        for (k, (label, x)) in self.markers.iter().enumerate() {
+            let c = COLOURS[1 + k % (COLOURS.len() - 1)];
+            let style = c.stroke_width(2);
+            chart
+                .draw_series(LineSeries::new(vec![(*x, 0.0), (*x, top)], style))
+                .map_err(|e| fail(e.to_string()))?
+                .label(label.clone())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 14))
+            .draw()
+            .map_err(|e| fail(e.to_string()))?;
+        root.present().map_err(|e| fail(e.to_string()))
+    }
+}

@@ -1,0 +1,217 @@
+//! Running the pull-off distribution of a plan: the populations' pull-offs
+//! beside the integral's, the number of summits that carry the integral's
+//! pull-off, and what the two say together.
+
+use super::plan::population::PopulationPlan;
+use super::plan::Plan;
+use crate::error::Result;
+use crate::law::AsperityLaw;
+use crate::loading::{History, LoadingModel, LoadingProgram, Observables, PullOff};
+use crate::montecarlo::pull_off::{
+    population_model, pull_off_populations, retraction_loads, Draw, PullOffStatistics,
+};
+use crate::montecarlo::{RadiusSpec, SummitLaw};
+use std::sync::Arc;
+use std::time::Instant;
+
+/// Populations whose retraction curves the charts draw.
+pub const EXAMPLE_CURVES: usize = 3;
+
+/// Fewest populations drawn when the cost bound cuts their number.
+pub const MIN_POPULATIONS: usize = 20;
+
+/// Largest estimated CPU time (s) of the populations; beyond it fewer are
+/// drawn (never below [`MIN_POPULATIONS`]) and the summary says so.
+pub const POPULATION_CPU_BUDGET: f64 = 1.0;
+
+/// Estimated CPU time (ns) to draw one summit exactly (two exponential
+/// variates' worth: the stream and the prefix sum).
+const DRAW_NS: f64 = 10.0;
+
+/// The pull-off distribution of a run.
+#[derive(Debug, Clone)]
+pub struct PopulationResults {
+    /// The plan's populations.
+    pub plan: PopulationPlan,
+    /// Populations drawn (fewer than asked when the cost bound cut them).
+    pub drawn: usize,
+    /// Their pull-offs, `None` when skipped.
+    pub statistics: Option<PullOffStatistics>,
+    /// Expected summits in contact at the integral's pull-off separation
+    /// (on retraction).
+    pub carriers: Option<f64>,
+    /// The integral's pull-off (N).
+    pub integral: Option<f64>,
+    /// Why no populations were drawn, or why fewer than asked.
+    pub note: Option<String>,
+    /// The retraction legs `(separation, load)` of the first
+    /// [`EXAMPLE_CURVES`] populations, by seed, for the charts.
+    pub examples: Vec<(u64, Vec<(f64, f64)>)>,
+    /// Wall-clock time (s).
+    pub seconds: f64,
+}
+
+/// The summit law of the populations: the run's law for one radius (as the
+/// Monte Carlo mode sums it), rescaled per radius with a spread.
+fn summit_law(
+    plan: &Plan,
+    run_law: &Arc<dyn AsperityLaw>,
+    p: &PopulationPlan,
+) -> Result<SummitLaw> {
+    let r = plan.surface.radius;
+    match (p.spec.radius, plan.law.law.radius_scaling()) {
+        (RadiusSpec::LogNormal { .. }, Some(s)) => SummitLaw::scaled(plan.law.law.clone(), r, s),
+        _ => SummitLaw::fixed(run_law.clone(), r),
+    }
+}
+
+/// Estimated CPU seconds of one population over `program`.
+fn cost_per_population(
+    plan: &Plan,
+    p: &PopulationPlan,
+    law: &SummitLaw,
+    program: &LoadingProgram,
+) -> f64 {
+    let n = p.summits as f64;
+    let draw = match p.draw {
+        Draw::Exact => n * DRAW_NS,
+        _ => 0.0,
+    };
+    let cut = law.law().cutoff_interference();
+    let sigma = plan.surface.sigma;
+    let in_range: f64 = program
+        .separations()
+        .iter()
+        .map(|&d| {
+            if cut.is_finite() {
+                n * plan.distribution.tail((d + cut) / sigma)
+            } else {
+                n
+            }
+        })
+        .sum();
+    (draw + in_range * law.law().cost_ns()) * 1e-9
+}
+
+/// The pull-off distribution of `plan` over `program` on `model` (the
+/// integral), beside its pull-off `pull_off`.
+///
+/// # Errors
+/// As [`pull_off_populations`] and the model's states.
+pub fn run(
+    plan: &Plan,
+    p: &PopulationPlan,
+    model: &dyn LoadingModel,
+    run_law: &Arc<dyn AsperityLaw>,
+    program: &LoadingProgram,
+    pull_off: Option<PullOff>,
+) -> Result<PopulationResults> {
+    let t0 = Instant::now();
+    let carriers = match pull_off {
+        Some(po) => model
+            .state(
+                po.separation,
+                History::Retract {
+                    closest: program.closest,
+                },
+                &Observables::standard(false, false, true),
+            )?
+            .count(),
+        None => None,
+    };
+    let mut out = PopulationResults {
+        plan: p.clone(),
+        drawn: 0,
+        statistics: None,
+        carriers,
+        integral: pull_off.map(|x| x.load),
+        note: None,
+        examples: Vec::new(),
+        seconds: 0.0,
+    };
+    let rtol = plan.budget.rtol;
+    if let Some(c) = carriers.filter(|&c| c > 0.0 && 1.0 / c.sqrt() < rtol) {
+        out.note = Some(format!(
+            "populations skipped: {c:.3e} summits carry the integral's pull-off, so one \
+             switch's pull-off scatters by ~1/sqrt({c:.3e}) = {:.1e} < rtol = {rtol:e} around it",
+            1.0 / c.sqrt()
+        ));
+        out.seconds = t0.elapsed().as_secs_f64();
+        return Ok(out);
+    }
+    let law = summit_law(plan, run_law, p)?;
+    let per = cost_per_population(plan, p, &law, program);
+    let affordable = (POPULATION_CPU_BUDGET / per.max(1e-12)).floor() as usize;
+    let drawn = p.seeds.min(affordable.max(MIN_POPULATIONS));
+    if drawn < p.seeds {
+        out.note = Some(format!(
+            "{drawn} of the {} populations asked for drawn: each costs an estimated {per:.2e} s \
+             of CPU ({} summits{}), and the populations are held to about \
+             {POPULATION_CPU_BUDGET} s (montecarlo.seeds sets the number)",
+            p.seeds,
+            p.summits,
+            if law.law().cutoff_interference().is_finite() {
+                ""
+            } else {
+                ", every one in range of this long-range law"
+            }
+        ));
+    }
+    let values = pull_off_populations(
+        &p.spec,
+        plan.distribution.as_ref(),
+        &law,
+        program,
+        p.factor,
+        p.first_seed,
+        drawn,
+        p.draw,
+    )?;
+    out.drawn = drawn;
+    out.statistics = Some(PullOffStatistics::new(values)?);
+    for k in 0..EXAMPLE_CURVES.min(drawn) as u64 {
+        let seed = p.first_seed + k;
+        let mc = population_model(
+            &p.spec,
+            plan.distribution.as_ref(),
+            &law,
+            program,
+            seed,
+            p.draw,
+        )?;
+        out.examples
+            .push((seed, retraction_loads(&mc, program, p.factor)?));
+    }
+    out.seconds = t0.elapsed().as_secs_f64();
+    Ok(out)
+}
+
+/// A warning when the populations' pull-off and the integral's differ
+/// beyond the scene's tolerance and the populations' standard error.
+pub fn warning(r: &PopulationResults, rtol: f64) -> Option<String> {
+    let s = r.statistics.as_ref()?;
+    let integral = r.integral.unwrap_or(0.0);
+    let (mean, se) = (s.mean(), s.mean_standard_error());
+    let gap = (mean - integral).abs();
+    if gap <= rtol * integral.abs().max(mean.abs()) || gap <= 2.0 * se {
+        return None;
+    }
+    let integral_text = match r.integral {
+        Some(p) => format!("the integral gives {p:.3e} N, the minimum of the mean load curve"),
+        None => "the integral's mean load is never tensile on retraction".into(),
+    };
+    let carriers = match r.carriers {
+        Some(c) => format!("only {c:.3} summits carry the tension at the integral's pull-off"),
+        None => "no summit carries a tensile mean load".into(),
+    };
+    Some(format!(
+        "pull-off: {integral_text}; one switch of {} summits pulls off at {mean:.3e} N on average \
+         (standard error {se:.1e} N; 5 %-95 %: {:.3e} .. {:.3e} N over {} populations): \
+         {carriers}, so each switch's pull-off is that of its own highest summits, not of the \
+         mean surface",
+        r.plan.summits,
+        s.quantile(0.05),
+        s.quantile(0.95),
+        s.len(),
+    ))
+}
