@@ -39,6 +39,7 @@ pub mod material;
 pub mod montecarlo;
 pub mod numeric;
 pub mod punch;
+pub mod roughsphere;
 pub mod special;
 pub mod sphere;
 #[cfg(feature = "study")]
