@@ -170,7 +170,8 @@ impl LocalLaw {
         let bottom_gap = dlo - BELOW_LOWEST;
         // The tables are built from many model states: the law is replaced
         // by its Chebyshev tables (1e-12, about 5x faster for JKR) over the
-        // interferences the tabulated gaps reach.
+        // interferences the tabulated gaps reach; laws that remember their
+        // maximum interference (plastic) are refused and used as they are.
         let tab_model = {
             let accurate = model
                 .clone()

@@ -48,6 +48,7 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
+mod converge;
 mod gt;
 mod loading_model;
 mod local;
