@@ -109,6 +109,9 @@ pub struct SphereState {
     pub nodes: usize,
     /// Whether the load met the solver's tolerance.
     pub converged: bool,
+    /// The model the numbers come from (its assumptions; the numerical
+    /// error is in each [`Estimate`], the model's limits in `warnings`).
+    pub model: String,
     /// Numerical or model warnings.
     pub warnings: Vec<String>,
 }
@@ -279,6 +282,16 @@ impl RoughSphere {
             outer_radius: last.mesh.rho_max() * l,
             nodes: last.mesh.len(),
             converged: s.converged,
+            model: format!(
+                "Greenwood & Tripp (1967): local GW pressure of {} summits on {} heights \
+                 (independent summits), elastic half-space, {} profile",
+                self.model().law().name(),
+                self.model().distribution().name(),
+                match self.profile() {
+                    super::problem::SphereProfile::Paraboloid => "paraboloidal",
+                    super::problem::SphereProfile::Sphere => "spherical",
+                }
+            ),
             warnings,
         })
     }

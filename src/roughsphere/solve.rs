@@ -111,7 +111,7 @@ impl SolverOptions {
     /// Checks every field.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] naming the field.
+    /// [`crate::Error::OutOfRange`] naming the field.
     pub fn validate(&self) -> Result<()> {
         Allowed::closed(1e-10, 1e-2).check("tolerance", self.tolerance)?;
         Allowed::closed(9.0, 257.0).check("base_nodes", self.base_nodes as f64)?;
