@@ -42,6 +42,7 @@ pub mod named;
 pub mod numeric;
 pub mod persson;
 pub mod punch;
+pub mod roughsphere;
 pub mod special;
 pub mod spectrum;
 pub mod sphere;

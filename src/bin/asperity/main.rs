@@ -15,6 +15,7 @@ mod persson_cmd;
 mod pipe;
 mod progress;
 mod punch_cmd;
+mod rough_sphere_cmd;
 mod run_cmd;
 mod shape_cmd;
 mod sphere_cmd;
@@ -49,6 +50,8 @@ enum Command {
     Fn(fn_cmd::FnArgs),
     /// Full Lennard-Jones sphere solver: pull-off facts and the S-curve.
     Sphere(sphere_cmd::SphereArgs),
+    /// Rough sphere (Greenwood–Tripp): load, deflection and pressure at central separations.
+    RoughSphere(rough_sphere_cmd::RoughSphereArgs),
     /// Wavy punch (Kesari & Lew): exact curve, envelopes, evolution, energy loss per cycle.
     Punch(punch_cmd::PunchArgs),
     /// Fit E*, w and A sqrt(l) to measured (radius, load) on loading and unloading.
@@ -122,6 +125,7 @@ fn main() -> ExitCode {
         Some(Command::Map(args)) => map_cmd::run(&args),
         Some(Command::Fn(args)) => fn_cmd::run(&args),
         Some(Command::Sphere(args)) => sphere_cmd::run(&args),
+        Some(Command::RoughSphere(args)) => rough_sphere_cmd::run(&args),
         Some(Command::Punch(args)) => punch_cmd::run(&args),
         Some(Command::PunchFit(args)) => punch_cmd::run_fit(&args),
         Some(Command::Surface(args)) => surface_cmd::run(&args),

@@ -1,0 +1,399 @@
+//! The local pressure of the rough surface at a gap, in Greenwood–Tripp
+//! units: the Greenwood–Williamson load per unit nominal area of a
+//! [`GwModel`] at separation `sigma H`, divided by the pressure unit
+//! `E* sqrt(sigma/(8R))` of the sphere.
+//!
+//! Two forms, both with the exact derivative Newton needs:
+//! - closed: a law that is a sum of powers ([`PowerForm`](crate::law::PowerForm):
+//!   Hertz, DMT) on heights with closed `F_n`:
+//!   `p(H) = sum_k c_k F_(n_k)(H + onset/sigma)`, `p'(H) = -sum_k c_k n_k F_(n_k - 1)`
+//!   (`-c_k phi` for `n_k = 0`), Greenwood & Williamson (1966);
+//! - tabulated: any other law or distribution, piecewise Chebyshev in `H`
+//!   ([`Table`]) from the model's own states (adaptive quadrature).
+//!
+//! On retraction a summit remembers its largest interference, so the local
+//! pressure at a radius depends on the closest gap `H_min` reached there
+//! ([`History::Retract`] with `closest = sigma H_min`): one table per node,
+//! built when the retraction starts ([`LocalLaw::after`]); laws without
+//! hysteresis reuse the approach law.
+
+use super::table::Table;
+use crate::error::{Error, Result};
+use crate::gw::{Accuracy, GwModel};
+use crate::loading::{History, LoadingModel, Observables};
+use std::sync::Arc;
+
+/// Tolerance of the tables relative to the solver's: 1 % of it (the local
+/// law's error then adds at most 1 % to the load's), within
+/// [`TABLE_TOL_RANGE`].
+const TABLE_TOL_FRACTION: f64 = 0.01;
+/// Bounds of the tables' relative tolerance (against `|p| + 1e-4 |p(0)|`).
+const TABLE_TOL_RANGE: (f64, f64) = (1e-11, 1e-8);
+/// The model's quadrature is asked this much better than the tables, so
+/// that panels are not split chasing its noise.
+const QUAD_MARGIN: f64 = 0.01;
+/// Relative tolerance of the law's own Chebyshev tables used while
+/// tabulating the local pressure.
+const LAW_TABLE_TOL: f64 = 1e-12;
+/// `|p|` below this fraction of the pressure scale counts as none: the
+/// outer mesh radius is where the gap reaches [`LocalLaw::top`].
+pub(crate) const NEGLIGIBLE: f64 = 1e-16;
+/// Tables start this many height units below the lowest summit the
+/// distribution represents (`1e-16` of the probability).
+const BELOW_LOWEST: f64 = 4.0;
+
+#[derive(Debug, Clone)]
+enum Form {
+    Closed {
+        /// The model, for its distribution's `F_n`.
+        model: GwModel,
+        /// `(c_k, n_k)` in pressure units.
+        terms: Vec<(f64, f64)>,
+        /// `onset/sigma`.
+        shift: f64,
+    },
+    Table(Arc<Table>),
+    /// No pressure at any gap (a node that never came close).
+    Zero,
+}
+
+/// `p(H)` and `p'(H)` of one node (or of every node on approach).
+#[derive(Debug, Clone)]
+pub(crate) struct NodeLaw {
+    form: Form,
+    /// Below this gap the node is closer than ever before: the approach
+    /// law applies (`-inf` on approach).
+    below: f64,
+}
+
+/// The local law of one [`GwModel`] in Greenwood–Tripp units.
+#[derive(Debug, Clone)]
+pub(crate) struct LocalLaw {
+    model: GwModel,
+    approach: NodeLaw,
+    /// Pressure unit (Pa).
+    unit: f64,
+    /// Summit-height scale `sigma` (m).
+    sigma: f64,
+    /// Gap above which `|p| < NEGLIGIBLE * scale`.
+    top: f64,
+    /// Lowest gap the law is defined at (`-inf` for closed forms).
+    bottom: f64,
+    /// Pressure scale: `max(|p(0)|, |p(bottom)|)`-like, for tolerances.
+    scale: f64,
+    reversible: bool,
+    /// Relative tolerance of the tables.
+    table_tol: f64,
+}
+
+impl NodeLaw {
+    /// `p` alone (closed forms skip the slope's `F_n`).
+    #[inline]
+    fn pressure_form(form: &Form, h: f64) -> f64 {
+        match form {
+            Form::Closed {
+                model,
+                terms,
+                shift,
+            } => {
+                let dist = model.distribution();
+                terms
+                    .iter()
+                    .map(|&(c, n)| c * dist.moment_above(n, h + shift))
+                    .sum()
+            }
+            _ => Self::eval_form(form, h).0,
+        }
+    }
+
+    /// `(p, dp/dH)`.
+    #[inline]
+    fn eval_form(form: &Form, h: f64) -> (f64, f64) {
+        match form {
+            Form::Closed {
+                model,
+                terms,
+                shift,
+            } => {
+                let dist = model.distribution();
+                let x = h + shift;
+                let (mut p, mut dp) = (0.0, 0.0);
+                for &(c, n) in terms {
+                    p += c * dist.moment_above(n, x);
+                    dp -= c * if n == 0.0 {
+                        dist.pdf(x)
+                    } else {
+                        n * dist.moment_above(n - 1.0, x)
+                    };
+                }
+                (p, dp)
+            }
+            Form::Table(t) => {
+                let (lo, hi) = t.range();
+                if h >= hi {
+                    (0.0, 0.0)
+                } else if h < lo {
+                    // extrapolated linearly (callers warn: below the table)
+                    let (v, d) = t.eval(lo);
+                    (v + d * (h - lo), d)
+                } else {
+                    t.eval(h)
+                }
+            }
+            Form::Zero => (0.0, 0.0),
+        }
+    }
+}
+
+impl LocalLaw {
+    /// The local law of `model` with pressure unit `unit` (Pa).
+    ///
+    /// # Errors
+    /// The model's quadrature failures while tabulating.
+    pub fn new(model: &GwModel, unit: f64, tolerance: f64) -> Result<Self> {
+        let table_tol =
+            (TABLE_TOL_FRACTION * tolerance).clamp(TABLE_TOL_RANGE.0, TABLE_TOL_RANGE.1);
+        let surface = model.surface();
+        let sigma = surface.sigma;
+        let per_area = 1.0 / (surface.nominal_area * unit);
+        let law = model.law();
+        let dist = model.distribution();
+        let reversible = law.reversible();
+        let closed = model.has_closed_form(&Observables::LOAD)
+            && reversible
+            && law.power_form().is_some_and(|f| {
+                f.load
+                    .iter()
+                    .all(|&(_, n)| n == 0.0 || (n >= 1.0 && dist.closed_form_moment(n - 1.0)))
+            });
+        let (dlo, _) = dist.numerical_support(1e-16);
+        let bottom_gap = dlo - BELOW_LOWEST;
+        // The tables are built from many model states: the law is replaced
+        // by its Chebyshev tables (1e-12, about 5x faster for JKR) over the
+        // interferences the tabulated gaps reach; laws that remember their
+        // maximum interference (plastic) are refused and used as they are.
+        let tab_model = {
+            let accurate = model
+                .clone()
+                .with_accuracy(Accuracy::new((QUAD_MARGIN * table_tol).max(1e-13))?);
+            if closed {
+                accurate
+            } else {
+                accurate
+                    .with_tabulated_law(sigma * bottom_gap, LAW_TABLE_TOL)
+                    .unwrap_or(accurate)
+            }
+        };
+        let (approach, bottom) = if closed {
+            let form = law.power_form().expect("checked");
+            let eta = surface.density;
+            let terms = form
+                .load
+                .iter()
+                .map(|&(c, n)| (eta * c * sigma.powf(n) / unit, n))
+                .collect();
+            (
+                NodeLaw {
+                    form: Form::Closed {
+                        model: model.clone(),
+                        terms,
+                        shift: form.onset / sigma,
+                    },
+                    below: f64::NEG_INFINITY,
+                },
+                f64::NEG_INFINITY,
+            )
+        } else {
+            let lo = bottom_gap;
+            let hi = (tab_model.interaction_onset() / sigma).min(40.0);
+            if !(hi > lo) {
+                return Err(Error::invalid(
+                    "law",
+                    "its interaction range leaves no gap to tabulate",
+                ));
+            }
+            let eval = |xs: &[f64]| -> Result<Vec<f64>> {
+                use rayon::prelude::*;
+                xs.par_iter()
+                    .map(|&h| {
+                        let s =
+                            tab_model.state(sigma * h, History::Approach, &Observables::LOAD)?;
+                        Ok(s.load().unwrap_or(0.0) * per_area)
+                    })
+                    .collect()
+            };
+            let p0 = eval(&[0.0, lo])?;
+            let scale = 1e-4 * p0[0].abs().max(1e-300);
+            let t = Table::build(lo, hi, &[], table_tol, scale, &eval)?;
+            (
+                NodeLaw {
+                    form: Form::Table(Arc::new(t)),
+                    below: f64::NEG_INFINITY,
+                },
+                lo,
+            )
+        };
+        let scale = {
+            let a = NodeLaw::eval_form(&approach.form, 0.0).0.abs();
+            let b = NodeLaw::eval_form(&approach.form, bottom.max(-1.0)).0.abs();
+            a.max(b)
+        };
+        if !(scale > 0.0) {
+            return Err(Error::invalid(
+                "law",
+                "the local pressure is zero at every gap from -1 to 0 sigma",
+            ));
+        }
+        // From the closed form, or from the model itself (a table's
+        // absolute error in the far tail is far above 1e-16 of the scale).
+        let top = match &approach.form {
+            Form::Table(_) => {
+                let per_area = 1.0 / (surface.nominal_area * unit);
+                let m = &tab_model;
+                negligible_above(
+                    &|h| {
+                        m.state(sigma * h, History::Approach, &Observables::LOAD)
+                            .map(|s| s.load().unwrap_or(0.0) * per_area)
+                            .unwrap_or(f64::INFINITY)
+                    },
+                    scale,
+                )
+            }
+            form => negligible_above(&|h| NodeLaw::eval_form(form, h).0, scale),
+        };
+        Ok(LocalLaw {
+            model: tab_model,
+            approach,
+            unit,
+            sigma,
+            top,
+            bottom,
+            scale,
+            reversible,
+            table_tol,
+        })
+    }
+
+    /// The approach law.
+    pub fn approach(&self) -> &NodeLaw {
+        &self.approach
+    }
+
+    /// Gap above which the pressure is negligible.
+    pub fn top(&self) -> f64 {
+        self.top
+    }
+
+    /// Lowest gap the law is defined at.
+    pub fn bottom(&self) -> f64 {
+        self.bottom
+    }
+
+    /// The model (with the tables' accuracy).
+    pub fn model(&self) -> &GwModel {
+        &self.model
+    }
+
+    /// The law of a node whose closest gap was `h_min`, on retraction.
+    ///
+    /// # Errors
+    /// The model's quadrature failures.
+    pub fn after(&self, h_min: f64) -> Result<NodeLaw> {
+        if self.reversible {
+            return Ok(self.approach.clone());
+        }
+        if h_min >= self.top {
+            return Ok(NodeLaw {
+                form: Form::Zero,
+                below: h_min,
+            });
+        }
+        let sigma = self.sigma;
+        let per_area = 1.0 / (self.model.surface().nominal_area * self.unit);
+        let back = History::Retract {
+            closest: sigma * h_min,
+        };
+        let law = self.model.law();
+        // Beyond the approach law's top plus the retraction's reach below
+        // contact (the cutoff, e.g. JKR's detach interference) no summit
+        // holds on.
+        let reach = (-law.cutoff_interference() / sigma).clamp(0.0, 40.0);
+        let hi = (self.top + reach + 0.5).min(self.model.interaction_onset() / sigma + reach);
+        // Kinks: where a branch breakpoint's summit height `H + b/sigma`
+        // meets a history threshold's `h_min + c/sigma`.
+        let mut bs = law.breakpoints(crate::law::Branch::Retract);
+        bs.extend(law.breakpoints(crate::law::Branch::Approach));
+        let mut cs = law.history_breakpoints();
+        cs.push(0.0);
+        let splits: Vec<f64> = bs
+            .iter()
+            .flat_map(|b| cs.iter().map(move |c| h_min + (c - b) / sigma))
+            .collect();
+        let eval = |xs: &[f64]| -> Result<Vec<f64>> {
+            xs.iter()
+                .map(|&h| {
+                    let s = self
+                        .model
+                        .state(sigma * h.max(h_min), back, &Observables::LOAD)?;
+                    Ok(s.load().unwrap_or(0.0) * per_area)
+                })
+                .collect()
+        };
+        let t = Table::build(
+            h_min,
+            hi.max(h_min + 1.0),
+            &splits,
+            self.table_tol,
+            1e-4 * self.scale,
+            &eval,
+        )?;
+        Ok(NodeLaw {
+            form: Form::Table(Arc::new(t)),
+            below: h_min,
+        })
+    }
+}
+
+impl NodeLaw {
+    /// `p` at gap `h` (see [`eval`](Self::eval)).
+    #[inline]
+    pub fn pressure(&self, approach: &NodeLaw, h: f64) -> f64 {
+        if h < self.below {
+            NodeLaw::pressure_form(&approach.form, h)
+        } else {
+            NodeLaw::pressure_form(&self.form, h)
+        }
+    }
+
+    /// `(p, dp/dH)` at gap `h`; below the node's closest gap, the approach
+    /// law `approach`.
+    #[inline]
+    pub fn eval(&self, approach: &NodeLaw, h: f64) -> (f64, f64) {
+        if h < self.below {
+            NodeLaw::eval_form(&approach.form, h)
+        } else {
+            NodeLaw::eval_form(&self.form, h)
+        }
+    }
+}
+
+/// Smallest gap above which `|p| <= NEGLIGIBLE * scale` (scanned down from
+/// 40 in steps of 1/4, refined by bisection).
+fn negligible_above(p: &dyn Fn(f64) -> f64, scale: f64) -> f64 {
+    let small = |h: f64| p(h).abs() <= NEGLIGIBLE * scale;
+    let mut h = 40.0;
+    while h > -40.0 && small(h - 0.25) {
+        h -= 0.25;
+    }
+    // small(h) holds, small(h - 1/4) does not: bisect
+    let (mut lo, mut hi) = (h - 0.25, h);
+    for _ in 0..30 {
+        let mid = 0.5 * (lo + hi);
+        if small(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}

@@ -1,0 +1,193 @@
+//! A smooth function of one variable as piecewise Chebyshev interpolants
+//! with its derivative: the local Greenwood–Williamson pressure `p(H)` of a
+//! law without closed forms, tabulated once from
+//! [`GwModel`](crate::gw::GwModel) states so that Newton's Jacobian has an
+//! exact derivative of the same function its residual uses.
+//!
+//! Panels are bisected until the degree-[`DEG`] interpolant through the
+//! Chebyshev–Lobatto nodes matches the function at the interleaved
+//! midpoints within `tol (|f| + scale)`; panels narrower than
+//! `MIN_WIDTH` of the interval are accepted as they are (a kink of the
+//! function, e.g. where summits start to touch, is then resolved by
+//! geometric refinement towards it).
+
+use crate::error::{Error, Result};
+use crate::numeric::chebyshev::clenshaw;
+use std::f64::consts::PI;
+
+/// Polynomial degree per panel.
+pub(crate) const DEG: usize = 10;
+/// Narrowest panel, as a fraction of the table's interval: next to a
+/// kink with a fractional power (a JKR fold seen through the height
+/// integral, `(H_k - H)^(3/2)`) geometric refinement stops here, where the
+/// function changes by about `1e-10` of its scale across a panel.
+const MIN_WIDTH: f64 = 1e-7;
+/// Most panels in one table.
+const MAX_PANELS: usize = 20_000;
+
+/// `f` and `f'` as piecewise Chebyshev series on `[lo, hi]`.
+#[derive(Debug, Clone)]
+pub(crate) struct Table {
+    edges: Vec<f64>,
+    coef: Vec<[f64; DEG + 1]>,
+    /// Coefficients of the derivative (in the panel's own variable).
+    dcoef: Vec<[f64; DEG + 1]>,
+}
+
+fn lobatto() -> [f64; DEG + 1] {
+    std::array::from_fn(|k| (PI * k as f64 / DEG as f64).cos())
+}
+
+/// Interpolating coefficients at the Lobatto nodes (DCT-I, ends halved).
+fn coefficients(f: &[f64; DEG + 1]) -> [f64; DEG + 1] {
+    let n = DEG as f64;
+    std::array::from_fn(|j| {
+        let mut s = 0.0;
+        for (k, fk) in f.iter().enumerate() {
+            let w = if k == 0 || k == DEG { 0.5 } else { 1.0 };
+            s += w * fk * (PI * (j * k) as f64 / n).cos();
+        }
+        let c = 2.0 * s / n;
+        if j == 0 || j == DEG {
+            0.5 * c
+        } else {
+            c
+        }
+    })
+}
+
+/// Chebyshev coefficients of the derivative (d/dx on `[-1, 1]`).
+fn derivative(c: &[f64; DEG + 1]) -> [f64; DEG + 1] {
+    let mut d = [0.0; DEG + 1];
+    // d_{k-1} = d_{k+1} + 2 k c_k, d_DEG = 0
+    for k in (1..=DEG).rev() {
+        let next = if k < DEG { d[k + 1] } else { 0.0 };
+        d[k - 1] = next + 2.0 * k as f64 * c[k];
+    }
+    d[0] *= 0.5;
+    d
+}
+
+impl Table {
+    /// Tabulates `f` on `[lo, hi]`, split at `splits` (its known kinks), to
+    /// `tol (|f| + scale)`; `f` returns
+    /// `Err` to abort (a failed quadrature). `f` is called on a whole panel
+    /// at once (its `DEG + 1` nodes and `DEG` midpoints) so the caller may
+    /// evaluate them in parallel.
+    ///
+    /// # Errors
+    /// `f`'s error, or [`Error::NoConvergence`] when more than
+    /// `MAX_PANELS` panels would be needed.
+    pub fn build(
+        lo: f64,
+        hi: f64,
+        splits: &[f64],
+        tol: f64,
+        scale: f64,
+        f: &dyn Fn(&[f64]) -> Result<Vec<f64>>,
+    ) -> Result<Self> {
+        let nodes = lobatto();
+        // Known kinks of the function start their own panels.
+        let mut cuts: Vec<f64> = splits
+            .iter()
+            .copied()
+            .filter(|x| *x > lo && *x < hi)
+            .collect();
+        cuts.push(lo);
+        cuts.push(hi);
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+        let mut todo: Vec<(f64, f64)> = cuts.windows(2).map(|w| (w[0], w[1])).rev().collect();
+        let mut done: Vec<(f64, [f64; DEG + 1])> = Vec::new();
+        let mut evaluations = 0;
+        while let Some((a, b)) = todo.pop() {
+            let mid = 0.5 * (a + b);
+            let half = 0.5 * (b - a);
+            let mut xs: Vec<f64> = nodes.iter().map(|t| mid + half * t).collect();
+            let tests: Vec<f64> = (0..DEG)
+                .map(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
+                .collect();
+            xs.extend(tests.iter().map(|t| mid + half * t));
+            let ys = f(&xs)?;
+            evaluations += xs.len();
+            let vals: [f64; DEG + 1] = std::array::from_fn(|k| ys[k]);
+            let c = coefficients(&vals);
+            let ok = tests.iter().zip(&ys[DEG + 1..]).all(|(t, y)| {
+                let e = (clenshaw(&c, *t) - y).abs();
+                e <= tol * (y.abs() + scale)
+            });
+            if ok || b - a <= MIN_WIDTH * (hi - lo) {
+                done.push((a, c));
+            } else {
+                todo.push((mid, b));
+                todo.push((a, mid));
+            }
+            if done.len() + todo.len() > MAX_PANELS {
+                return Err(Error::NoConvergence {
+                    what: "local pressure table".into(),
+                    iterations: evaluations,
+                    residual: f64::NAN,
+                });
+            }
+        }
+        done.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut edges: Vec<f64> = done.iter().map(|x| x.0).collect();
+        edges.push(hi);
+        let coef: Vec<[f64; DEG + 1]> = done.into_iter().map(|x| x.1).collect();
+        let dcoef = coef.iter().map(derivative).collect();
+        Ok(Table { edges, coef, dcoef })
+    }
+
+    /// Interval covered.
+    pub fn range(&self) -> (f64, f64) {
+        (self.edges[0], self.edges[self.edges.len() - 1])
+    }
+
+    /// `(f(x), f'(x))`; outside the interval the end panels' polynomials
+    /// are evaluated at the clamped point (callers stay inside).
+    #[inline]
+    pub fn eval(&self, x: f64) -> (f64, f64) {
+        let n = self.coef.len();
+        let i = self.edges.partition_point(|e| *e <= x).clamp(1, n) - 1;
+        let (a, b) = (self.edges[i], self.edges[i + 1]);
+        let t = ((2.0 * x - a - b) / (b - a)).clamp(-1.0, 1.0);
+        let v = clenshaw(&self.coef[i], t);
+        let dv = clenshaw(&self.dcoef[i], t) * 2.0 / (b - a);
+        (v, dv)
+    }
+
+    /// Panels.
+    #[cfg(test)]
+    pub fn panels(&self) -> usize {
+        self.coef.len()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_reproduces_a_smooth_function_and_its_slope() {
+        let f = |x: f64| (-(x * x) / 2.0).exp() * (1.0 + x).sqrt();
+        let df = |x: f64| {
+            let e = (-(x * x) / 2.0).exp();
+            e * (0.5 / (1.0 + x).sqrt() - x * (1.0 + x).sqrt())
+        };
+        let t = Table::build(-0.5, 6.0, &[], 1e-12, 0.0, &|xs| {
+            Ok(xs.iter().map(|&x| f(x)).collect())
+        })
+        .unwrap();
+        for k in 0..=200 {
+            let x = -0.5 + 6.5 * k as f64 / 200.0;
+            let (v, d) = t.eval(x);
+            assert!((v - f(x)).abs() <= 1e-11 * f(x).abs() + 1e-300, "{x} {v}");
+            assert!(
+                (d - df(x)).abs() <= 1e-7 * (df(x).abs() + 1e-3),
+                "{x} {d} {}",
+                df(x)
+            );
+        }
+        assert!(t.panels() < 200, "{}", t.panels());
+    }
+}
