@@ -23,9 +23,15 @@ fn slow_scene(dir: &Path) -> PathBuf {
         env!("CARGO_MANIFEST_DIR")
     ))
     .unwrap();
-    let text =
-        base.replacen("points = 200", "points = 300", 1)
-            .replacen("rtol = 1e-6", "rtol = 1e-9", 1);
+    // Maugis-Dugdale without the full-solver reference and the pull-off
+    // populations: `auto` would take the long-range calibrated law, whose
+    // populations cost seconds a point.
+    let text = base
+        .replacen("points = 200", "points = 300", 1)
+        .replacen("kind = \"auto\"", "kind = \"maugis\"", 1)
+        .replacen("rtol = 1e-6", "rtol = 1e-9\nmodel_error = false", 1)
+        .replacen("[outputs]", "[outputs]\npull_off_population = false", 1);
+    assert!(text.contains("kind = \"maugis\"") && text.contains("pull_off_population = false"));
     let path = dir.join("slow.toml");
     std::fs::write(&path, text).unwrap();
     path

@@ -90,9 +90,16 @@ fn populations_are_the_montecarlo_populations_seed_by_seed() {
     // A few summits carry the integral's pull-off, and one switch pulls
     // off much harder than the integral says: the summary warns.
     assert!(num(&p["carriers"]) < 100.0, "{p}");
-    assert!(mean < 3.0 * num(&v["pull_off_load"]), "{mean} vs {}", v["pull_off_load"]);
+    assert!(
+        mean < 3.0 * num(&v["pull_off_load"]),
+        "{mean} vs {}",
+        v["pull_off_load"]
+    );
     let warnings = v["warnings"].to_string();
-    assert!(warnings.contains("one switch of 10000 summits"), "{warnings}");
+    assert!(
+        warnings.contains("one switch of 10000 summits"),
+        "{warnings}"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -170,5 +177,35 @@ fn many_carriers_within_the_tolerance_skip_the_populations_and_say_why() {
     assert_eq!(p["seeds"], 0, "{p}");
     assert!(p["mean_N"].is_null());
     assert!(p["note"].as_str().unwrap().contains("skipped"), "{p}");
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn switched_off_populations_leave_the_integral_as_the_basis() {
+    let d = dir("off");
+    let text = scene("\n[switch]\nspring_constant = 10.0\ntravel = 1e-6\n").replacen(
+        "[outputs]",
+        "[outputs]\npull_off_population = false",
+        1,
+    );
+    assert!(text.contains("pull_off_population = false"));
+    let (code, v, err) = run(&text, &d);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        v["pull_off_population"].is_null(),
+        "{}",
+        v["pull_off_population"]
+    );
+    let s = &v["stiction"];
+    assert_eq!(s["pull_off_basis"], "integral");
+    assert_eq!(num(&s["pull_off_N"]), num(&v["pull_off_load"]));
+    // The plan says why there is no distribution.
+    assert!(
+        v["plan"]
+            .to_string()
+            .contains("outputs.pull_off_population = false"),
+        "{}",
+        v["plan"]
+    );
     std::fs::remove_dir_all(&d).ok();
 }

@@ -146,6 +146,10 @@ fn planned_runs_do_less_work_and_agree_within_tolerance() {
     let (mut planned_evals, mut full_evals) = (0, 0);
     for name in ["hertz-exponential.toml", "soft-jkr.toml", "mems-gold.toml"] {
         let mut scene = example(name);
+        // The planner's choice by one summit's error: with the surface-level
+        // model error on, `auto` takes the full-solver law on mems-gold,
+        // more work for a far more accurate pull-off (tests/model_error.rs).
+        scene.accuracy.model_error = false;
         // Same separations for both runs.
         if scene.program.start_separation.is_none() {
             let p = Plan::new(&scene, PlanMode::Planned).unwrap();

@@ -375,9 +375,11 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     }
 
     /// Whether a loading program should evaluate a Chebyshev table of the
-    /// law instead ([`AsperityLaw::cost_ns`] above [`TABULATE_ABOVE_NS`]).
+    /// law instead ([`AsperityLaw::cost_ns`] above [`TABULATE_ABOVE_NS`]);
+    /// never for laws that remember their maximum interference (a table
+    /// holds one retraction branch).
     fn worth_tabulating(&self) -> bool {
-        self.cost_ns() > TABULATE_ABOVE_NS
+        self.cost_ns() > TABULATE_ABOVE_NS && !self.remembers_maximum()
     }
 }
 

@@ -25,6 +25,7 @@
 
 pub mod cache;
 pub mod measured;
+pub mod model_error;
 pub mod output;
 pub mod plan;
 pub mod plot;
@@ -42,4 +43,4 @@ pub use output::{
 pub use plan::{Plan, PlanMode};
 pub use quantity::{Quantity, QuantitySet, Record, StateRow};
 pub use run::{McResults, Results};
-pub use scene::{Scene, DEFAULT_SCENE};
+pub use scene::{Scene, DEFAULT_SCENE, DEFAULT_STUDY};

@@ -22,7 +22,7 @@ pub const MIN_POPULATIONS: usize = 20;
 
 /// Largest estimated CPU time (s) of the populations; beyond it fewer are
 /// drawn (never below [`MIN_POPULATIONS`]) and the summary says so.
-pub const POPULATION_CPU_BUDGET: f64 = 1.0;
+pub const POPULATION_CPU_BUDGET: f64 = 0.5;
 
 /// Estimated CPU time (ns) to draw one summit exactly (two exponential
 /// variates' worth: the stream and the prefix sum).

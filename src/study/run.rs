@@ -67,6 +67,8 @@ pub struct Results {
     /// The pull-off distribution over populations of the surface's
     /// summits, when the pull-off is searched on a finite surface.
     pub pull_off_population: Option<super::population::PopulationResults>,
+    /// The model error of the headline outputs on this surface.
+    pub model_error: Option<super::model_error::ModelError>,
 }
 
 /// The records of a curve's two legs.
@@ -321,8 +323,19 @@ impl Plan {
             .map(|s| s.evaluations)
             .sum();
         let mut warnings = super::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
+        let max_load = curve.approach.first().and_then(|s| s.load());
+        let model_error = super::model_error::measure(
+            self,
+            &program,
+            pull_off.map(|p| p.load),
+            max_load,
+            hysteresis_energy,
+        )?;
+        warnings.extend(model_error.warnings(&self.law.name));
         if let Some(r) = &pull_off_population {
-            warnings.extend(r.note.clone());
+            // How many populations the budget allowed is a note of the
+            // population (in the summary and the report), not a warning:
+            // the quantiles carry their intervals.
             warnings.extend(super::population::warning(r, self.budget.rtol));
         }
         let montecarlo = match &self.montecarlo {
@@ -345,6 +358,7 @@ impl Plan {
             warnings,
             topography: None,
             pull_off_population,
+            model_error: Some(model_error),
         })
         .and_then(|r| self.finish(model, r))
     }

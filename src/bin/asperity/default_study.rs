@@ -1,12 +1,15 @@
 //! `asperity` with no arguments: the built-in default study of a gold-on-gold
-//! microswitch — every single-asperity law compared for one summit, then the
-//! embedded default scene (examples/scenes/mems-gold.toml) run on the rough
-//! surface, with its outputs written to `./asperity-out/`.
+//! ohmic RF-MEMS switch — every single-asperity law compared for one summit,
+//! then the embedded default study (examples/scenes/rf-mems-switch.toml:
+//! elastic-plastic summits with adhesion after yield, contact resistance
+//! against force, the pull-off distribution of one switch and its stiction
+//! probability) run on the rough surface, with its outputs written to
+//! `./asperity-out/`.
 
 use asperity::law::LawKind;
 use asperity::material::gold;
 use asperity::prelude::*;
-use asperity::study::{output::si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_SCENE};
+use asperity::study::{output::si_prefix, Plan, PlanMode, Results, Scene, DEFAULT_STUDY};
 use std::path::Path;
 
 /// Rows of the printed load–separation table.
@@ -15,17 +18,17 @@ const TABLE_ROWS: usize = 12;
 pub fn run() -> crate::CliResult {
     laws_table()?;
     println!();
-    let scene = Scene::from_toml(DEFAULT_SCENE)?;
+    let scene = Scene::from_toml(DEFAULT_STUDY)?;
     let plan = Plan::new(&scene, PlanMode::Planned)?;
     let results = plan.run()?;
-    separation_table(&results);
+    separation_table(&scene, &results);
     println!();
     crate::run_cmd::report(&plan, &results, Path::new("asperity-out"), false)
 }
 
 fn laws_table() -> crate::CliResult {
     let c = AsperityContact::gold_microswitch();
-    println!("asperity default study: gold-on-gold microswitch");
+    println!("asperity default study: gold-on-gold ohmic RF-MEMS switch");
     println!();
     println!("One summit:");
     println!(
@@ -61,10 +64,14 @@ fn laws_table() -> crate::CliResult {
 }
 
 /// A compact load–separation table: every k-th point of both legs.
-fn separation_table(results: &Results) {
+fn separation_table(scene: &Scene, results: &Results) {
     let c = &results.curve;
     let (ls, lp) = si_prefix(c.approach.iter().chain(&c.retract).filter_map(|s| s.load()));
-    println!("Rough surface (100 um x 100 um, eta = 1e12 m^-2, sigma = 5 nm):");
+    let s = &scene.surface;
+    println!(
+        "Rough surface (A_n = {:.3e} m^2, eta = {:.3e} m^-2, sigma = {:.3e} m, R = {:.3e} m):",
+        s.nominal_area, s.density, s.sigma, s.radius
+    );
     println!(
         "  {:>16} {:>18} {:>18} {:>14} {:>14}",
         "separation [nm]",
@@ -75,7 +82,17 @@ fn separation_table(results: &Results) {
     );
     let n = c.approach.len();
     let step = (n / TABLE_ROWS).max(1);
-    let show = |x: Option<f64>, s: f64| x.map_or("-".into(), |v| format!("{:.4e}", v / s));
+    // Fixed point in the column's unit: values below its last digit are 0.
+    let show = |x: Option<f64>, s: f64| {
+        x.map_or("-".into(), |v| {
+            let v = v / s;
+            if v.abs() < 5e-4 {
+                "0".into()
+            } else {
+                format!("{v:.3}")
+            }
+        })
+    };
     for i in (0..n).rev().step_by(step) {
         let (a, r) = (&c.approach[i], &c.retract[i]);
         println!(

@@ -29,21 +29,7 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
         "  separations {:.3e} .. {:.3e} m, {} points per leg, rtol {:e}",
         summary.closest_separation, summary.start_separation, summary.points, summary.rtol
     );
-    let _ = match summary.law_model_error {
-        Some(e) => writeln!(
-            out,
-            "  model error        law {} differs from the full Lennard-Jones solution by {:.2} % \
-             (rtol {:e} bounds only the numerics)",
-            summary.law,
-            100.0 * e,
-            summary.rtol
-        ),
-        None => writeln!(
-            out,
-            "  model error        not measured for law {}",
-            summary.law
-        ),
-    };
+    model_error(&mut out, summary);
     for (q, (h, v)) in plan
         .quantities
         .iter()
@@ -112,6 +98,37 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
         let _ = writeln!(out, "    {}", f.display());
     }
     out
+}
+
+/// The model error lines: on this surface, per output, and for one summit.
+fn model_error(out: &mut String, summary: &Summary) {
+    let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:+.2} %", 100.0 * v));
+    match &summary.model_error {
+        Some(m) if m.pull_off.is_some() || m.max_load.is_some() => {
+            let _ = writeln!(
+                out,
+                "  model error        on this surface: pull-off {}, max load {}, hysteresis energy {} \
+                 (against {}; rtol {:e} bounds only the numerics)",
+                pct(m.pull_off),
+                pct(m.max_load),
+                pct(m.hysteresis_energy),
+                m.reference,
+                summary.rtol
+            );
+        }
+        Some(m) => {
+            let _ = writeln!(out, "  model error        {}", m.reference);
+        }
+        None => {}
+    }
+    if let Some(e) = summary.law_model_error {
+        let _ = writeln!(
+            out,
+            "                     (one summit: law {} differs from the full Lennard-Jones solution by {:.2} %)",
+            summary.law,
+            100.0 * e
+        );
+    }
 }
 
 fn population(out: &mut String, p: &PopulationSummary) {

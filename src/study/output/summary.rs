@@ -52,6 +52,10 @@ pub struct Summary {
     /// ([`crate::law::errors::LawErrorTable`]); `null` when unknown
     /// (calibrated, no adhesion). `rtol` bounds only the numerics.
     pub law_model_error: Option<f64>,
+    /// Model error of the headline outputs on this surface: each one's
+    /// relative difference from the full Lennard-Jones solver's law on the
+    /// same surface and program, and what it is measured against.
+    pub model_error: Option<ModelErrorSummary>,
     /// Wall-clock time of the run (s).
     pub seconds: f64,
     /// Law evaluations spent by quadrature.
@@ -81,6 +85,29 @@ pub struct Summary {
     /// Absent without a map.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub topography: Option<TopographySummary>,
+}
+
+/// The model error of the headline outputs (relative: `(law -
+/// reference)/|reference|`; `null` where not measured).
+#[derive(Debug, Clone, Serialize)]
+pub struct ModelErrorSummary {
+    /// Of the pull-off.
+    pub pull_off: Option<f64>,
+    /// Of the load at the closest approach.
+    pub max_load: Option<f64>,
+    /// Of the hysteresis energy.
+    pub hysteresis_energy: Option<f64>,
+    /// What it is measured against.
+    pub reference: String,
+    /// The reference's pull-off (N).
+    #[serde(rename = "reference_pull_off_N")]
+    pub reference_pull_off_n: Option<f64>,
+    /// The reference's load at the closest approach (N).
+    #[serde(rename = "reference_max_load_N")]
+    pub reference_max_load_n: Option<f64>,
+    /// The reference's hysteresis energy (J).
+    #[serde(rename = "reference_hysteresis_energy_J")]
+    pub reference_hysteresis_energy_j: Option<f64>,
 }
 
 /// Joule heating of the contact at the closest approach.
@@ -310,6 +337,15 @@ impl Summary {
             hysteresis_energy: results.hysteresis_energy,
             rtol: plan.budget.rtol,
             law_model_error: plan.law.measured_error.filter(|_| adhesive),
+            model_error: results.model_error.as_ref().map(|m| ModelErrorSummary {
+                pull_off: m.pull_off,
+                max_load: m.max_load,
+                hysteresis_energy: m.hysteresis_energy,
+                reference: m.reference.clone(),
+                reference_pull_off_n: m.reference_pull_off,
+                reference_max_load_n: m.reference_max_load,
+                reference_hysteresis_energy_j: m.reference_hysteresis_energy,
+            }),
             seconds: results.seconds,
             evaluations: results.evaluations,
             montecarlo: results

@@ -29,6 +29,17 @@ impl Plan {
         let budget = Budget::new(scene.accuracy.rtol);
         let calibration = inputs.calibration.as_ref();
         let law = law::choose(scene, &contact, mode, &budget, calibration, &mut decisions)?;
+        let reference = match (law.source, calibration) {
+            (LawName::Analytic(_), Some(c)) if contact.adhesion.work() > 0.0 => {
+                let l = c.calibration.law(
+                    contact.radius,
+                    contact.contact_modulus,
+                    contact.adhesion.work(),
+                )?;
+                Some(std::sync::Arc::new(l) as std::sync::Arc<dyn crate::law::AsperityLaw>)
+            }
+            _ => None,
+        };
         let topography = match resolved {
             Some(r) => {
                 let t = TopographyPlan::new(r, &law, &contact)?;
@@ -100,6 +111,7 @@ impl Plan {
             surface,
             distribution,
             law,
+            reference,
             quantities,
             accuracy,
             start,

@@ -74,6 +74,9 @@ pub enum LawReason {
         cached: bool,
         /// The cache file.
         path: String,
+        /// Chosen by `auto` because no analytic law meets `rtol`: the
+        /// tolerance, the closest analytic law and its measured error.
+        auto: Option<(f64, String, f64)>,
     },
 }
 
@@ -418,10 +421,17 @@ fn law_why(reason: &LawReason, d: &Decision) -> String {
             "given in the scene; adhesion left out: its JKR interference scale {jkr_scale:.3e} m is \
              below 1e-6 x rtol x sigma"
         ),
-        LawReason::Calibrated { cached, path } => format!(
-            "full Lennard-Jones sphere solver (paraboloid), tabulated on both branches to 100 pi w R, \
-             with the Lennard-Jones attraction never cut (the Dugdale laws cut it at ~z0: on rough \
-             surfaces this tail can dominate the pull-off); {} {path}",
+        LawReason::Calibrated { cached, path, auto } => format!(
+            "{}full Lennard-Jones sphere solver (paraboloid), tabulated on both branches to 100 pi \
+             w R, with the Lennard-Jones attraction never cut (the Dugdale laws cut it at ~z0: on \
+             rough surfaces this tail can dominate the pull-off); {} {path}",
+            match auto {
+                Some((rtol, law, error)) => format!(
+                    "no analytic law is within rtol = {rtol:e} of the Lennard-Jones solution (the \
+                     closest, {law}, is off by {error:.2e} for one summit): "
+                ),
+                None => String::new(),
+            },
             if *cached {
                 "read from the cache"
             } else {

@@ -49,18 +49,31 @@ pub enum Pending {
     },
 }
 
-/// The sphere problem of a scene's `calibrated` law (paraboloid, default
-/// resolution), `None` when the scene has no such law or no adhesion.
+/// The sphere problem of a scene's full-solver law (paraboloid, default
+/// resolution): its `calibrated` law, or the reference of an analytic
+/// adhesive law's model error; `None` without adhesion or without either.
 ///
 /// # Errors
 /// [`Error::Invalid`] naming `law.kind` when the Tabor parameter is outside
 /// the solver's range.
 fn problem(scene: &Scene) -> Result<Option<SphereProblem>> {
-    if scene.law.kind != LawName::Calibrated || !(scene.adhesion.w > 0.0) {
+    // The full-solver law is the calibrated law itself, and the reference
+    // of an analytic adhesive law's model error (or of `auto`'s choice).
+    let needed = match scene.law.kind {
+        LawName::Calibrated => true,
+        LawName::Auto | LawName::Analytic(_) => scene.accuracy.model_error,
+        _ => false,
+    };
+    if !needed || !(scene.adhesion.w > 0.0) {
         return Ok(None);
     }
     let contact = build_contact(scene)?;
     let mu = contact.tabor();
+    if scene.law.kind != LawName::Calibrated && !solver_reaches(mu) {
+        // No reference there: the model error says so, `auto` keeps to the
+        // analytic laws (JKR is the exact large-mu limit).
+        return Ok(None);
+    }
     SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default())
         .map(Some)
         .map_err(|e| {
@@ -70,6 +83,12 @@ fn problem(scene: &Scene) -> Result<Option<SphereProblem>> {
                 format!("law.kind = \"calibrated\" needs the full solver at mu = {mu:.4}: {e}"),
             )
         })
+}
+
+/// Whether the full solver covers Tabor parameter `mu`
+/// ([`SphereProblem::new`]'s range).
+pub fn solver_reaches(mu: f64) -> bool {
+    SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::default()).is_ok()
 }
 
 impl Inputs {

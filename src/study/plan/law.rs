@@ -46,7 +46,7 @@ pub(super) fn choose(
     let (kind, reason) = match given {
         LawName::Plastic(v) => return plastic(scene, contact, v, budget, decisions),
         LawName::Shaped => return shaped(scene, contact, decisions),
-        LawName::Calibrated if w > 0.0 => return calibrated(contact, calibration, decisions),
+        LawName::Calibrated if w > 0.0 => return calibrated(contact, calibration, None, decisions),
         _ if w == 0.0 => {
             if !matches!(given, LawName::Auto | LawName::Analytic(LawKind::Hertz)) {
                 return Err(Error::invalid(
@@ -73,6 +73,12 @@ pub(super) fn choose(
             ),
             None => {
                 let (k, error) = table.most_accurate(mu);
+                // The full-solver law, unless the scene declines to run
+                // the solver (accuracy.model_error = false).
+                if scene.accuracy.model_error && super::inputs::solver_reaches(mu) {
+                    let why = (rtol, k.name(), error);
+                    return calibrated(contact, calibration, Some(why), decisions);
+                }
                 (k, LawReason::NoneWithin { rtol, error })
             }
         },
@@ -100,9 +106,11 @@ pub(super) fn choose(
 /// computed it). Without it (a preview of an uncached calibration)
 /// Maugis–Dugdale at the same `lambda` stands in for the range decisions,
 /// and the decision says so.
+/// `auto`: why, as `(rtol, the closest analytic law, its error)`.
 fn calibrated(
     contact: &AsperityContact,
     calibration: Option<&CalibrationInput>,
+    auto: Option<(f64, &'static str, f64)>,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
     let law: Arc<dyn AsperityLaw> = match calibration {
@@ -119,6 +127,7 @@ fn calibrated(
             cached: calibration.is_some_and(|c| c.cached),
             path: calibration
                 .map_or_else(|| "the cache".to_string(), |c| c.path.display().to_string()),
+            auto: auto.map(|(rtol, law, error)| (rtol, law.to_string(), error)),
         },
         mu: contact.tabor(),
         lambda: contact.lambda(),

@@ -105,6 +105,9 @@ pub struct Plan {
     pub distribution: Arc<dyn HeightDistribution>,
     /// The law.
     pub law: LawChoice,
+    /// The full-solver (calibrated) law the model error of an analytic
+    /// adhesive law is measured against (`accuracy.model_error`).
+    pub reference: Option<Arc<dyn AsperityLaw>>,
     /// The quantities of the run's states (load, area, count, the
     /// resistance with `[electrical]`, ...) and the observables the curve
     /// totals for them (load also when only the hysteresis energy needs

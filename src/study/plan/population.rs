@@ -34,6 +34,8 @@ pub struct PopulationPlan {
 pub enum NoPopulation {
     /// The pull-off is not searched (not asked for, or no adhesion).
     NoPullOff,
+    /// `outputs.pull_off_population = false`.
+    Off,
     /// The summits are a measured sample: the run is one realisation.
     MeasuredSummits,
     /// `eta A_n` is below one summit or beyond what can be counted.
@@ -44,6 +46,11 @@ impl std::fmt::Display for NoPopulation {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             NoPopulation::NoPullOff => write!(f, "no pull-off is searched"),
+            NoPopulation::Off => write!(
+                f,
+                "outputs.pull_off_population = false: the pull-off is the integral's (the mean \
+                 surface), not one switch's"
+            ),
             NoPopulation::MeasuredSummits => write!(
                 f,
                 "the summits are a measured sample: the run is already one realisation"
@@ -70,6 +77,8 @@ pub(super) fn plan(
 ) -> Result<std::result::Result<PopulationPlan, NoPopulation>> {
     let why = if !pull_off {
         Some(NoPopulation::NoPullOff)
+    } else if !scene.outputs.pull_off_population {
+        Some(NoPopulation::Off)
     } else if distribution.sample_points().is_some() {
         Some(NoPopulation::MeasuredSummits)
     } else {

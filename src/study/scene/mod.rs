@@ -27,9 +27,18 @@ pub use schema::{
     MAX_LISTED_STATES, MAX_POPULATIONS,
 };
 
-/// The default scene (`examples/scenes/mems-gold.toml`), embedded so that
-/// `asperity` with no arguments runs anywhere.
+/// The reference scene of the tests and examples
+/// (`examples/scenes/mems-gold.toml`: the gold microswitch surface with the
+/// law chosen by `auto`), embedded so that it runs anywhere.
 pub const DEFAULT_SCENE: &str = include_str!("../../../examples/scenes/mems-gold.toml");
+
+/// The default study that `asperity` with no arguments (and `cargo run
+/// --release`) runs: the ohmic RF-MEMS switch of
+/// `examples/scenes/rf-mems-switch.toml` (gold with a yield strength,
+/// Kogut–Etsion summits with adhesion after yield, contact resistance
+/// against force, the pull-off distribution of one switch and its stiction
+/// probability for the stated spring and travel).
+pub const DEFAULT_STUDY: &str = include_str!("../../../examples/scenes/rf-mems-switch.toml");
 
 #[cfg(test)]
 mod tests {

@@ -390,6 +390,13 @@ pub struct OutputsSpec {
     /// approach.
     #[serde(default)]
     pub resistance: bool,
+    /// The pull-off distribution of one switch over populations of the
+    /// surface's `eta A_n` summits (`pull_off_population` in the summary;
+    /// default true, only when the pull-off is searched on a finite
+    /// surface). `false` skips the populations (a sweep that needs only the
+    /// integral); `[switch]` then uses the integral's pull-off.
+    #[serde(default = "yes")]
+    pub pull_off_population: bool,
 }
 
 fn yes() -> bool {
@@ -405,6 +412,7 @@ impl Default for OutputsSpec {
             pull_off: true,
             hysteresis_energy: false,
             resistance: false,
+            pull_off_population: true,
         }
     }
 }
@@ -416,6 +424,18 @@ pub struct AccuracySpec {
     /// Relative tolerance of every output, in [1e-12, 0.1]; default 1e-6.
     #[serde(default = "default_rtol")]
     pub rtol: f64,
+    /// Measure the model error of an adhesive law on this surface against
+    /// the full Lennard-Jones solver's law (`model_error` in the summary;
+    /// the calibration is computed once per Tabor parameter and cached),
+    /// and let `law.kind = "auto"` fall back to the full-solver law when no
+    /// analytic law meets `rtol`; default true. `false` skips the
+    /// full-solver run (the planner then picks by one summit's error).
+    #[serde(default = "yes_model_error")]
+    pub model_error: bool,
+}
+
+fn yes_model_error() -> bool {
+    true
 }
 
 fn default_rtol() -> f64 {
@@ -426,6 +446,7 @@ impl Default for AccuracySpec {
     fn default() -> Self {
         AccuracySpec {
             rtol: default_rtol(),
+            model_error: true,
         }
     }
 }

@@ -1,0 +1,217 @@
+//! The model error of a run's headline outputs, measured on the scene's own
+//! surface: the same program with the full Lennard-Jones sphere solver's
+//! law (the calibrated law) in place of the chosen analytic law.
+//!
+//! One summit's error (the law-error table) says little about a rough
+//! surface: the Dugdale and JKR laws cut the attraction at about `z0`,
+//! while the Lennard-Jones attraction of the many summits just out of
+//! contact carries much of a rough surface's pull-off when `sigma/z0` is
+//! large (docs/physics.md, "Model error on a rough surface").
+
+use super::plan::Plan;
+use crate::error::Result;
+use crate::gw::Accuracy;
+use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
+use crate::study::scene::LawName;
+
+/// Loosest relative tolerance of the reference run: the model errors it
+/// measures are stated to about this (they are percent-level or more).
+pub const REFERENCE_RTOL: f64 = 1e-5;
+
+/// A model error larger than this (relative) is a warning.
+pub const MODEL_ERROR_WARN: f64 = 0.1;
+
+/// The model error of a run's headline outputs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelError {
+    /// What it is measured against (a sentence).
+    pub reference: String,
+    /// `(law - reference)/|reference|` of the pull-off.
+    pub pull_off: Option<f64>,
+    /// The same of the load at the closest approach (`max_load`).
+    pub max_load: Option<f64>,
+    /// The same of the hysteresis energy.
+    pub hysteresis_energy: Option<f64>,
+    /// The reference's pull-off (N).
+    pub reference_pull_off: Option<f64>,
+    /// The reference's load at the closest approach (N).
+    pub reference_max_load: Option<f64>,
+    /// The reference's hysteresis energy (J).
+    pub reference_hysteresis_energy: Option<f64>,
+}
+
+impl ModelError {
+    fn unmeasured(reference: impl Into<String>) -> ModelError {
+        ModelError {
+            reference: reference.into(),
+            pull_off: None,
+            max_load: None,
+            hysteresis_energy: None,
+            reference_pull_off: None,
+            reference_max_load: None,
+            reference_hysteresis_energy: None,
+        }
+    }
+
+    /// Warnings for the outputs whose model error exceeds
+    /// [`MODEL_ERROR_WARN`].
+    pub fn warnings(&self, law: &str) -> Vec<String> {
+        [
+            ("pull-off", self.pull_off, self.reference_pull_off, "N"),
+            ("max load", self.max_load, self.reference_max_load, "N"),
+            (
+                "hysteresis energy",
+                self.hysteresis_energy,
+                self.reference_hysteresis_energy,
+                "J",
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(name, e, r, unit)| {
+            let e = e?;
+            (e.abs() > MODEL_ERROR_WARN).then(|| {
+                format!(
+                    "model error: the {name} of law {law} differs by {:.1} % from the full \
+                     Lennard-Jones solver's law on this surface ({:.4e} {unit}); law.kind = \
+                     \"calibrated\" (or \"auto\") uses the full-solver law",
+                    100.0 * e,
+                    r.unwrap_or(f64::NAN)
+                )
+            })
+        })
+        .collect()
+    }
+}
+
+fn relative(law: Option<f64>, reference: Option<f64>) -> Option<f64> {
+    let (a, b) = (law?, reference?);
+    (b != 0.0).then(|| (a - b) / b.abs())
+}
+
+/// The model error of a run of `plan` over `program` whose pull-off,
+/// load at the closest approach and hysteresis energy are given.
+///
+/// # Errors
+/// As the reference model's states, pull-off and energy.
+pub fn measure(
+    plan: &Plan,
+    program: &LoadingProgram,
+    pull_off: Option<f64>,
+    max_load: Option<f64>,
+    hysteresis_energy: Option<f64>,
+) -> Result<ModelError> {
+    let adhesive = plan.contact.adhesion.work() > 0.0;
+    if !adhesive {
+        return Ok(ModelError {
+            max_load: max_load.map(|_| 0.0),
+            ..ModelError::unmeasured(
+                "no adhesion: Hertz summits are the exact elastic small-strain solution, which \
+                 the full solver reduces to at w = 0",
+            )
+        });
+    }
+    match plan.law.source {
+        LawName::Calibrated => {
+            return Ok(ModelError::unmeasured(
+                "this law is the full Lennard-Jones sphere solver's (tabulated to rtol/10): its \
+                 model error is that of the Lennard-Jones continuum and GW's independent \
+                 summits, not measured here",
+            ))
+        }
+        LawName::Plastic(_) | LawName::Shaped => {
+            return Ok(ModelError::unmeasured(
+                "no full-solver counterpart for this law (the sphere solver is elastic and \
+                 paraboloidal): its adhesion is short-range JKR, which neglects the \
+                 Lennard-Jones far field; law.kind = \"jkr\" against \"calibrated\" on the same \
+                 surface measures what that costs for elastic summits",
+            ))
+        }
+        _ => {}
+    }
+    let Some(reference) = &plan.reference else {
+        let mu = plan.contact.tabor();
+        return Ok(ModelError::unmeasured(
+            if !plan.scene.accuracy.model_error {
+                "not measured: accuracy.model_error = false (the full solver is not run)"
+                    .to_string()
+            } else {
+                format!(
+                    "not measured: the full solver covers mu in [0.005, 100], not mu = {mu:.4} \
+                 (JKR is the exact large-mu limit, Bradley the small-mu one)"
+                )
+            },
+        ));
+    };
+    if plan.topography.is_some() {
+        return Ok(ModelError::unmeasured(
+            "not measured: a measured map's summits each have their own radius, and the \
+             full-solver law does not scale with the radius",
+        ));
+    }
+    match reference_run(
+        plan,
+        reference,
+        program,
+        pull_off,
+        max_load,
+        hysteresis_energy,
+    ) {
+        Ok(m) => Ok(m),
+        // The model error is a diagnosis beside the run: a reference that
+        // fails leaves it unmeasured, with the reason.
+        Err(e) => Ok(ModelError::unmeasured(format!(
+            "not measured: the full-solver reference run failed ({e})"
+        ))),
+    }
+}
+
+fn reference_run(
+    plan: &Plan,
+    reference: &std::sync::Arc<dyn crate::law::AsperityLaw>,
+    program: &LoadingProgram,
+    pull_off: Option<f64>,
+    max_load: Option<f64>,
+    hysteresis_energy: Option<f64>,
+) -> Result<ModelError> {
+    let rtol = plan.budget.rtol.max(REFERENCE_RTOL);
+    let model = plan
+        .model_with(reference.clone())?
+        .with_accuracy(Accuracy::new(rtol)?);
+    let ref_load = if max_load.is_some() {
+        model
+            .state(program.closest, History::Approach, &Observables::LOAD)?
+            .load()
+    } else {
+        None
+    };
+    let ref_pull = if pull_off.is_some() || plan.pull_off {
+        model
+            .pull_off(program.closest, program.start, 64)?
+            .map(|p| p.load)
+    } else {
+        None
+    };
+    // The run's own rule: adaptive for a continuous model, the trapezoid
+    // on the program for a finite sample of summits.
+    let ref_energy = match hysteresis_energy {
+        Some(_) if plan.distribution.sample_points().is_some() => model
+            .curve(program, &Observables::LOAD)?
+            .hysteresis_energy(),
+        Some(_) => Some(hysteresis_energy_to(&model, program, rtol)?),
+        None => None,
+    };
+    Ok(ModelError {
+        reference: format!(
+            "the full Lennard-Jones sphere solver's law (calibrated at mu = {:.4}) on the same \
+             surface and program, to rtol {rtol:e}",
+            plan.contact.tabor()
+        ),
+        // A searched pull-off without tension is a pull-off of 0.
+        pull_off: relative(pull_off.or(plan.pull_off.then_some(0.0)), ref_pull),
+        max_load: relative(max_load, ref_load),
+        hysteresis_energy: relative(hysteresis_energy, ref_energy),
+        reference_pull_off: ref_pull,
+        reference_max_load: ref_load,
+        reference_hysteresis_energy: ref_energy,
+    })
+}
