@@ -28,7 +28,16 @@ use std::process::ExitCode;
 
 /// Adhesive contact between rough surfaces.
 #[derive(Parser, Debug)]
-#[command(name = "asperity", version, about, long_about = None)]
+#[command(
+    name = "asperity",
+    version,
+    about,
+    long_about = None,
+    after_help = "Without a command, `asperity` runs the default study: it prints its \
+                  tables and writes curve.csv, summary.json and SVG charts into \
+                  ./asperity-out/ (the same as `cargo run --release` in the repository).\n\
+                  Scenes to start from: examples/scenes/*.toml; sample inputs: examples/data/."
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -108,11 +117,20 @@ fn main() -> ExitCode {
             let text = e.render().to_string();
             let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
             let first = lines.next().unwrap_or("error: bad arguments");
-            // "...not provided:" names the argument on the next line.
-            match lines.next() {
-                Some(next) if first.ends_with(':') => eprintln!("{first} {next}"),
-                _ => eprintln!("{first}"),
+            // "...not provided:" names the argument on the next line;
+            // clap's "tip: a similar ... exists" hint stays on the line.
+            let mut line = match lines.next() {
+                Some(next) if first.ends_with(':') => format!("{first} {next}"),
+                _ => first.to_string(),
+            };
+            for tip in text
+                .lines()
+                .map(str::trim)
+                .filter(|l| l.starts_with("tip:"))
+            {
+                line = format!("{line} ({tip})");
             }
+            eprintln!("{line}");
             return ExitCode::from(2);
         }
     };
