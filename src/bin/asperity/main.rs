@@ -79,6 +79,43 @@ enum Command {
     Bem(bem_cmd::BemArgs),
 }
 
+/// The subcommand within two edits of the one typed (`rn` -> `run`) when
+/// clap's own similarity test finds none (it needs longer names).
+fn nearest_command(e: &clap::Error) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue};
+    use clap::CommandFactory;
+    let Some(ContextValue::String(typed)) = e.get(ContextKind::InvalidSubcommand) else {
+        return None;
+    };
+    Cli::command()
+        .get_subcommands()
+        .map(|c| c.get_name().to_string())
+        // Ties go to the name with the same first letter (`rn`: `run`, not `fn`).
+        .map(|n| {
+            let other_start = n.chars().next() != typed.chars().next();
+            (edit_distance(typed, &n), other_start, n)
+        })
+        .filter(|(d, _, _)| *d <= 2)
+        .min()
+        .map(|(_, _, n)| n)
+}
+
+/// Levenshtein distance between `a` and `b` (characters).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
 /// Result of a subcommand.
 pub type CliResult = std::result::Result<(), CliError>;
 
@@ -129,6 +166,11 @@ fn main() -> ExitCode {
                 .filter(|l| l.starts_with("tip:"))
             {
                 line = format!("{line} ({tip})");
+            }
+            if !line.contains("tip:") && e.kind() == ErrorKind::InvalidSubcommand {
+                if let Some(near) = nearest_command(&e) {
+                    line = format!("{line} (tip: a similar subcommand exists: '{near}')");
+                }
             }
             eprintln!("{line}");
             return ExitCode::from(2);
