@@ -235,6 +235,13 @@ impl Axis {
         }
     }
 
+    /// The same axis drawn from `hi` to `lo` (y growing downwards, as
+    /// image rows do).
+    pub fn reversed(mut self) -> Axis {
+        std::mem::swap(&mut self.lo, &mut self.hi);
+        self
+    }
+
     /// The tick values (the labelled ones).
     pub fn ticks(&self) -> &[f64] {
         &self.ticks
@@ -245,9 +252,15 @@ impl Axis {
         self.scale
     }
 
-    /// `v`'s label in the axis's one notation.
+    /// `v`'s label in the axis's one notation (powers of ten on log
+    /// scales without trailing zeros: `10`, `1`, `0.1`).
     pub fn label(&self, v: f64) -> String {
-        self.notation.format(v)
+        let s = self.notation.format(v);
+        match (self.scale, self.notation) {
+            (Scale::Linear, _) | (_, Notation::Sci(_)) => s,
+            _ if s.contains('.') => s.trim_end_matches('0').trim_end_matches('.').to_string(),
+            _ => s,
+        }
     }
 
     /// The position of `v` on the transformed scale.

@@ -61,9 +61,22 @@ pub fn titled_root<'a>(
     width: u32,
     height: u32,
 ) -> Result<DrawingArea<SVGBackend<'a>, Shift>> {
+    titled_root_at(path, title, width, height, SCALE)
+}
+
+/// [`titled_root`] drawn at `scale` drawing units per pixel (1 for charts
+/// whose sizes are given in pixels); [`finish_svg_at`] with the same scale
+/// completes the file.
+pub fn titled_root_at<'a>(
+    path: &'a Path,
+    title: &str,
+    width: u32,
+    height: u32,
+    scale: u32,
+) -> Result<DrawingArea<SVGBackend<'a>, Shift>> {
     let fail = |e: String| Error::io(path.display(), e);
-    let s = SCALE as f64;
-    let root = SVGBackend::new(path, (width * SCALE, height * SCALE)).into_drawing_area();
+    let s = scale as f64;
+    let root = SVGBackend::new(path, (width * scale, height * scale)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
     let (lines, size) = fit_title(title, width as f64 - 24.0);
     let line_h = (size / 1.24 * 1.3 * s) as i32;
@@ -75,7 +88,7 @@ pub fn titled_root<'a>(
         root.draw_text(
             line,
             &style,
-            ((width * SCALE / 2) as i32, top + k as i32 * line_h),
+            ((width * scale / 2) as i32, top + k as i32 * line_h),
         )
         .map_err(|e| fail(e.to_string()))?;
     }
@@ -87,9 +100,14 @@ pub fn titled_root<'a>(
 /// (the `viewBox` keeps the fine grid) and puts the full `title` in the
 /// file's `<title>`.
 pub fn finish_svg(path: &Path, title: &str, width: u32, height: u32) -> Result<()> {
+    finish_svg_at(path, title, width, height, SCALE)
+}
+
+/// [`finish_svg`] for a chart drawn at `scale`.
+pub fn finish_svg_at(path: &Path, title: &str, width: u32, height: u32, scale: u32) -> Result<()> {
     let io = |e: std::io::Error| Error::io(path.display(), e);
     let svg = std::fs::read_to_string(path).map_err(io)?;
-    let big = format!("width=\"{}\" height=\"{}\"", width * SCALE, height * SCALE);
+    let big = format!("width=\"{}\" height=\"{}\"", width * scale, height * scale);
     let Some(head_end) = svg.find('>') else {
         return Err(Error::io(path.display(), "no <svg> element written"));
     };
