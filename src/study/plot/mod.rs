@@ -415,19 +415,6 @@ fn clip_runs(pts: &[(f64, f64)], y0: f64, y1: f64) -> Vec<Vec<(f64, f64)>> {
     runs
 }
 
-/// Compact tick label: plain for moderate magnitudes, else scientific.
-pub(crate) fn tick(v: f64) -> String {
-    let a = v.abs();
-    if a == 0.0 {
-        "0".into()
-    } else if (1e-2..1e4).contains(&a) {
-        let s = format!("{v:.3}");
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        format!("{v:.2e}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -459,13 +446,11 @@ mod tests {
             empty.write_svg(&path, 400, 300).unwrap_err().field(),
             Some("chart")
         );
-        assert_eq!(tick(0.5), "0.5");
         let runs = clip_runs(&[(0.0, 5.0), (1.0, 1.0), (2.0, 0.0), (3.0, 5.0)], -1.0, 3.0);
         assert_eq!(
             runs,
             vec![vec![(0.5, 3.0), (1.0, 1.0), (2.0, 0.0), (2.6, 3.0)]]
         );
-        assert_eq!(tick(2.5e-7), "2.50e-7");
         std::fs::remove_dir_all(&dir).ok();
     }
 }
