@@ -52,9 +52,10 @@ pub mod surface;
 
 pub use error::{Error, Result};
 
-/// The types most programs need: one asperity and its laws; a GW surface
-/// with any law and its curve; populations; the contact resistance
-/// against force and the stiction margin of a switch; measured maps.
+/// The types most programs need: one asperity and its laws (elastic,
+/// elastic-plastic, with adhesion); a GW surface with any law and its
+/// curve; populations; the contact resistance against force and the
+/// stiction margin of a switch; measured maps.
 ///
 /// ```
 /// use asperity::prelude::*;
@@ -73,6 +74,41 @@ pub use error::{Error, Result};
 /// assert!(s.load().unwrap() > 0.0 && ohm > 0.0);
 /// # Ok::<(), asperity::Error>(())
 /// ```
+///
+/// A switch study with the prelude alone: contact resistance against the
+/// actuation force (each force's separation solved on approach), then the
+/// stiction margin of a 10 N/m spring over 2 um of travel after pressing
+/// to 1 mN. Elastic-plastic summits with adhesion ([`AdhesivePlastic`](crate::law::plastic::AdhesivePlastic)
+/// over [`build_plastic`](crate::law::plastic::build)) are one line away
+/// from the JKR law used here.
+///
+/// ```
+/// use asperity::prelude::*;
+/// use std::sync::Arc;
+///
+/// let contact = AsperityContact::gold_microswitch();
+/// let law: Arc<dyn AsperityLaw> = Arc::from(LawKind::Jkr.build(&contact)?);
+/// let surface = RoughSurface::gold_microswitch();
+/// let model = GwModel::new(surface, Arc::new(Gaussian::new()), law)?;
+/// let spot = SpotResistance::new(Spreading::Wexler, Conductor::GOLD, Conductor::GOLD, 0.0)?;
+/// let r = ResistanceObservables::new(spot, Interaction::Greenwood, surface.nominal_area.sqrt());
+/// let outputs = r.add_to(Observables::LOAD)?;
+/// let start = model.start_separation(1e-8);
+/// let mut last = f64::INFINITY;
+/// for force in [1e-5, 1e-4, 1e-3] {
+///     let d = model.separation_at_load(force, start)?;
+///     let s = model.state(d, History::Approach, &outputs)?;
+///     let ohm = r.value(&outputs, &s.totals).unwrap();
+///     assert!((s.load().unwrap() - force).abs() < 1e-6 * force);
+///     assert!(ohm < last, "resistance falls as the force grows");
+///     last = ohm;
+/// }
+/// let closest = model.separation_at_load(1e-3, start)?;
+/// let pull = model.pull_off(closest, start, 64)?.map_or(0.0, |p| p.load);
+/// let verdict = Switch::new(10.0, 2e-6)?.stiction(pull)?;
+/// assert_eq!(verdict.sticks, verdict.margin < 0.0);
+/// # Ok::<(), asperity::Error>(())
+/// ```
 pub mod prelude {
     #[doc(no_inline)]
     pub use crate::electrical::{
@@ -85,6 +121,10 @@ pub mod prelude {
     #[doc(no_inline)]
     pub use crate::heights::{DistributionKind, Exponential, Gaussian, HeightDistribution};
     #[doc(no_inline)]
+    pub use crate::law::plastic::{
+        build as build_plastic, AdhesivePlastic, PlasticLaw, PlasticLoading,
+    };
+    #[doc(no_inline)]
     pub use crate::law::{
         AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, LawKind,
     };
@@ -94,7 +134,7 @@ pub mod prelude {
         State,
     };
     #[doc(no_inline)]
-    pub use crate::material::plastic::{Plasticity, Variant};
+    pub use crate::material::plastic::{plasticity_index, Plasticity, Variant};
     #[doc(no_inline)]
     pub use crate::material::{contact_modulus, Adhesion, AsperityContact, Material, MaugisScales};
     #[doc(no_inline)]

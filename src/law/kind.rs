@@ -9,7 +9,11 @@ use super::{AsperityLaw, Bradley, Cos, Dmt, Hertz, Jkr, Maugis, RadiusScaling};
 use crate::error::{Error, Result};
 use crate::material::AsperityContact;
 
-/// The laws the CLI and scenes can name.
+/// The analytic elastic laws, by name (`asperity law --law NAME`, and
+/// `law.kind` in a scene). Scenes also name laws that are not analytic
+/// kinds: the elastic-plastic variants ([`crate::material::plastic::Variant`]),
+/// `shaped` summits and the `calibrated` law; the study layer's `LawName`
+/// lists them all.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum LawKind {

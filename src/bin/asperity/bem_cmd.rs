@@ -383,10 +383,7 @@ fn write_outputs(
         }
     }
     use asperity::study::plot::{Chart, Series};
-    let series = |label: &str, pts: Vec<(f64, f64)>| Series {
-        label: label.into(),
-        points: pts,
-    };
+    let series = |label: &str, pts: Vec<(f64, f64)>| Series::leg(label, pts);
     let pick = |l: &[ModelJson], f: fn(&ModelJson) -> Option<f64>| -> Vec<(f64, f64)> {
         l.iter()
             .filter_map(|m| f(m).map(|v| (m.pressure, v)))
@@ -408,6 +405,7 @@ fn write_outputs(
             series("Persson", pick(&out.persson, |m| m.area_fraction)),
         ],
         y_range: None,
+        y_symlog: false,
     };
     let gap = Chart {
         title: "Mean gap against mean pressure".into(),
@@ -425,6 +423,7 @@ fn write_outputs(
             series("Persson", pick(&out.persson, |m| m.mean_gap_m)),
         ],
         y_range: None,
+        y_symlog: false,
     };
     let chart = |e: Error| CliError::Failed(e.to_string());
     area.write_svg_loglog(&dir.join("area_vs_pressure.svg"), 800, 560)

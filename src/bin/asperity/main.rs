@@ -28,7 +28,16 @@ use std::process::ExitCode;
 
 /// Adhesive contact between rough surfaces.
 #[derive(Parser, Debug)]
-#[command(name = "asperity", version, about, long_about = None)]
+#[command(
+    name = "asperity",
+    version,
+    about,
+    long_about = None,
+    after_help = "Without a command, `asperity` runs the default study: it prints its \
+                  tables and writes curve.csv, summary.json and SVG charts into \
+                  ./asperity-out/ (the same as `cargo run --release` in the repository).\n\
+                  Scenes to start from: examples/scenes/*.toml; sample inputs: examples/data/."
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -70,6 +79,43 @@ enum Command {
     Bem(bem_cmd::BemArgs),
 }
 
+/// The subcommand within two edits of the one typed (`rn` -> `run`) when
+/// clap's own similarity test finds none (it needs longer names).
+fn nearest_command(e: &clap::Error) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue};
+    use clap::CommandFactory;
+    let Some(ContextValue::String(typed)) = e.get(ContextKind::InvalidSubcommand) else {
+        return None;
+    };
+    Cli::command()
+        .get_subcommands()
+        .map(|c| c.get_name().to_string())
+        // Ties go to the name with the same first letter (`rn`: `run`, not `fn`).
+        .map(|n| {
+            let other_start = n.chars().next() != typed.chars().next();
+            (edit_distance(typed, &n), other_start, n)
+        })
+        .filter(|(d, _, _)| *d <= 2)
+        .min()
+        .map(|(_, _, n)| n)
+}
+
+/// Levenshtein distance between `a` and `b` (characters).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
 /// Result of a subcommand.
 pub type CliResult = std::result::Result<(), CliError>;
 
@@ -108,11 +154,25 @@ fn main() -> ExitCode {
             let text = e.render().to_string();
             let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
             let first = lines.next().unwrap_or("error: bad arguments");
-            // "...not provided:" names the argument on the next line.
-            match lines.next() {
-                Some(next) if first.ends_with(':') => eprintln!("{first} {next}"),
-                _ => eprintln!("{first}"),
+            // "...not provided:" names the argument on the next line;
+            // clap's "tip: a similar ... exists" hint stays on the line.
+            let mut line = match lines.next() {
+                Some(next) if first.ends_with(':') => format!("{first} {next}"),
+                _ => first.to_string(),
+            };
+            for tip in text
+                .lines()
+                .map(str::trim)
+                .filter(|l| l.starts_with("tip:"))
+            {
+                line = format!("{line} ({tip})");
             }
+            if !line.contains("tip:") && e.kind() == ErrorKind::InvalidSubcommand {
+                if let Some(near) = nearest_command(&e) {
+                    line = format!("{line} (tip: a similar subcommand exists: '{near}')");
+                }
+            }
+            eprintln!("{line}");
             return ExitCode::from(2);
         }
     };

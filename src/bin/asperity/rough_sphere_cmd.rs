@@ -186,16 +186,11 @@ fn write_charts(gt: &GreenwoodTripp, states: &[GtState], dir: &Path) -> asperity
             x_label: "rho = r/sqrt(2 R sigma)".into(),
             y_label: "p / (E* sqrt(sigma/(8R)))".into(),
             series: vec![
-                Series {
-                    label: "rough sphere (Greenwood–Tripp)".into(),
-                    points: rough,
-                },
-                Series {
-                    label: "Hertz, same load".into(),
-                    points: hertz,
-                },
+                Series::leg("rough sphere (Greenwood–Tripp)", rough),
+                Series::dashed("Hertz, same load", hertz),
             ],
             y_range: None,
+            y_symlog: false,
         }
         .write_svg(&dir.join(format!("pressure_{i}.svg")), 800, 560)?;
     }
@@ -221,16 +216,11 @@ fn write_charts(gt: &GreenwoodTripp, states: &[GtState], dir: &Path) -> asperity
         x_label: "approach of distant points u(0) - d (sigma)".into(),
         y_label: "P* = P / (E* sqrt(sigma/(8R)) 2R sigma)".into(),
         series: vec![
-            Series {
-                label: "rough sphere (Greenwood–Tripp)".into(),
-                points: rough,
-            },
-            Series {
-                label: "Hertz".into(),
-                points: hertz,
-            },
+            Series::leg("rough sphere (Greenwood–Tripp)", rough),
+            Series::dashed("Hertz", hertz),
         ],
         y_range: None,
+        y_symlog: false,
     }
     .write_svg(&dir.join("load_approach.svg"), 800, 560)
 }

@@ -33,6 +33,32 @@ use crate::material::MaugisScales;
 use std::sync::Arc;
 
 /// An elastic-plastic law with JKR adhesion on the unloading shape.
+///
+/// Adding adhesion to a plastic law: build the non-adhesive law
+/// ([`build`](super::build), or a variant's own `new`), take its loading
+/// curve ([`PlasticLaw::as_loading`](super::PlasticLaw::as_loading)) and
+/// wrap it with the work of adhesion. The result is an [`AsperityLaw`] like
+/// any other (GW, Monte Carlo, scenes with `law.kind = "kogut-etsion"` and
+/// `w > 0` do exactly this); its pull-off grows with the maximum load
+/// reached, from JKR's `-(3/2) pi w R` below first yield.
+///
+/// ```
+/// use asperity::prelude::*;
+/// use std::sync::Arc;
+///
+/// let (r, e_star, w) = (1e-6, contact_modulus(&Material::gold(), &Material::gold()), 0.5);
+/// let ke = build_plastic(Variant::KogutEtsion, r, e_star, Plasticity::gold())?;
+/// let law = AdhesivePlastic::new(ke.clone().as_loading(), w)?;
+/// let omega_c = ke.critical_interference();
+/// let jkr = -1.5 * std::f64::consts::PI * w * r;
+/// // Below first yield: JKR's pull-off.
+/// let elastic = law.pull_off_after(0.5 * omega_c, Control::Load).load;
+/// assert!((elastic - jkr).abs() < 1e-9 * jkr.abs());
+/// // Pressed to 50 critical interferences: flattened, it sticks harder.
+/// let pressed = law.pull_off_after(50.0 * omega_c, Control::Load).load;
+/// assert!(pressed < 1.2 * jkr);
+/// # Ok::<(), asperity::Error>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct AdhesivePlastic {
     loading: Arc<dyn PlasticLoading>,

@@ -6,7 +6,7 @@
 use crate::loading::Curve;
 use crate::study::plan::Plan;
 use crate::study::plot::plastic::load_area_chart;
-use crate::study::plot::{Chart, Series};
+use crate::study::plot::{Chart, Series, Stroke};
 use crate::study::run::Results;
 
 /// A feature chart: file name, chart, and whether its axes are logarithmic.
@@ -23,14 +23,11 @@ pub fn feature_charts(plan: &Plan, results: &Results) -> Vec<FeatureChart> {
                 .filter_map(|r| Some((r.state.load()?, r.values[k]?)))
                 .collect()
         };
-        let mut series = vec![Series {
-            label: "approach".into(),
-            points: points(&results.records.approach),
-        }];
+        let mut series = vec![Series::leg("approach", points(&results.records.approach))];
         if !results.listed.is_empty() {
             series.push(Series {
-                label: "listed states".into(),
-                points: points(&results.listed),
+                stroke: Stroke::Markers,
+                ..Series::solid("listed states", points(&results.listed))
             });
         }
         out.push((
@@ -44,6 +41,7 @@ pub fn feature_charts(plan: &Plan, results: &Results) -> Vec<FeatureChart> {
                 y_label: "contact resistance R (Ohm)".into(),
                 series,
                 y_range: None,
+                y_symlog: false,
             },
             true,
         ));

@@ -16,7 +16,7 @@ pub fn si_prefix(values: impl Iterator<Item = f64>) -> (f64, &'static str) {
     let max = values
         .filter(|v| v.is_finite())
         .fold(0.0f64, |m, v| m.max(v.abs()));
-    const PREFIXES: [(f64, &str); 9] = [
+    const PREFIXES: [(f64, &str); 10] = [
         (1e-18, "a"),
         (1e-15, "f"),
         (1e-12, "p"),
@@ -26,6 +26,7 @@ pub fn si_prefix(values: impl Iterator<Item = f64>) -> (f64, &'static str) {
         (1.0, ""),
         (1e3, "k"),
         (1e6, "M"),
+        (1e9, "G"),
     ];
     if max == 0.0 {
         return (1.0, "");
@@ -258,9 +259,11 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
     if o.load {
         let mut series: Vec<Series> = legs
             .iter()
-            .map(|(name, leg)| Series {
-                label: (*name).into(),
-                points: pick(&|s| Some((s.separation / ds, s.load()? / ls)), leg),
+            .map(|(name, leg)| {
+                Series::leg(
+                    *name,
+                    pick(&|s| Some((s.separation / ds, s.load()? / ls)), leg),
+                )
             })
             .collect();
         if let Some(m) = &results.montecarlo {
@@ -268,13 +271,12 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 ("Monte Carlo approach", &m.curve.approach),
                 ("Monte Carlo retraction", &m.curve.retract),
             ] {
-                series.push(Series {
-                    label: name.into(),
-                    points: leg
-                        .iter()
+                series.push(Series::leg(
+                    name,
+                    leg.iter()
                         .filter_map(|s| Some((s.separation / ds, s.load()? / ls)))
                         .collect(),
-                });
+                ));
             }
         }
         out.push((
@@ -285,6 +287,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 y_label: format!("load P ({lp}N), > 0 compressive"),
                 series,
                 y_range: None,
+                y_symlog: true,
             },
         ));
         // The adhesive part is invisible at full scale: zoom on it, with a
@@ -303,16 +306,18 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
             let (ps, pp) = si_prefix([deepest].into_iter());
             let mut series: Vec<Series> = legs
                 .iter()
-                .map(|(name, leg)| Series {
-                    label: format!("{name} (GW integral)"),
-                    points: pick(&|s| Some((s.separation / ds, s.load()? / ps)), leg),
+                .map(|(name, leg)| {
+                    Series::leg(
+                        format!("{name} (GW integral)"),
+                        pick(&|s| Some((s.separation / ds, s.load()? / ps)), leg),
+                    )
                 })
                 .collect();
             for (seed, c) in examples {
-                series.push(Series {
-                    label: format!("one switch (seed {seed}), retraction"),
-                    points: c.iter().map(|&(d, p)| (d / ds, p / ps)).collect(),
-                });
+                series.push(Series::leg(
+                    format!("one switch (seed {seed}), retraction"),
+                    c.iter().map(|&(d, p)| (d / ds, p / ps)).collect(),
+                ));
             }
             let m = deepest.abs() / ps;
             let integral = results
@@ -326,6 +331,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                     y_label: format!("load P ({pp}N), < 0 tensile"),
                     series,
                     y_range: Some((-1.3 * m, 3.0 * m)),
+                    y_symlog: false,
                 },
             ));
         }
@@ -334,9 +340,11 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
         let (s_a, p_a) = si_prefix_area(all().filter_map(|s| s.area()));
         let series = legs
             .iter()
-            .map(|(name, leg)| Series {
-                label: (*name).into(),
-                points: pick(&|s| Some((s.load()? / ls, s.area()? / s_a)), leg),
+            .map(|(name, leg)| {
+                Series::leg(
+                    *name,
+                    pick(&|s| Some((s.load()? / ls, s.area()? / s_a)), leg),
+                )
             })
             .collect();
         out.push((
@@ -347,15 +355,15 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 y_label: format!("real contact area ({p_a}m^2)"),
                 series,
                 y_range: None,
+                y_symlog: false,
             },
         ));
     }
     if o.load && o.count {
         let series = legs
             .iter()
-            .map(|(name, leg)| Series {
-                label: (*name).into(),
-                points: pick(&|s| Some((s.load()? / ls, s.count()?)), leg),
+            .map(|(name, leg)| {
+                Series::leg(*name, pick(&|s| Some((s.load()? / ls, s.count()?)), leg))
             })
             .collect();
         out.push((
@@ -366,6 +374,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 y_label: "number of contacts (-)".into(),
                 series,
                 y_range: None,
+                y_symlog: false,
             },
         ));
     }

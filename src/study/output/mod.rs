@@ -5,6 +5,7 @@
 
 mod feature_figures;
 mod figures;
+pub mod format;
 mod report;
 mod summary;
 mod tables;

@@ -2,13 +2,21 @@
 //! numbers with their units, one line each; the states' quantities follow
 //! the plan's quantity set.
 
+use super::format;
 use super::summary::{McSummary, PopulationSummary, Summary};
 use crate::study::plan::Plan;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
+/// A value with its unit, SI-prefixed ([`format::si`]); `-` when absent.
 fn show(x: Option<f64>, unit: &str) -> String {
-    x.map_or("-".into(), |v| format!("{v:.4e} {unit}"))
+    x.map_or("-".into(), |v| {
+        if unit.is_empty() {
+            format::count(v)
+        } else {
+            format::si(v, unit)
+        }
+    })
 }
 
 /// The report of `summary` (a run of `plan`) and the files it wrote.
@@ -47,7 +55,7 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
         }
     }
     let pull = match (summary.pull_off_load, plan.pull_off) {
-        (Some(p), _) => format!("{p:.4e} N"),
+        (Some(p), _) => format::si(p, "N"),
         (None, true) => "none: no tensile load on retraction".into(),
         (None, false) => "-".into(),
     };
@@ -82,7 +90,7 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
                 "    {} model: max load {}, contacts {}, pull-off {}",
                 o.model,
                 show(o.headlines.get("max_load").flatten(), "N"),
-                num(o.headlines.get("max_count").flatten()),
+                show(o.headlines.get("max_count").flatten(), ""),
                 show(o.pull_off_load, "N")
             );
         }
@@ -136,11 +144,14 @@ fn population(out: &mut String, p: &PopulationSummary) {
         {
             let _ = writeln!(
                 out,
-                "    one switch       {mean:.4e} N +- {:.1e} N (mean over {} populations of {} summits; 5 %-95 %: {p05:.4e} .. {p95:.4e} N; {} summits carry the integral's pull-off)",
-                p.mean_se_n.unwrap_or(f64::NAN),
+                "    one switch       {} +- {} (mean over {} populations of {} summits; 5 %-95 %: {} .. {}; {} summits carry the integral's pull-off)",
+                format::si(mean, "N"),
+                format::si(p.mean_se_n.unwrap_or(f64::NAN), "N"),
                 p.seeds,
                 p.summits,
-                p.carriers.map_or("no".into(), |c| format!("{c:.3}"))
+                format::si(p05, "N"),
+                format::si(p95, "N"),
+                p.carriers.map_or("no".into(), format::count)
             );
         }
     }
@@ -213,13 +224,12 @@ fn montecarlo(out: &mut String, m: &McSummary) {
 /// Heating, plasticity and stiction lines.
 fn features(out: &mut String, summary: &Summary) {
     if let Some(h) = &summary.heating {
-        let show = |x: Option<f64>, unit: &str| {
-            x.map_or("- (no contact)".into(), |v| format!("{v:.4e} {unit}"))
-        };
+        let show =
+            |x: Option<f64>, unit: &str| x.map_or("- (no contact)".into(), |v| format::si(v, unit));
         let _ = writeln!(
             out,
-            "  heating            {:.3e} A: contact voltage {}, peak temperature {} (bulk {:.2} K)",
-            h.current_a,
+            "  heating            {}: contact voltage {}, peak temperature {} (bulk {:.2} K)",
+            format::si(h.current_a, "A"),
             show(h.contact_voltage_v, "V"),
             show(h.max_temperature_k, "K"),
             h.bulk_temperature_k
@@ -229,9 +239,9 @@ fn features(out: &mut String, summary: &Summary) {
         let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:.1} %", 100.0 * v));
         let _ = writeln!(
             out,
-            "  plasticity index   {:.3} (H = {:.3e} Pa); contacts at the closest approach: elastic {}, elastic-plastic {}, fully plastic {}",
+            "  plasticity index   {:.3} (H = {}); contacts at the closest approach: elastic {}, elastic-plastic {}, fully plastic {}",
             p.plasticity_index,
-            p.hardness_pa,
+            format::si(p.hardness_pa, "Pa"),
             pct(p.elastic_fraction),
             pct(p.elastic_plastic_fraction),
             pct(p.fully_plastic_fraction)
@@ -240,8 +250,8 @@ fn features(out: &mut String, summary: &Summary) {
     if let Some(s) = &summary.stiction {
         let _ = writeln!(
             out,
-            "  stiction           pull-off {:.4e} N ({}), spring k x travel {:.4e} N, margin {:.4e} N: {}",
-            s.pull_off_n,
+            "  stiction           pull-off {} ({}), spring k x travel {}, margin {}: {}",
+            format::si(s.pull_off_n, "N"),
             if s.pull_off_basis == "population" {
                 format!(
                     "exceeded by {:.0} % of the populations",
@@ -250,9 +260,13 @@ fn features(out: &mut String, summary: &Summary) {
             } else {
                 "the integral's".into()
             },
-            s.restoring_force_n,
-            s.margin_n,
-            if s.sticks { "STICKS (margin < 0)" } else { "reopens" }
+            format::si(s.restoring_force_n, "N"),
+            format::si(s.margin_n, "N"),
+            if s.sticks {
+                "STICKS (margin < 0)"
+            } else {
+                "reopens"
+            }
         );
         if let Some((lo, hi)) = s.sticks_probability_interval {
             let _ = writeln!(
@@ -264,38 +278,60 @@ fn features(out: &mut String, summary: &Summary) {
     }
 }
 
-/// The listed states as a table, one column per quantity.
+/// The listed states as a table, one column per quantity, each in one
+/// unit (the SI prefix of its largest value) with three decimals; counts
+/// as [`format::count`].
 fn states(out: &mut String, plan: &Plan, summary: &Summary) {
     let Some(states) = &summary.states else {
         return;
     };
     let _ = writeln!(out, "  listed states (approach):");
-    let head: Vec<String> = std::iter::once("separation m".to_string())
-        .chain(plan.quantities.iter().map(|q| {
-            let u = q.unit_text();
-            if u.is_empty() {
-                q.name.replace('_', " ")
-            } else {
-                format!("{} {u}", q.name.replace('_', " "))
-            }
-        }))
-        .collect();
+    let mut columns: Vec<(String, String, Vec<Option<f64>>)> = vec![(
+        "separation".into(),
+        "m".into(),
+        states.iter().map(|s| Some(s.separation_m)).collect(),
+    )];
+    for (k, q) in plan.quantities.iter().enumerate() {
+        columns.push((
+            q.name.replace('_', " "),
+            q.unit_text(),
+            states
+                .iter()
+                .map(|s| s.values.get(k).and_then(|v| v.1))
+                .collect(),
+        ));
+    }
+    let mut head = Vec::new();
+    let mut cells: Vec<Vec<String>> = vec![Vec::new(); states.len()];
+    for (name, unit, values) in &columns {
+        let finite = || values.iter().flatten().copied().filter(|v| v.is_finite());
+        let (scale, prefix) = match unit.as_str() {
+            "m^2" => super::si_prefix_area(finite()),
+            "N" | "m" | "J" | "Ohm" | "V" | "A" => super::si_prefix(finite()),
+            _ => (1.0, ""),
+        };
+        head.push(if unit.is_empty() {
+            name.clone()
+        } else {
+            format!("{name} {prefix}{unit}")
+        });
+        for (row, v) in cells.iter_mut().zip(values) {
+            row.push(match v {
+                None => "-".into(),
+                Some(x) if unit.is_empty() => format::count(*x),
+                Some(x) => format!("{:.3}", x / scale),
+            });
+        }
+    }
     let width = head.iter().map(|h| h.len()).max().unwrap_or(13).max(13);
-    let _ = writeln!(
-        out,
-        "    {}",
-        head.iter()
-            .map(|h| format!("{h:>width$}"))
+    let line = |v: &[String]| {
+        v.iter()
+            .map(|c| format!("{c:>width$}"))
             .collect::<Vec<_>>()
             .join(" ")
-    );
-    for st in states {
-        let cells: Vec<String> = std::iter::once(format!("{:>width$.5e}", st.separation_m))
-            .chain(st.values.iter().map(|(_, v)| match v {
-                Some(x) => format!("{x:>width$.5e}"),
-                None => format!("{:>width$}", "-"),
-            }))
-            .collect();
-        let _ = writeln!(out, "    {}", cells.join(" "));
+    };
+    let _ = writeln!(out, "    {}", line(&head));
+    for row in &cells {
+        let _ = writeln!(out, "    {}", line(row));
     }
 }

@@ -357,7 +357,7 @@ impl Summary {
             plasticity: plasticity(plan, results),
             stiction: results.stiction.map(|s| StictionSummary {
                 pull_off_n: s.pull_off,
-                restoring_force_n: s.restoring_force,
+                restoring_force_n: super::format::tidy(s.restoring_force),
                 margin_n: s.margin,
                 sticks: s.sticks,
                 sticks_probability: results

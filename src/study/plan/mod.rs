@@ -286,7 +286,11 @@ impl Plan {
 impl fmt::Display for Plan {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let title = self.scene.title.as_deref().unwrap_or("untitled scene");
-        writeln!(f, "plan for {title} ({:?})", self.mode)?;
+        let mode = match self.mode {
+            PlanMode::Planned => "what the scene needs",
+            PlanMode::EverythingOn => "everything on, most exact methods",
+        };
+        writeln!(f, "plan for {title} ({mode})")?;
         for d in &self.decisions {
             writeln!(f, "  {:<18} {:<24} {}", d.topic(), d.choice(), d.why())?;
         }

@@ -2,7 +2,7 @@
 //! of a switch's populations, with the integral's pull-off and the
 //! quantiles marked.
 
-use super::{tick, COLOURS};
+use super::{Axis, COLOURS};
 use crate::error::{Error, Result};
 use plotters::prelude::*;
 use std::path::Path;
@@ -59,14 +59,13 @@ impl Histogram {
             counts[(((x - lo) / w) as usize).min(bins - 1)] += 1;
         }
         let top = *counts.iter().max().unwrap_or(&1) as f64 * 1.15;
-        let root = SVGBackend::new(path, (width, height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
+        let root = super::frame::titled_root_at(path, &self.title, width, height, 1)?;
+        let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(0.0, top));
         let mut chart = ChartBuilder::on(&root)
-            .caption(&self.title, ("sans-serif", 20))
             .margin(12)
             .x_label_area_size(48)
             .y_label_area_size(64)
-            .build_cartesian_2d(x0..x1, 0.0..top)
+            .build_cartesian_2d(xa.clone(), ya.clone())
             .map_err(|e| fail(e.to_string()))?;
         chart
             .configure_mesh()
@@ -74,8 +73,8 @@ impl Histogram {
             .y_desc("populations")
             .label_style(("sans-serif", 14))
             .axis_desc_style(("sans-serif", 16))
-            .x_label_formatter(&|x| tick(*x))
-            .y_label_formatter(&|y| format!("{y:.0}"))
+            .x_label_formatter(&|x| xa.label(*x))
+            .y_label_formatter(&|y| ya.label(*y))
             .draw()
             .map_err(|e| fail(e.to_string()))?;
         let bar = COLOURS[0];
@@ -106,6 +105,7 @@ impl Histogram {
             .label_font(("sans-serif", 14))
             .draw()
             .map_err(|e| fail(e.to_string()))?;
-        root.present().map_err(|e| fail(e.to_string()))
+        root.present().map_err(|e| fail(e.to_string()))?;
+        super::frame::finish_svg_at(path, &self.title, width, height, 1)
     }
 }

@@ -84,16 +84,11 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
     let ye = edges(&table.load_bar, false);
     let (x0, x1) = (xe[0], xe[xe.len() - 1]);
     let (y0, y1) = (ye[0], ye[ye.len() - 1]);
-    let root = SVGBackend::new(path, (1500, 560)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
-    let root = root
-        .titled(
-            &format!(
-                "Adhesion map: where each law is within {tol:e} of the Lennard-Jones sphere solution"
-            ),
-            ("sans-serif", 20),
-        )
-        .map_err(|e| fail(e.to_string()))?;
+    let title = format!(
+        "Adhesion map: where each law is within {tol:e} of the Lennard-Jones sphere solution"
+    );
+    let root = super::frame::titled_root_at(path, &title, 1500, 560, 1)?;
+    let (xa, ya) = (super::Axis::log(x0, x1), super::Axis::linear(y0, y1));
     let panels = root.split_evenly((1, MAP_LAWS.len()));
     let colours = [
         RGBColor(120, 120, 120),
@@ -108,7 +103,7 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
             .margin(8)
             .x_label_area_size(40)
             .y_label_area_size(48)
-            .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
+            .build_cartesian_2d(xa.clone(), ya.clone())
             .map_err(|e| fail(e.to_string()))?;
         chart
             .configure_mesh()
@@ -116,8 +111,8 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
             .y_desc("load P / (pi w R)")
             .label_style(("sans-serif", 12))
             .axis_desc_style(("sans-serif", 14))
-            .x_label_formatter(&|v| super::tick(*v))
-            .y_label_formatter(&|v| super::tick(*v))
+            .x_label_formatter(&|v| xa.label(*v))
+            .y_label_formatter(&|v| ya.label(*v))
             .draw()
             .map_err(|e| fail(e.to_string()))?;
         let mut cells = Vec::new();
@@ -134,7 +129,7 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
         chart.draw_series(cells).map_err(|e| fail(e.to_string()))?;
     }
     root.present().map_err(|e| fail(e.to_string()))?;
-    Ok(())
+    super::frame::finish_svg_at(path, &title, 1500, 560, 1)
 }
 
 #[cfg(test)]

@@ -11,13 +11,14 @@ use crate::loading::Curve;
 pub fn load_area_chart(title: &str, curves: &[(String, Curve)]) -> Chart {
     let series = curves
         .iter()
-        .map(|(label, c)| Series {
-            label: label.clone(),
-            points: c
-                .approach
-                .iter()
-                .filter_map(|s| Some((s.area()? * 1e12, s.load()? * 1e3)))
-                .collect(),
+        .map(|(label, c)| {
+            Series::leg(
+                label.clone(),
+                c.approach
+                    .iter()
+                    .filter_map(|s| Some((s.area()? * 1e12, s.load()? * 1e3)))
+                    .collect(),
+            )
         })
         .collect();
     Chart {
@@ -26,5 +27,6 @@ pub fn load_area_chart(title: &str, curves: &[(String, Curve)]) -> Chart {
         y_label: "load (mN)".into(),
         series,
         y_range: None,
+        y_symlog: false,
     }
 }

@@ -2,7 +2,7 @@
 //! equilibrium curve, the displacement-controlled loading and unloading paths (with their
 //! jumps) and the two envelopes.
 
-use super::{tick, COLOURS};
+use super::{Axis, COLOURS};
 use crate::error::{Error, Result};
 use crate::punch::{Envelope, Evolution, WavyPunch};
 use plotters::prelude::*;
@@ -101,14 +101,13 @@ impl PunchChart {
         };
         let ((x0, x1), (y0, y1)) = (span(|p| p.0), span(|p| p.1));
         let fail = |e: String| Error::io(path.display(), e);
-        let root = SVGBackend::new(path, (width, height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
+        let root = super::frame::titled_root_at(path, &self.title, width, height, 1)?;
+        let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(y0, y1));
         let mut chart = ChartBuilder::on(&root)
-            .caption(&self.title, ("sans-serif", 20))
             .margin(12)
             .x_label_area_size(48)
             .y_label_area_size(78)
-            .build_cartesian_2d(x0..x1, y0..y1)
+            .build_cartesian_2d(xa.clone(), ya.clone())
             .map_err(|e| fail(e.to_string()))?;
         chart
             .configure_mesh()
@@ -116,8 +115,8 @@ impl PunchChart {
             .y_desc("load P (N)")
             .label_style(("sans-serif", 14))
             .axis_desc_style(("sans-serif", 16))
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
+            .x_label_formatter(&|v| xa.label(*v))
+            .y_label_formatter(&|v| ya.label(*v))
             .draw()
             .map_err(|e| fail(e.to_string()))?;
         let grey = RGBColor(190, 190, 190);
@@ -145,15 +144,23 @@ impl PunchChart {
                 }
             }
             let style = colour.stroke_width(width);
+            // Unloading dashed, loading solid: told apart without colour.
+            let dashed = label.starts_with("unloading");
             let mut first = true;
             for run in runs.into_iter().filter(|r| r.len() > 1) {
-                let drawn = chart
-                    .draw_series(LineSeries::new(run, style))
-                    .map_err(|e| fail(e.to_string()))?;
+                let drawn = if dashed {
+                    chart.draw_series(DashedLineSeries::new(run, 8, 5, style))
+                } else {
+                    chart.draw_series(LineSeries::new(run, style))
+                }
+                .map_err(|e| fail(e.to_string()))?;
                 if first {
-                    drawn
-                        .label(label)
-                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+                    let (a, b) = if dashed { (8, 12) } else { (20, 20) };
+                    drawn.label(label).legend(move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + PathElement::new(vec![(0, 0), (a, 0)], style)
+                            + PathElement::new(vec![(b, 0), (20, 0)], style)
+                    });
                     first = false;
                 }
             }
@@ -167,7 +174,7 @@ impl PunchChart {
             .draw()
             .map_err(|e| fail(e.to_string()))?;
         root.present().map_err(|e| fail(e.to_string()))?;
-        Ok(())
+        super::frame::finish_svg_at(path, &self.title, width, height, 1)
     }
 }
 

@@ -1,7 +1,7 @@
 //! Charts of a measured topography: the summit-height histogram against the
 //! Gaussian model predicted from the moments, and the summit map.
 
-use super::{tick, COLOURS};
+use super::{Axis, COLOURS};
 use crate::error::{Error, Result};
 use crate::heights::{Gaussian, HeightDistribution};
 use crate::surface::Characterisation;
@@ -72,14 +72,14 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
         .copied()
         .fold(0.0, f64::max)
         * 1.08;
-    let root = SVGBackend::new(path, (800, 500)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| fail(path, e))?;
+    let title = format!("Summit heights ({n} summits)");
+    let root = super::frame::titled_root_at(path, &title, 800, 500, 1)?;
+    let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(0.0, ymax));
     let mut chart = ChartBuilder::on(&root)
-        .caption(format!("Summit heights ({n} summits)"), ("sans-serif", 22))
         .margin(12)
         .x_label_area_size(48)
         .y_label_area_size(78)
-        .build_cartesian_2d(x0..x1, 0.0..ymax)
+        .build_cartesian_2d(xa.clone(), ya.clone())
         .map_err(|e| fail(path, e))?;
     chart
         .configure_mesh()
@@ -87,8 +87,8 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
         .y_desc(format!("probability density (1/{name})"))
         .label_style(("sans-serif", 14))
         .axis_desc_style(("sans-serif", 16))
-        .x_label_formatter(&|v| tick(*v))
-        .y_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| xa.label(*v))
+        .y_label_formatter(&|v| ya.label(*v))
         .draw()
         .map_err(|e| fail(path, e))?;
     let bar = COLOURS[0];
@@ -113,7 +113,8 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
         .label_font(("sans-serif", 14))
         .draw()
         .map_err(|e| fail(path, e))?;
-    root.present().map_err(|e| fail(path, e))
+    root.present().map_err(|e| fail(path, e))?;
+    super::frame::finish_svg_at(path, &title, 800, 500, 1)
 }
 
 /// The summit map: every summit at its position (x along a row, y down the
@@ -141,44 +142,93 @@ pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
         });
     let span = (hi - lo).max(f64::MIN_POSITIVE);
     let side = 700.0 / w.max(h);
+    // Room on the right for the colour scale.
     let size = (
-        ((w * side) as u32).max(200) + 90,
+        ((w * side) as u32).max(200) + 190,
         ((h * side) as u32).max(200) + 70,
     );
-    let root = SVGBackend::new(path, size).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| fail(path, e))?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            format!("Summits ({}), blue low to red high", c.summits.len()),
-            ("sans-serif", 18),
-        )
+    let title = format!("Summits ({}), coloured by height", c.summits.len());
+    let root = super::frame::titled_root_at(path, &title, size.0, size.1, 1)?;
+    let (plot, scale_area) = root.split_horizontally(size.0 - 110);
+    let (xa, ya) = (
+        Axis::linear(0.0, w / u),
+        Axis::linear(0.0, h / u).reversed(),
+    );
+    let mut chart = ChartBuilder::on(&plot)
         .margin(10)
         .x_label_area_size(40)
         .y_label_area_size(60)
-        .build_cartesian_2d(0.0..w / u, h / u..0.0)
+        .build_cartesian_2d(xa.clone(), ya.clone())
         .map_err(|e| fail(path, e))?;
     chart
         .configure_mesh()
         .disable_mesh()
         .x_desc(format!("x ({name})"))
         .y_desc(format!("y ({name})"))
-        .x_label_formatter(&|v| tick(*v))
-        .y_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| xa.label(*v))
+        .y_label_formatter(&|v| ya.label(*v))
         .draw()
         .map_err(|e| fail(path, e))?;
     let radius = if c.summits.len() > 5000 { 1 } else { 2 };
     chart
         .draw_series(c.summits.iter().map(|s| {
-            let t = (s.height_m - lo) / span;
-            let colour = RGBColor((255.0 * t) as u8, 40, (255.0 * (1.0 - t)) as u8);
             Circle::new(
                 (s.col as f64 * dx / u, s.row as f64 * dx / u),
                 radius,
-                colour.filled(),
+                height_colour((s.height_m - lo) / span).filled(),
             )
         }))
         .map_err(|e| fail(path, e))?;
-    root.present().map_err(|e| fail(path, e))
+    colour_scale(&scale_area, lo, hi, unit(c.moments.rms_height())).map_err(|e| fail(path, e))?;
+    root.present().map_err(|e| fail(path, e))?;
+    super::frame::finish_svg_at(path, &title, size.0, size.1, 1)
+}
+
+/// The colour of a summit at fraction `t` of the height range: blue (low)
+/// to red (high).
+fn height_colour(t: f64) -> RGBColor {
+    let t = t.clamp(0.0, 1.0);
+    RGBColor((255.0 * t) as u8, 40, (255.0 * (1.0 - t)) as u8)
+}
+
+/// A vertical colour bar from `lo` (bottom) to `hi` (top), heights in m,
+/// labelled in `(scale, unit)`.
+fn colour_scale(
+    area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
+    lo: f64,
+    hi: f64,
+    (u, name): (f64, &str),
+) -> std::result::Result<(), String> {
+    let axis = Axis::linear(lo / u, hi / u);
+    let mut chart = ChartBuilder::on(area)
+        .margin_top(10)
+        .margin_bottom(50)
+        .margin_right(10)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..1.0, axis.clone())
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_desc(format!("summit height ({name})"))
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 14))
+        .y_label_formatter(&|v| axis.label(*v))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    let steps = 64;
+    chart
+        .draw_series((0..steps).map(|k| {
+            let (a, b) = (k as f64 / steps as f64, (k + 1) as f64 / steps as f64);
+            let y = |f: f64| (lo + f * (hi - lo)) / u;
+            Rectangle::new(
+                [(0.0, y(a)), (1.0, y(b))],
+                height_colour((a + b) / 2.0).filled(),
+            )
+        }))
+        .map_err(|e| e.to_string())?;
+    Ok(())
 }
 
 #[cfg(test)]

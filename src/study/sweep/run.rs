@@ -55,8 +55,15 @@ pub struct PointOutcome {
     pub path: PathBuf,
 }
 
-fn cell(x: Option<f64>) -> String {
-    x.map_or(String::new(), |v| format!("{v:e}"))
+/// A result cell: `true`/`false` for the boolean column `sticks` (1/0 in
+/// [`Summary::scalars`]), else the number in Rust's shortest round-trip
+/// scientific form; empty when the run has no such value.
+fn cell(column: &str, x: Option<f64>) -> String {
+    match x {
+        None => String::new(),
+        Some(v) if column == "sticks" => (v != 0.0).to_string(),
+        Some(v) => format!("{v:e}"),
+    }
 }
 
 /// The value of output column `c` in a summary.
@@ -115,7 +122,7 @@ fn point_row(
         Ok(s) => {
             row.push("ok".into());
             for c in cols {
-                row.push(cell(value(&s, c)));
+                row.push(cell(c, value(&s, c)));
             }
         }
         Err(e) => {
