@@ -210,6 +210,13 @@ impl Axis {
             }
         }
         kept.sort_by(f64::total_cmp);
+        // Light lines at 1..9 x 10^k where the scale is logarithmic.
+        axis.minor = (e0 - 1..=hi.max(-lo).log10().ceil() as i32)
+            .flat_map(|e| (1..10).map(move |m| m as f64 * 10f64.powi(e)))
+            .filter(|v| *v >= c)
+            .flat_map(|v| [v, -v])
+            .filter(|v| *v >= lo && *v <= hi)
+            .collect();
         axis.notation = Notation::for_ticks(&kept, 0.0);
         axis.ticks = kept;
         axis
@@ -357,6 +364,7 @@ mod tests {
         let a = Axis::fit(-2e-5, 1.3e-2, Some(2e-5));
         assert_eq!(a.scale(), Scale::SymLog(2e-5));
         assert!(a.ticks().contains(&0.0) && a.ticks().contains(&1e-2));
+        assert!(a.minor.contains(&3e-3) && a.minor.iter().all(|v| v.abs() >= 2e-5));
         assert!(a.fraction(0.0) > 0.0 && a.fraction(0.0) < 0.3);
         // A decade is nearly the same length beyond c (6 % shorter next
         // to c, where log10(1 + x/c) still bends).
