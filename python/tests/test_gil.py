@@ -67,3 +67,39 @@ def test_sweep_and_commands_release_the_gil():
     for name, call in calls.items():
         count, seconds = progress_during(call)
         assert count > 1000, (name, count, seconds)
+
+
+def test_two_calls_meet_inside_the_library(tmp_path):
+    """Two asperity calls in two threads that can only finish together:
+    `sphere(curve=FIFO)` blocks opening a named pipe for writing until
+    `run(FIFO)` opens it for reading, and the reader waits for the writer's
+    end of file. Were the GIL held by either call, the other could never
+    enter the library and both would hang (the joins would time out)."""
+    import os
+
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    out = {}
+
+    def reader():
+        try:
+            asperity.run(fifo)
+        except ValueError as e:  # the sphere's CSV is not a scene
+            out["reader"] = str(e)
+
+    def writer():
+        out["writer"] = asperity.sphere(0.5, resolution=0.5, curve=fifo)
+
+    threads = [threading.Thread(target=reader, daemon=True), threading.Thread(target=writer, daemon=True)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(timeout=120)
+    if any(t.is_alive() for t in threads):
+        # Unblock whichever end is waiting, then fail.
+        fd = os.open(fifo, os.O_RDWR | os.O_NONBLOCK)
+        os.close(fd)
+        raise AssertionError("the two calls did not run at the same time")
+    assert out["writer"]["mu"] == 0.5
+    # The reader parsed what the writer wrote: the curve's CSV header.
+    assert out["reader"].startswith("central_gap,approach,load_bar"), out["reader"]
