@@ -119,7 +119,12 @@ pub fn fn_values<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let view = h.as_array();
     let shape: Vec<usize> = view.shape().to_vec();
-    let hs: Vec<f64> = view.iter().copied().collect();
+    // A copy (memcpy when contiguous), so no Python thread can change the
+    // values while the GIL is released.
+    let hs: Vec<f64> = match view.as_slice() {
+        Some(s) => s.to_vec(),
+        None => view.iter().copied().collect(),
+    };
     let values = py
         .detach(|| cmd::fn_::values(&dist, n, &hs))
         .map_err(cmd_err)?;
