@@ -30,6 +30,8 @@
 
 pub mod axisym;
 pub mod bem;
+#[cfg(feature = "study")]
+pub mod commands;
 pub mod electrical;
 pub mod error;
 pub mod gw;
@@ -51,6 +53,9 @@ pub mod study;
 pub mod surface;
 
 pub use error::{Error, Result};
+
+/// The crate's version (`Cargo.toml`), e.g. `0.1.0`.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// The types most programs need: one asperity and its laws (elastic,
 /// elastic-plastic, with adhesion); a GW surface with any law and its

@@ -16,7 +16,10 @@ cd "$tmp/clone"
 # Share the build directory: the dependencies are not rebuilt.
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$repo/target}"
 export CARGO_INSTALL_ROOT="$tmp/root"
-export PATH="$tmp/root/bin:$PATH"
+# `python` is a fresh venv's, so the README's `python -m pip install ./python`
+# runs as written without touching the machine's Python.
+python3 -m venv "$tmp/venv"
+export PATH="$tmp/root/bin:$tmp/venv/bin:$PATH"
 awk '
   /^```/ { insh = ($0 == "```sh"); next }
   !insh { next }

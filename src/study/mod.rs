@@ -37,8 +37,8 @@ pub mod sweep;
 pub mod validity;
 
 pub use output::{
-    charts, curve_csv, montecarlo_csv, text_report, write_outputs, McSummary, PlasticitySummary,
-    StictionSummary, Summary,
+    charts, check_outputs, curve_csv, montecarlo_csv, text_report, write_outputs, Column,
+    McSummary, PlasticitySummary, StictionSummary, Summary, Table,
 };
 pub use plan::{Plan, PlanMode};
 pub use quantity::{Quantity, QuantitySet, Record, StateRow};

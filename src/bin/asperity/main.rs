@@ -140,6 +140,25 @@ impl From<asperity::Error> for CliError {
     }
 }
 
+impl From<asperity::commands::CommandError> for CliError {
+    fn from(e: asperity::commands::CommandError) -> Self {
+        use asperity::commands::CommandError;
+        match e {
+            CommandError::Usage(m) => CliError::Usage(m),
+            CommandError::Failed(m) => CliError::Failed(m),
+        }
+    }
+}
+
+/// Prints a command's report: its JSON on one line, or its text.
+pub fn print_report(report: &asperity::commands::Report, json: bool) {
+    if json {
+        println!("{}", report.json_text);
+    } else {
+        print!("{}", report.text);
+    }
+}
+
 fn main() -> ExitCode {
     pipe::quiet_on_closed_pipe();
     let cli = match Cli::try_parse() {

@@ -106,6 +106,22 @@ fn summary_values(s: &Summary) -> Vec<(String, Option<f64>)> {
     v
 }
 
+/// The check [`write_outputs`] makes before writing anything, for callers
+/// that keep the outputs in memory: every number of the tables and the
+/// summary must be finite.
+///
+/// # Errors
+/// [`Error::Invalid`] naming the quantity when a result is not finite.
+pub fn check_outputs(plan: &Plan, results: &Results, summary: &Summary) -> Result<()> {
+    let curve = curve_csv(results, plan);
+    let mc = super::montecarlo_csv(results, plan);
+    let mut tables = vec![("curve.csv", curve.as_str())];
+    if let Some(text) = &mc {
+        tables.push(("montecarlo.csv", text.as_str()));
+    }
+    check_finite(&tables, summary)
+}
+
 /// Refuses a run's outputs when any number in them is not finite.
 fn check_finite(files: &[(&str, &str)], summary: &Summary) -> Result<()> {
     let refuse = |name: &str, what: String| {

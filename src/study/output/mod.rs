@@ -8,14 +8,16 @@ mod figures;
 pub mod format;
 mod report;
 mod summary;
+mod table;
 mod tables;
 mod topography;
 
 pub use feature_figures::{feature_charts, FeatureChart};
-pub use figures::{charts, si_prefix, si_prefix_area, write_outputs, OUTPUT_FILES};
+pub use figures::{charts, check_outputs, si_prefix, si_prefix_area, write_outputs, OUTPUT_FILES};
 pub use report::text_report;
 pub use summary::{
     HeatingSummary, McSummary, PlasticitySummary, SampleSpotsSummary, StictionSummary, Summary,
 };
+pub use table::{Column, Table, INTEGER_COLUMNS, TEXT_COLUMNS};
 pub use tables::{curve_csv, montecarlo_csv};
 pub use topography::{HeadlineJson, MeasuredJson, MomentsJson, TopographySummary};

@@ -17,6 +17,6 @@ mod spec;
 mod store;
 
 pub use edit::set_field;
-pub use run::{run_sweep, PointOutcome, SweepOptions};
+pub use run::{run_sweep, sweep_table, PointOutcome, SweepOptions};
 pub use spec::{Design, Shard, SweepPoint, SweepSpec, Vary};
 pub use store::{merge, ResultsFile, SweepMeta};

@@ -5,7 +5,7 @@ use super::edit::set_field;
 use super::spec::{Shard, SweepPoint, SweepSpec};
 use super::store::{ResultsFile, SweepMeta};
 use crate::error::{Error, Result};
-use crate::study::{Plan, PlanMode, Quantity, Scene, Summary};
+use crate::study::{Plan, PlanMode, Quantity, Scene, Summary, Table};
 use rayon::prelude::*;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -77,7 +77,7 @@ fn value(s: &Summary, c: &str) -> Option<f64> {
 /// Computes one point's row: `index, values.., seed, status, outputs..`.
 fn point_row(
     base: &toml::Value,
-    spec: &SweepSpec,
+    paths: &[String],
     options: &SweepOptions,
     cols: &[String],
     p: &SweepPoint,
@@ -87,14 +87,14 @@ fn point_row(
     row.push(p.seed.to_string());
     let outcome = (|| -> Result<Summary> {
         let mut scene_value = base.clone();
-        for (v, x) in spec.vary.iter().zip(&p.values) {
-            set_field(&mut scene_value, &v.path, *x)?;
+        for (path, x) in paths.iter().zip(&p.values) {
+            set_field(&mut scene_value, path, *x)?;
         }
         let mut scene = Scene::deserialize(scene_value)
             .map_err(|e| Error::invalid("scene", e.message().to_string()))?;
         // Each point draws its own population, unless the seed is varied.
         if let Some(mc) = scene.montecarlo.as_mut() {
-            if !spec.vary.iter().any(|v| v.path == "montecarlo.seed") {
+            if !paths.iter().any(|path| path == "montecarlo.seed") {
                 mc.seed = p.seed;
             }
         }
@@ -144,6 +144,109 @@ fn point_row(
     (row.join(","), ok)
 }
 
+/// The header of `results.csv`: `index`, the varied paths, `seed`,
+/// `status`, the output columns.
+fn results_header(paths: &[String], cols: &[String]) -> String {
+    let mut header: Vec<String> = vec!["index".into()];
+    header.extend(paths.iter().cloned());
+    header.extend(["seed".into(), "status".into()]);
+    header.extend(cols.iter().cloned());
+    header.join(",")
+}
+
+/// The normalised scene as a TOML value, after checking every path can be
+/// set (to `first[i]`) before any point runs.
+fn base_value(base: &Scene, paths: &[String], first: &[f64]) -> Result<(String, toml::Value)> {
+    base.validate()?;
+    let normalised = base.to_toml();
+    let value: toml::Value = toml::from_str(&normalised)
+        .map_err(|e| Error::invalid("scene", e.message().to_string()))?;
+    for (path, x) in paths.iter().zip(first) {
+        set_field(&mut value.clone(), path, *x)?;
+    }
+    Ok((normalised, value))
+}
+
+/// A sweep over given values, in memory: the grid of every combination of
+/// `vary`'s values (`(dotted scene path, values)`, the first slowest), each
+/// point's seed from `seed` and its index as in [`SweepSpec::points`], run
+/// in parallel (`options.threads`; `options.shard` is not used) and
+/// returned as the table `results.csv` would hold (`index`, the paths,
+/// `seed`, `status`, the plan's result columns), without any file. Each row
+/// is computed exactly as [`run_sweep`] computes it, so a point with the same
+/// values and seed gives the same numbers.
+///
+/// # Errors
+/// Invalid scenes or paths (naming the field), an empty or duplicated
+/// `vary` (naming `vary`), non-finite values, more than
+/// 10^8 points (the limit of [`SweepSpec::validate`]).
+pub fn sweep_table(
+    base: &Scene,
+    vary: &[(String, Vec<f64>)],
+    seed: u64,
+    options: &SweepOptions,
+) -> Result<Table> {
+    if vary.is_empty() {
+        return Err(Error::invalid("vary", "give at least one path"));
+    }
+    for (i, (path, values)) in vary.iter().enumerate() {
+        if vary[..i].iter().any(|(p, _)| p == path) {
+            return Err(Error::invalid("vary", format!("{path} is varied twice")));
+        }
+        if values.is_empty() {
+            return Err(Error::invalid("vary", format!("{path}: no values")));
+        }
+        for &x in values {
+            crate::error::finite(path, x)?;
+        }
+    }
+    let total = vary
+        .iter()
+        .try_fold(1usize, |acc, (_, v)| acc.checked_mul(v.len()))
+        .filter(|&t| t <= super::spec::MAX_POINTS)
+        .ok_or_else(|| Error::invalid("vary", "too many points"))?;
+    let paths: Vec<String> = vary.iter().map(|(p, _)| p.clone()).collect();
+    let first: Vec<f64> = vary.iter().map(|(_, v)| v[0]).collect();
+    let (_, base_value) = base_value(base, &paths, &first)?;
+    let cols = with_quantities(Plan::new(base, PlanMode::Planned)?, options)?.result_columns();
+    let points: Vec<SweepPoint> = (0..total)
+        .map(|index| {
+            let mut i = index;
+            let mut values = vec![0.0; vary.len()];
+            for (k, (_, v)) in vary.iter().enumerate().rev() {
+                values[k] = v[i % v.len()];
+                i /= v.len();
+            }
+            SweepPoint {
+                index,
+                values,
+                seed: SweepPoint::seed_of(seed, index),
+            }
+        })
+        .collect();
+    let work = || -> Vec<String> {
+        points
+            .par_iter()
+            .map(|p| point_row(&base_value, &paths, options, &cols, p).0)
+            .collect()
+    };
+    let rows = match options.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build()
+            .map_err(|e| Error::invalid("threads", e.to_string()))?
+            .install(work),
+        None => work(),
+    };
+    let mut text = results_header(&paths, &cols);
+    text.push('\n');
+    for r in rows {
+        text.push_str(&r);
+        text.push('\n');
+    }
+    Ok(Table::from_csv(&text))
+}
+
 /// Runs the points of `spec` over the scene `base` that are not yet in
 /// `out/results.csv`, calling `progress(done, total)` as points finish.
 ///
@@ -159,22 +262,17 @@ pub fn run_sweep(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<PointOutcome> {
     spec.validate()?;
-    base.validate()?;
-    let normalised = base.to_toml();
-    let base_value: toml::Value = toml::from_str(&normalised)
-        .map_err(|e| Error::invalid("scene", e.message().to_string()))?;
-    for v in &spec.vary {
-        // Fail early on a bad path, before any point runs.
-        set_field(&mut base_value.clone(), &v.path, v.from)?;
-    }
+    // Fail early on a bad path, before any point runs.
+    let (normalised, base_value) = base_value(
+        base,
+        &spec.vary.iter().map(|v| v.path.clone()).collect::<Vec<_>>(),
+        &spec.vary.iter().map(|v| v.from).collect::<Vec<_>>(),
+    )?;
     // The base plan gives the columns (and gathers a calibration once, for
     // every point to read from the cache).
     let cols = with_quantities(Plan::new(base, PlanMode::Planned)?, options)?.result_columns();
-    let mut header: Vec<String> = vec!["index".into()];
-    header.extend(spec.vary.iter().map(|v| v.path.clone()));
-    header.extend(["seed".into(), "status".into()]);
-    header.extend(cols.iter().map(|c| c.to_string()));
-    let header = header.join(",");
+    let paths: Vec<String> = spec.vary.iter().map(|v| v.path.clone()).collect();
+    let header = results_header(&paths, &cols);
     let points = spec.points();
     let meta = SweepMeta {
         scene: normalised,
@@ -202,7 +300,7 @@ pub fn run_sweep(
     let file = Mutex::new(file);
     let work = || {
         todo.par_iter().try_for_each(|p| -> Result<()> {
-            let (row, ok) = point_row(&base_value, spec, options, &cols, p);
+            let (row, ok) = point_row(&base_value, &paths, options, &cols, p);
             if !ok {
                 failed.fetch_add(1, Ordering::Relaxed);
             }

@@ -112,6 +112,14 @@ pub struct SweepPoint {
     pub seed: u64,
 }
 
+impl SweepPoint {
+    /// The seed of point `index` of a sweep with base seed `seed`:
+    /// SplitMix64 of `seed + index`.
+    pub fn seed_of(seed: u64, index: usize) -> u64 {
+        splitmix64(seed.wrapping_add(index as u64))
+    }
+}
+
 /// `x` rounded to 15 significant digits, so grid values that are short
 /// decimals print as such (`3.2e-9`, not `3.2000000000000005e-9`); the
 /// change is below 1e-15 relative.
@@ -231,7 +239,7 @@ impl SweepSpec {
             .map(|(index, values)| SweepPoint {
                 index,
                 values,
-                seed: splitmix64(self.seed.wrapping_add(index as u64)),
+                seed: SweepPoint::seed_of(self.seed, index),
             })
             .collect()
     }
