@@ -234,7 +234,8 @@ pub fn write_outputs(
 }
 
 /// The pull-off distribution over the populations, with the integral's
-/// pull-off and the 5 % and 95 % quantiles marked.
+/// pull-off, the 5 % and 95 % quantiles and (with `[switch]`) the
+/// spring's restoring force marked.
 fn pull_off_histogram(plan: &Plan, results: &Results) -> Option<Histogram> {
     let r = results.pull_off_population.as_ref()?;
     let s = r.statistics.as_ref()?;
@@ -246,6 +247,14 @@ fn pull_off_histogram(plan: &Plan, results: &Results) -> Option<Histogram> {
     ];
     if let Some(i) = r.integral {
         markers.insert(0, ("GW integral".to_string(), i / u));
+    }
+    // The spring pulls the switch open with k x travel: a switch whose
+    // pull-off is beyond -k x travel sticks.
+    if let Some(st) = &results.stiction {
+        markers.push((
+            "spring k x travel (sticks beyond)".to_string(),
+            -st.restoring_force / u,
+        ));
     }
     Some(Histogram {
         title: format!(
