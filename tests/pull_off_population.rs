@@ -90,9 +90,16 @@ fn populations_are_the_montecarlo_populations_seed_by_seed() {
     // A few summits carry the integral's pull-off, and one switch pulls
     // off much harder than the integral says: the summary warns.
     assert!(num(&p["carriers"]) < 100.0, "{p}");
-    assert!(mean < 3.0 * num(&v["pull_off_load"]), "{mean} vs {}", v["pull_off_load"]);
+    assert!(
+        mean < 3.0 * num(&v["pull_off_load"]),
+        "{mean} vs {}",
+        v["pull_off_load"]
+    );
     let warnings = v["warnings"].to_string();
-    assert!(warnings.contains("one switch of 10000 summits"), "{warnings}");
+    assert!(
+        warnings.contains("one switch of 10000 summits"),
+        "{warnings}"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
