@@ -68,3 +68,169 @@ fn listed_loads_are_met_to_rtol() {
         }
     }
 }
+
+/// A scene from an example with `edits` (`key = value` lines replacing the
+/// line that starts with `key`, or appended to `[table]` when absent).
+fn edited(name: &str, edits: &[(&str, &str)]) -> String {
+    let mut lines: Vec<String> = example(name).lines().map(String::from).collect();
+    for (key, line) in edits {
+        if let Some(l) = lines.iter_mut().find(|l| l.starts_with(key)) {
+            *l = line.to_string();
+        } else {
+            panic!("{name} has no line starting with {key}");
+        }
+    }
+    lines.join("\n")
+}
+
+/// Item 2: Holm's relation ends where the metal melts. `heating --voltage
+/// 10` printed 31,991 K; now no temperature, `condition = molten` and a
+/// warning; softening is warned about; the inverse stops at melting.
+#[test]
+fn no_temperature_above_melting_from_heating() {
+    let dir = tmp("heating");
+    let (code, out, err) = run(&["heating", "--voltage", "10", "--json"], &dir);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v["max_temperature_K"].is_null(), "{v}");
+    assert_eq!(v["condition"], "molten");
+    assert!(v["warnings"][0]
+        .as_str()
+        .unwrap()
+        .contains("melting voltage 0.4079 V"));
+    let (code, out, _) = run(&["heating", "--voltage", "0.1", "--json"], &dir);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["condition"], "softened");
+    assert!(v["warnings"][0].as_str().unwrap().contains("softens"));
+    let (code, out, _) = run(&["heating", "--voltage", "0.05", "--json"], &dir);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["condition"], "solid");
+    assert_eq!(v["warnings"].as_array().unwrap().len(), 0);
+    // Text: no temperature, a warning on stderr.
+    let (code, out, err) = run(&["heating", "--voltage", "10"], &dir);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("the spot melts") && !out.contains("31991"),
+        "{out}"
+    );
+    assert!(err.contains("warning:"), "{err}");
+    // Another metal's limits (copper softens ~463 K, melts 1358 K).
+    let (_, out, _) = run(
+        &[
+            "heating",
+            "--voltage",
+            "0.1",
+            "--softening-temperature",
+            "463",
+            "--melting-temperature",
+            "1358",
+            "--json",
+        ],
+        &dir,
+    );
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["condition"], "solid", "{v}");
+    for (args, flag) in [
+        (vec!["--max-temperature", "1e300"], "--max-temperature"),
+        (vec!["--max-temperature", "2000"], "--max-temperature"),
+        (
+            vec!["--voltage", "0.1", "--melting-temperature", "300"],
+            "--melting-temperature",
+        ),
+        (
+            vec!["--voltage", "0.1", "--softening-temperature", "-1"],
+            "--softening-temperature",
+        ),
+        (
+            vec!["--voltage", "0.1", "--bulk-temperature", "1400"],
+            "--bulk-temperature",
+        ),
+    ] {
+        let mut a = vec!["heating"];
+        a.extend(args);
+        let (code, _, err) = run(&a, &dir);
+        assert_eq!(code, 2, "{a:?}: {err}");
+        assert!(err.contains(flag), "{a:?}: {err}");
+    }
+}
+
+/// Item 2 in scenes: `film_resistance = 1e-6` gave 7.55e9 K with no word;
+/// now the summary's temperature is null and a warning names the current.
+#[test]
+fn no_temperature_above_melting_in_scenes() {
+    let dir = tmp("heating-scene");
+    let text = edited(
+        "rf-mems-switch.toml",
+        &[("film_resistance", "film_resistance = 1e-6")],
+    );
+    std::fs::write(dir.join("rf.toml"), text).unwrap();
+    let (code, _, err) = run(&["run", "rf.toml", "--out", "o"], &dir);
+    assert_eq!(code, 0, "{err}");
+    let s = json(&dir.join("o/summary.json"));
+    assert!(s["heating"]["contact_voltage_V"].as_f64().unwrap() > 1.0);
+    assert!(
+        s["heating"]["max_temperature_K"].is_null(),
+        "{}",
+        s["heating"]
+    );
+    let warned = s["warnings"].as_array().unwrap().iter().any(|w| {
+        w.as_str().unwrap().contains("electrical.current") && w.as_str().unwrap().contains("melts")
+    });
+    assert!(warned, "{}", s["warnings"]);
+    // Every temperature written is below melting.
+    let csv = std::fs::read_to_string(dir.join("o/curve.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let k = header
+        .iter()
+        .position(|h| *h == "max_temperature_K")
+        .unwrap();
+    for line in csv.lines().skip(1) {
+        if let Ok(t) = line.split(',').nth(k).unwrap().parse::<f64>() {
+            assert!(t < 1337.33, "{line}");
+        }
+    }
+    // The example itself stays quiet (its spots stay near 293 K).
+    let (code, _, _) = run(
+        &[
+            "run",
+            &format!(
+                "{}/examples/scenes/rf-mems-switch.toml",
+                env!("CARGO_MANIFEST_DIR")
+            ),
+            "--out",
+            "o2",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 0);
+    let s = json(&dir.join("o2/summary.json"));
+    assert!(s["heating"]["max_temperature_K"].as_f64().unwrap() < 300.0);
+    assert!(!s["warnings"].to_string().contains("electrical.current"));
+    // A metal's limits are scene keys, checked against each other.
+    for (line, field) in [
+        (
+            "current = 0.1\nmelting_temperature = 300",
+            "electrical.melting_temperature",
+        ),
+        (
+            "current = 0.1\nsoftening_temperature = 0",
+            "electrical.softening_temperature",
+        ),
+        (
+            "current = 0.1\nbulk_temperature = 2000",
+            "electrical.bulk_temperature",
+        ),
+        (
+            "melting_temperature = 1300",
+            "electrical.melting_temperature",
+        ),
+    ] {
+        let text = edited("rf-mems-switch.toml", &[("current", line)]);
+        std::fs::write(dir.join("bad.toml"), text).unwrap();
+        let (code, _, err) = run(&["run", "bad.toml", "--out", "o3"], &dir);
+        assert_eq!(code, 2, "{line}: {err}");
+        assert!(err.contains(field), "{line}: {err}");
+    }
+}
