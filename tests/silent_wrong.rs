@@ -234,3 +234,26 @@ fn no_temperature_above_melting_in_scenes() {
         assert!(err.contains(field), "{line}: {err}");
     }
 }
+
+/// Item 3: two spots of 1 um whose centres are 0.1 um apart gave 0.0449
+/// Ohm at exit 0 (3.7 times one spot); now exit 2 naming the pair.
+#[test]
+fn overlapping_spots_are_refused_naming_the_pair() {
+    let dir = tmp("spots");
+    std::fs::write(
+        dir.join("ov.csv"),
+        "x_m,y_m,radius_m\n0,0,1e-6\n1e-7,0,1e-6\n",
+    )
+    .unwrap();
+    let (code, _, err) = run(&["spots", "ov.csv", "--resistivity", "2.44e-8"], &dir);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("spots 0 and 1 (0-based) overlap"), "{err}");
+    // Touching spots are separate.
+    std::fs::write(
+        dir.join("touch.csv"),
+        "x_m,y_m,radius_m\n0,0,1e-6\n2e-6,0,1e-6\n",
+    )
+    .unwrap();
+    let (code, _, err) = run(&["spots", "touch.csv", "--resistivity", "2.44e-8"], &dir);
+    assert_eq!(code, 0, "{err}");
+}

@@ -154,8 +154,10 @@ fn run_montecarlo(
             let seed = crate::numeric::mix::splitmix64(mc.spec.seed ^ 0x5350_4f54); // "SPOT"
             let found = population_spots(&population, &law, curve.program.closest, side, seed)?;
             match found {
-                Some(s) if s.len() <= MAX_SAMPLE_SPOTS => {
-                    Some(SampleResistance::new(&s, res.spot())?)
+                Some(m) if m.spots.len() <= MAX_SAMPLE_SPOTS => {
+                    let mut r = SampleResistance::new(&m.spots, res.spot())?;
+                    r.merged = m.groups.iter().map(Vec::len).sum();
+                    Some(r)
                 }
                 _ => None,
             }
@@ -330,6 +332,15 @@ impl Plan {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
             None => None,
         };
+        if let Some(s) = montecarlo.as_ref().and_then(|m| m.spots.as_ref()) {
+            if s.merged > 0 {
+                warnings.push(format!(
+                    "montecarlo spots: {} spots overlapped others at their random positions and \
+                     were merged into spots of their joint area ({} spots remain)",
+                    s.merged, s.spots
+                ));
+            }
+        }
         Ok(Results {
             records: LegRecords::new(&self.quantities, &curve),
             curve,
