@@ -101,7 +101,7 @@ impl Spots {
             }
             let mut index = vec![usize::MAX; spots.len()];
             let (mut x, mut y, mut a2, mut m) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-            for k in 0..spots.len() {
+            for (k, mk) in members.iter().enumerate() {
                 let r = root(&mut parent, k);
                 if index[r] == usize::MAX {
                     index[r] = a2.len();
@@ -115,7 +115,7 @@ impl Spots {
                 x[g] += w * spots.x[k];
                 y[g] += w * spots.y[k];
                 a2[g] += w;
-                m[g].extend(members[k].iter().copied());
+                m[g].extend(mk.iter().copied());
             }
             for g in 0..a2.len() {
                 x[g] /= a2[g];

@@ -115,7 +115,10 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
     let map = read_map(&args.file)?
         .scaled(args.scale)
         .map_err(|e| e.renamed("--scale"))?;
-    let topo = Topography::new(map, args.pixel_size).map_err(|e| e.renamed("--pixel-size"))?;
+    let topo = Topography::new(map, args.pixel_size).map_err(|e| match e.field() {
+        Some("heights") => e.renamed("--scale"),
+        _ => e.renamed("--pixel-size"),
+    })?;
     let c = topo
         .characterise(args.periodic)
         .map_err(|e| e.renamed(&args.file.display().to_string()))?;
