@@ -309,3 +309,78 @@ fn flat_maps_and_absurd_scales_are_refused() {
         "{out}"
     );
 }
+
+/// Item 5: nulls at exit 0 (`F: null`, `load_N: null`) are now exit 2
+/// naming the argument and its range or the overflow.
+#[test]
+fn overflowing_arguments_exit_2_naming_them() {
+    let dir = tmp("nulls");
+    for (args, flag) in [
+        (
+            vec!["fn", "--dist", "gaussian", "--n", "1e3", "--h", "0,1"],
+            "--n",
+        ),
+        (
+            vec!["fn", "--dist", "gaussian", "--n", "2", "--h", "-1e300"],
+            "--h",
+        ),
+        (
+            vec!["fn", "--dist", "exponential", "--n", "2", "--h", "-1e300"],
+            "--h",
+        ),
+        (
+            vec![
+                "shape",
+                "--profile",
+                "paraboloid",
+                "--radius",
+                "1e-6",
+                "--estar",
+                "1e9",
+                "--w",
+                "0.1",
+                "--radii",
+                "1e300",
+            ],
+            "--radii",
+        ),
+        (
+            vec![
+                "punch",
+                "--estar",
+                "1e9",
+                "--w",
+                "0.1",
+                "--radius",
+                "1e-3",
+                "--amplitude",
+                "0.1",
+                "--wavelength",
+                "1e-5",
+                "--radii",
+                "1e300",
+            ],
+            "--radii",
+        ),
+        (
+            vec!["heating", "--max-temperature", "1e300"],
+            "--max-temperature",
+        ),
+    ] {
+        let mut a = args.clone();
+        a.push("--json");
+        let (code, out, err) = run(&a, &dir);
+        assert_eq!(code, 2, "{a:?}: {out} {err}");
+        assert!(err.contains(flag), "{a:?}: {err}");
+        assert!(!out.contains("null"), "{a:?}: {out}");
+    }
+    // In range, finite numbers.
+    let (code, out, err) = run(
+        &[
+            "fn", "--dist", "gaussian", "--n", "100", "--h", "-5,0,5", "--json",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("null"), "{out}");
+}

@@ -131,6 +131,30 @@ impl AxisymJkr {
         self.profile.load0(a, self.estar) - (8.0 * PI * self.estar * self.work * a * a * a).sqrt()
     }
 
+    /// Load (N) and interference (m) at contact radius `a` (m), checked:
+    /// `a` within the profile ([`Profile::check_radius`]) and both values
+    /// finite (a paraboloid's load grows like `a^3` and overflows f64 past
+    /// ~1e100 m).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `a` outside the profile or where a value
+    /// overflows.
+    pub fn point(&self, a: f64) -> Result<(f64, f64)> {
+        let a = self.profile.check_radius("a", a)?;
+        let (load, interference) = (self.load(a), self.interference(a));
+        if load.is_finite() && interference.is_finite() {
+            Ok((load, interference))
+        } else {
+            Err(Error::invalid(
+                "a",
+                format!(
+                    "at a = {a:e} m the {} profile's load or interference overflows f64",
+                    self.profile.name()
+                ),
+            ))
+        }
+    }
+
     /// `d delta/da` (dimensionless).
     pub fn interference_slope(&self, a: f64) -> f64 {
         self.profile.delta0_slope(a) - (0.5 * PI * self.work / (self.estar * a)).sqrt()

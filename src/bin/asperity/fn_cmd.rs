@@ -12,7 +12,7 @@ pub struct FnArgs {
     /// Height distribution: gaussian or exponential.
     #[arg(long)]
     dist: String,
-    /// Order n >= 0 of F_n(h) = int_h^inf (s-h)^n phi(s) ds.
+    /// Order n in [0, 100] of F_n(h) = int_h^inf (s-h)^n phi(s) ds.
     #[arg(long, allow_negative_numbers = true)]
     n: f64,
     /// Comma-separated standardised separations h, e.g. -1,0,2.5.
@@ -68,11 +68,16 @@ pub fn run(args: &FnArgs) -> crate::CliResult {
     let hs = parse_list(&args.h)?;
     let values: Vec<Row> = hs
         .iter()
-        .map(|&h| Row {
-            h,
-            f: dist.moment_above(args.n, h),
+        .map(|&h| {
+            let f = dist
+                .moment_above_checked(args.n, h)
+                .map_err(|e| match e.field() {
+                    Some("n") => e.renamed("--n"),
+                    _ => e.renamed("--h"),
+                })?;
+            Ok(Row { h, f })
         })
-        .collect();
+        .collect::<Result<_, CliError>>()?;
     let out = Output {
         dist: dist.name(),
         n: args.n,

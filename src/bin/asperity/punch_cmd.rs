@@ -191,6 +191,7 @@ pub fn run(args: &PunchArgs) -> crate::CliResult {
             let r = parse_list("--radii", t)?;
             for &a in &r {
                 asperity::error::non_negative("--radii", a)?;
+                p.check_radius(a).map_err(|e| e.renamed("--radii"))?;
             }
             r
         }
