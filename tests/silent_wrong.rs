@@ -384,3 +384,33 @@ fn overflowing_arguments_exit_2_naming_them() {
     assert_eq!(code, 0, "{err}");
     assert!(!out.contains("null"), "{out}");
 }
+
+/// Item 6: `shape --w 1e-300` gave a positive pull-off (4.7e-306 N: the
+/// adhesive term underflowed); now -3/2 pi w R to the subnormal range.
+#[test]
+fn a_tiny_work_of_adhesion_keeps_a_tensile_pull_off() {
+    let dir = tmp("tiny-w");
+    for w in [1e-200, 1e-280] {
+        let ws = format!("{w:e}");
+        let (code, out, err) = run(
+            &[
+                "shape",
+                "--profile",
+                "paraboloid",
+                "--radius",
+                "1e-6",
+                "--estar",
+                "1e9",
+                "--w",
+                &ws,
+                "--json",
+            ],
+            &dir,
+        );
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let p = v["pull_off_load_control"]["load_N"].as_f64().unwrap();
+        let want = -1.5 * std::f64::consts::PI * w * 1e-6;
+        assert!((p / want - 1.0).abs() < 1e-9, "w {w}: {p} vs {want}");
+    }
+}

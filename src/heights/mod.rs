@@ -118,7 +118,7 @@ mod weibull;
 pub use empirical::Empirical;
 pub use exponential::Exponential;
 pub use gaussian::Gaussian;
-pub use truncated::TruncatedGaussian;
+pub use truncated::{TruncatedGaussian, MIN_TRUNCATION};
 pub use weibull::Weibull;
 
 mod kind;
