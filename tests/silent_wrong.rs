@@ -414,3 +414,28 @@ fn a_tiny_work_of_adhesion_keeps_a_tensile_pull_off() {
         assert!((p / want - 1.0).abs() < 1e-9, "w {w}: {p} vs {want}");
     }
 }
+
+/// Item 17: the rms slope and curvature users compare with other tools,
+/// with the surface's rms gradient beside the profile slope.
+#[test]
+fn surface_prints_rms_slope_gradient_and_curvature() {
+    let dir = tmp("slopes");
+    write_map(&dir, "rough.txt", |i, j| {
+        1e-9 * (((i * 7 + j * 13) % 5) as f64 - 2.0)
+    });
+    let (code, out, err) = run(
+        &["surface", "rough.txt", "--pixel-size", "1e-7", "--json"],
+        &dir,
+    );
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let f = |k: &str| v[k].as_f64().unwrap();
+    assert!((f("rms_slope") - f("m2").sqrt()).abs() <= 1e-15 * f("rms_slope"));
+    assert!((f("rms_gradient") - (2.0 * f("m2")).sqrt()).abs() <= 1e-15 * f("rms_gradient"));
+    assert!((f("rms_curvature_per_m") - f("m4").sqrt()).abs() <= 1e-15 * f("rms_curvature_per_m"));
+    let (_, text, _) = run(&["surface", "rough.txt", "--pixel-size", "1e-7"], &dir);
+    assert!(
+        text.contains("rms slope (profile)") && text.contains("rms curvature"),
+        "{text}"
+    );
+}

@@ -66,6 +66,12 @@ struct SurfaceJson {
     m0: f64,
     m2: f64,
     m4: f64,
+    /// `sqrt(m2)`: a profile's rms slope.
+    rms_slope: f64,
+    /// `sqrt(2 m2)`: the surface's rms gradient.
+    rms_gradient: f64,
+    /// `sqrt(m4)` (1/m): a profile's rms curvature.
+    rms_curvature_per_m: f64,
     bandwidth_alpha: f64,
     summits: SummitsJson,
     gw_from_moments: GwJson,
@@ -131,6 +137,9 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
         m0: c.moments.m0,
         m2: c.moments.m2,
         m4: c.moments.m4,
+        rms_slope: c.moments.rms_slope(),
+        rms_gradient: c.moments.rms_gradient(),
+        rms_curvature_per_m: c.moments.rms_curvature(),
         bandwidth_alpha: c.bandwidth_alpha(),
         summits: SummitsJson {
             count: s.count,
@@ -181,6 +190,14 @@ fn print_table(o: &SurfaceJson) {
     println!(
         "m0, m2, m4                 {:.6e} m^2, {:.6e}, {:.6e} 1/m^2",
         o.m0, o.m2, o.m4
+    );
+    println!(
+        "rms slope (profile)        {:.6e}  = sqrt(m2); surface rms gradient sqrt(2 m2) = {:.6e}",
+        o.rms_slope, o.rms_gradient
+    );
+    println!(
+        "rms curvature (profile)    {:.6e} 1/m = sqrt(m4)",
+        o.rms_curvature_per_m
     );
     println!("bandwidth alpha            {:.6}", o.bandwidth_alpha);
     let s = &o.summits;
