@@ -439,3 +439,36 @@ fn surface_prints_rms_slope_gradient_and_curvature() {
         "{text}"
     );
 }
+
+/// Item 16: `--shard-from-env` reads the Slurm array variables; a stepped
+/// array is refused before any point runs (exit 2 naming the flag).
+#[test]
+fn shard_from_env_refuses_stepped_arrays() {
+    let dir = tmp("slurm");
+    let scene = format!(
+        "{}/examples/scenes/soft-jkr.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let o = bin()
+        .args([
+            "sweep",
+            &scene,
+            "--vary",
+            "surface.sigma=1e-7:2e-7:4",
+            "--shard-from-env",
+            "--out",
+            "s",
+        ])
+        .env("SLURM_ARRAY_TASK_ID", "2")
+        .env("SLURM_ARRAY_TASK_MIN", "0")
+        .env("SLURM_ARRAY_TASK_MAX", "14")
+        .env("SLURM_ARRAY_TASK_COUNT", "8")
+        .env("SLURM_ARRAY_TASK_STEP", "2")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("--shard-from-env"), "{err}");
+    assert!(!dir.join("s/results.csv").exists());
+}
