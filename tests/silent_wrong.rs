@@ -472,3 +472,25 @@ fn shard_from_env_refuses_stepped_arrays() {
     assert!(err.contains("--shard-from-env"), "{err}");
     assert!(!dir.join("s/results.csv").exists());
 }
+
+/// Item 14: a misspelt or fractional-integer `--vary` path ran every point,
+/// then exited 1; now exit 2 naming the path before the first point.
+#[test]
+fn vary_paths_are_checked_before_the_first_point() {
+    let dir = tmp("vary");
+    let scene = format!(
+        "{}/examples/scenes/montecarlo-gold.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    for (vary, want) in [
+        ("surface.sigm=1e-9:2e-9:3", "surface.sigm"),
+        ("montecarlo.summits=1:100:3", "montecarlo.summits"),
+    ] {
+        let out = format!("s-{}", want.replace('.', "-"));
+        let (code, _, err) = run(&["sweep", &scene, "--vary", vary, "--out", &out], &dir);
+        assert_eq!(code, 2, "{vary}: {err}");
+        assert!(err.contains(want), "{vary}: {err}");
+        let rows = std::fs::read_to_string(dir.join(&out).join("results.csv")).unwrap_or_default();
+        assert!(rows.lines().count() <= 1, "{vary}: points ran: {rows}");
+    }
+}

@@ -67,6 +67,45 @@ fn value(s: &Summary, c: &str) -> Option<f64> {
         .and_then(|(_, v)| v)
 }
 
+/// Most distinct values per varied field checked before the first point.
+const CHECKED_VALUES: usize = 4096;
+
+/// Fails early, before any point runs, on a bad path, a key the scene does
+/// not have (`surface.sigm`) or a value its field's type cannot hold (a
+/// fractional `montecarlo.summits`): every distinct value of each varied
+/// field (up to [`CHECKED_VALUES`]), the others at the first point's,
+/// deserialised into a scene. Values out of a field's range are left to
+/// the points (a sweep may cross a model's limits; those points fail).
+///
+/// # Errors
+/// [`Error::Invalid`] naming the varied path, the value and the reason.
+fn check_fields(base: &toml::Value, spec: &SweepSpec, points: &[SweepPoint]) -> Result<()> {
+    let Some(first) = points.first() else {
+        return Ok(());
+    };
+    for (d, v) in spec.vary.iter().enumerate() {
+        let mut seen = std::collections::HashSet::new();
+        for p in points {
+            let x = p.values[d];
+            if !seen.insert(x.to_bits()) {
+                continue;
+            }
+            if seen.len() > CHECKED_VALUES {
+                break;
+            }
+            let mut value = base.clone();
+            for (w, y) in spec.vary.iter().zip(&first.values) {
+                set_field(&mut value, &w.path, *y)?;
+            }
+            set_field(&mut value, &v.path, x)?;
+            Scene::deserialize(value).map_err(|e| {
+                Error::invalid(&v.path, format!("at {x:e}: {}", e.message().trim()))
+            })?;
+        }
+    }
+    Ok(())
+}
+
 /// Computes one point's row: `index, values.., seed, status, outputs..`.
 fn point_row(
     base: &toml::Value,
@@ -156,10 +195,8 @@ pub fn run_sweep(
     let normalised = base.to_toml();
     let base_value: toml::Value = toml::from_str(&normalised)
         .map_err(|e| Error::invalid("scene", e.message().to_string()))?;
-    for v in &spec.vary {
-        // Fail early on a bad path, before any point runs.
-        set_field(&mut base_value.clone(), &v.path, v.from)?;
-    }
+    let points = spec.points();
+    check_fields(&base_value, spec, &points)?;
     // The base plan gives the columns (and gathers a calibration once, for
     // every point to read from the cache).
     let cols = with_quantities(Plan::new(base, PlanMode::Planned)?, options)?.result_columns();
@@ -168,7 +205,6 @@ pub fn run_sweep(
     header.extend(["seed".into(), "status".into()]);
     header.extend(cols.iter().map(|c| c.to_string()));
     let header = header.join(",");
-    let points = spec.points();
     let meta = SweepMeta {
         scene: normalised,
         spec: spec.clone(),
