@@ -262,7 +262,8 @@ fn constructors_validate() {
         let e = Weibull::new(k).unwrap_err();
         assert_eq!(e.field(), Some("weibull_shape"), "{k}");
     }
-    for k in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+    // 1e-300 gave negative areas and an exit-1 negative hysteresis energy.
+    for k in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e-300, 0.009] {
         assert_eq!(
             TruncatedGaussian::new(k).unwrap_err().field(),
             Some("truncation")

@@ -62,6 +62,27 @@ fn recovers_the_parameters_from_envelope_data_to_1e6() {
     assert!(f.residual_rms_n < 1e-9);
 }
 
+/// Swapped phases put the loading envelope below the unloading one: the
+/// fit gave a negative amplitude (-1.1e-4 m^1/2) at exit 0; now refused,
+/// naming `data` and saying the data do not fit the model.
+#[test]
+fn swapped_phases_are_refused_not_fitted_with_a_negative_amplitude() {
+    let p = gelatin(5e-5);
+    let swapped: Vec<FitPoint> = envelope_data(&p, 40)
+        .into_iter()
+        .map(|mut q| {
+            q.phase = match q.phase {
+                Phase::Loading => Phase::Unloading,
+                Phase::Unloading => Phase::Loading,
+            };
+            q
+        })
+        .collect();
+    let e = fit_envelopes(R, &swapped).unwrap_err();
+    assert_eq!(e.field(), Some("data"));
+    assert!(e.to_string().contains("do not fit the model"), "{e}");
+}
+
 /// Exact-model data at the fold points where the paths jump (the ends of the stretches).
 #[test]
 fn recovers_the_parameters_from_fold_points_to_1_percent() {

@@ -71,9 +71,13 @@ def heating(
     voltage: Optional[float] = None,
     max_temperature: Optional[float] = None,
     bulk_temperature: float = ...,
+    softening_temperature: float = ...,
+    melting_temperature: float = ...,
 ) -> Dict[str, Any]:
     """`asperity heating --json`: peak temperature (K) at a contact voltage
-    (V), or the voltage reaching a temperature (Holm, Wiedemann-Franz)."""
+    (V), or the voltage reaching a temperature (Holm, Wiedemann-Franz); no
+    temperature (None, condition "molten") once the spot melts (gold's
+    softening 373.15 K and melting 1337.33 K by default)."""
 
 def spots(
     x: ArrayLike,

@@ -45,19 +45,30 @@ pub fn law_py(py: Python<'_>, law: String, lambda_: Option<f64>) -> PyResult<Py<
     call(py, || cmd::law::run(&args))
 }
 
-/// `asperity heating --voltage U | --max-temperature T [--bulk-temperature T0] --json`.
+/// `asperity heating --voltage U | --max-temperature T [--bulk-temperature T0]
+/// [--softening-temperature Ts] [--melting-temperature Tm] --json`.
 #[pyfunction]
-#[pyo3(name = "heating", signature = (voltage = None, max_temperature = None, bulk_temperature = asperity::electrical::heating::DEFAULT_BULK_TEMPERATURE))]
+#[pyo3(name = "heating", signature = (
+    voltage = None,
+    max_temperature = None,
+    bulk_temperature = asperity::electrical::heating::DEFAULT_BULK_TEMPERATURE,
+    softening_temperature = asperity::electrical::heating::GOLD_SOFTENING_TEMPERATURE,
+    melting_temperature = asperity::electrical::heating::GOLD_MELTING_TEMPERATURE
+))]
 pub fn heating_py(
     py: Python<'_>,
     voltage: Option<f64>,
     max_temperature: Option<f64>,
     bulk_temperature: f64,
+    softening_temperature: f64,
+    melting_temperature: f64,
 ) -> PyResult<Py<PyAny>> {
     let args = cmd::heating::HeatingArgs {
         voltage,
         max_temperature,
         bulk_temperature,
+        softening_temperature,
+        melting_temperature,
         json: true,
     };
     call(py, || cmd::heating::run(&args).map(|(out, _)| out))

@@ -88,6 +88,18 @@ impl AxisymJkr {
         let finite = |i: &Instability| {
             i.radius.is_finite() && i.load.is_finite() && i.interference.is_finite()
         };
+        if s.work > 0.0 && finite(&s.pull_off) && !(s.pull_off.load < 0.0) {
+            return Err(Error::invalid(
+                "work_of_adhesion",
+                format!(
+                    "w = {:e} J/m^2 is too small for this {} profile in f64: its pull-off \
+                     ({:e} N) is lost to underflow",
+                    s.work,
+                    s.profile.name(),
+                    s.pull_off.load
+                ),
+            ));
+        }
         if !(finite(&s.pull_off) && finite(&s.jump_out))
             || (s.work > 0.0 && !(s.pull_off.radius > 0.0))
         {
@@ -123,12 +135,39 @@ impl AxisymJkr {
 
     /// Interference `delta(a) = delta_0(a) - sqrt(2 pi w a/E*)` (m).
     pub fn interference(&self, a: f64) -> f64 {
-        self.profile.delta0(a) - (2.0 * PI * self.work * a / self.estar).sqrt()
+        // Square roots taken apart: `w a` and `E* w a^3` underflow for tiny
+        // `w` (1e-200 J/m^2 gave a positive pull-off).
+        self.profile.delta0(a) - (2.0 * PI * self.work / self.estar).sqrt() * a.sqrt()
     }
 
     /// Load `F(a) = F_0(a) - sqrt(8 pi E* w a^3)` (N).
     pub fn load(&self, a: f64) -> f64 {
-        self.profile.load0(a, self.estar) - (8.0 * PI * self.estar * self.work * a * a * a).sqrt()
+        self.profile.load0(a, self.estar)
+            - (8.0 * PI * self.estar * self.work).sqrt() * a * a.sqrt()
+    }
+
+    /// Load (N) and interference (m) at contact radius `a` (m), checked:
+    /// `a` within the profile ([`Profile::check_radius`]) and both values
+    /// finite (a paraboloid's load grows like `a^3` and overflows f64 past
+    /// ~1e100 m).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `a` outside the profile or where a value
+    /// overflows.
+    pub fn point(&self, a: f64) -> Result<(f64, f64)> {
+        let a = self.profile.check_radius("a", a)?;
+        let (load, interference) = (self.load(a), self.interference(a));
+        if load.is_finite() && interference.is_finite() {
+            Ok((load, interference))
+        } else {
+            Err(Error::invalid(
+                "a",
+                format!(
+                    "at a = {a:e} m the {} profile's load or interference overflows f64",
+                    self.profile.name()
+                ),
+            ))
+        }
     }
 
     /// `d delta/da` (dimensionless).

@@ -25,7 +25,7 @@ pub struct ClusterResistance {
 /// The resistance of `clusters` of `problem`'s map; `None` without contact.
 ///
 /// # Errors
-/// As [`Spots::new`] (coinciding centroids).
+/// As [`Spots::merging`].
 pub fn cluster_resistance(
     problem: &Problem,
     clusters: &[Cluster],
@@ -41,10 +41,10 @@ pub fn cluster_resistance(
         .iter()
         .map(|c| (c.pixels as f64 / std::f64::consts::PI).sqrt() * dx)
         .collect();
-    let spots = Spots::new(x, y, a)?;
+    let spots = Spots::merging(x, y, a)?.spots;
     Ok(Some(ClusterResistance {
         parallel: spots.parallel(spot),
         greenwood: spots.greenwood(spot),
-        spots: clusters.len(),
+        spots: spots.len(),
     }))
 }

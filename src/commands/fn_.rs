@@ -13,7 +13,7 @@ pub struct FnArgs {
     /// Height distribution: gaussian or exponential.
     #[cfg_attr(feature = "cli", arg(long))]
     pub dist: String,
-    /// Order n >= 0 of F_n(h) = int_h^inf (s-h)^n phi(s) ds.
+    /// Order n in [0, 100] of F_n(h) = int_h^inf (s-h)^n phi(s) ds.
     #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub n: f64,
     /// Comma-separated standardised separations h, e.g. -1,0,2.5.
@@ -60,20 +60,27 @@ pub fn distribution(name: &str) -> CommandResult<Box<dyn HeightDistribution>> {
 }
 
 /// `F_n(h)` of the distribution `dist` at every `h` (finite; errors name
-/// `--dist`, `--n` or `--h`), in the order given.
+/// `--dist`, `--n` (in [0, 100]) or `--h`, also when a value overflows), in
+/// the order given.
 pub fn values(dist: &str, n: f64, h: &[f64]) -> CommandResult<Vec<f64>> {
     let d = distribution(dist)?;
-    crate::error::non_negative("--n", n)?;
-    for &x in h {
-        crate::error::finite("--h", x)?;
-    }
-    Ok(h.iter().map(|&x| d.moment_above(n, x)).collect())
+    crate::error::Allowed::closed(0.0, crate::heights::MAX_MOMENT_ORDER).check("--n", n)?;
+    h.iter()
+        .map(|&x| {
+            d.moment_above_checked(n, x).map_err(|e| {
+                match e.field() {
+                    Some("n") => e.renamed("--n"),
+                    _ => e.renamed("--h"),
+                }
+                .into()
+            })
+        })
+        .collect()
 }
 
 /// Runs `asperity fn`.
 pub fn run(args: &FnArgs) -> CommandResult<FnOutput> {
     let dist = distribution(&args.dist)?;
-    crate::error::non_negative("--n", args.n)?;
     let hs = list::parse("--h", &args.h)?;
     let f = values(&args.dist, args.n, &hs)?;
     Ok(FnOutput {

@@ -194,6 +194,7 @@ pub fn run(args: &PunchArgs) -> super::CommandResult<Report> {
             let r = parse_list("--radii", t)?;
             for &a in &r {
                 crate::error::non_negative("--radii", a)?;
+                p.check_radius(a).map_err(|e| e.renamed("--radii"))?;
             }
             r
         }

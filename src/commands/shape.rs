@@ -222,7 +222,7 @@ impl Model {
     /// `(load, interference)` at contact radius `a`.
     fn at(&self, a: f64) -> Result<(f64, f64), CliError> {
         match self {
-            Model::Jkr(j) => Ok((j.load(a), j.interference(a))),
+            Model::Jkr(j) => Ok(j.point(a).map_err(|e| e.renamed("--radii"))?),
             Model::Md(m) => {
                 let p = m.point(a);
                 if p.load.is_finite() && p.interference.is_finite() {

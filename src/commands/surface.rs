@@ -87,6 +87,12 @@ pub struct SurfaceJson {
     pub m2: f64,
     /// Spectral moment m4 (1/m^2).
     pub m4: f64,
+    /// `sqrt(m2)`: a profile's rms slope.
+    pub rms_slope: f64,
+    /// `sqrt(2 m2)`: the surface's rms gradient.
+    pub rms_gradient: f64,
+    /// `sqrt(m4)` (1/m): a profile's rms curvature.
+    pub rms_curvature_per_m: f64,
     /// Nayak's bandwidth parameter `m0 m4 / m2^2`.
     pub bandwidth_alpha: f64,
     /// The summits found.
@@ -152,7 +158,10 @@ pub fn characterise(
     estar: Option<f64>,
     hardness: Option<f64>,
 ) -> CommandResult<(SurfaceJson, Characterisation)> {
-    let topo = Topography::new(map, pixel_size).map_err(|e| e.renamed("--pixel-size"))?;
+    let topo = Topography::new(map, pixel_size).map_err(|e| match e.field() {
+        Some("heights") => e.renamed("--scale"),
+        _ => e.renamed("--pixel-size"),
+    })?;
     let c = topo
         .characterise(periodic)
         .map_err(|e| e.renamed(map_name))?;
@@ -165,6 +174,9 @@ pub fn characterise(
         m0: c.moments.m0,
         m2: c.moments.m2,
         m4: c.moments.m4,
+        rms_slope: c.moments.rms_slope(),
+        rms_gradient: c.moments.rms_gradient(),
+        rms_curvature_per_m: c.moments.rms_curvature(),
         bandwidth_alpha: c.bandwidth_alpha(),
         summits: SummitsJson {
             count: s.count,

@@ -36,5 +36,5 @@ pub use interaction::{greenwood_mean_field, ContactResistance, Interaction, Spot
 pub use observable::{ContactHeating, ResistanceObservables, SpotConductance};
 pub use sample::{population_spots, SampleResistance, EXACT_MAX_SPOTS};
 pub use spot::{Conductor, SpotResistance, Spreading};
-pub use spots::Spots;
+pub use spots::{Merged, Spots};
 pub use switch::{Stiction, StictionOdds, Switch};

@@ -130,8 +130,8 @@ impl Derived for ResistanceObservables {
 
 /// Joule heating of a contact carrying a current `I` (A): the contact
 /// voltage `U = I R` (V) or Holm's peak temperature
-/// `sqrt(T0^2 + U^2/(4 L))` (K, [`Heating::max_temperature_at`]), from the
-/// state's resistance.
+/// `sqrt(T0^2 + U^2/(4 L))` (K, [`Heating::peak_temperature`]: none once
+/// the spot melts), from the state's resistance.
 #[derive(Debug, Clone)]
 pub struct ContactHeating {
     resistance: ResistanceObservables,
@@ -171,7 +171,10 @@ impl Derived for ContactHeating {
     fn value(&self, observables: &Observables, totals: &Totals) -> Option<f64> {
         let r = self.resistance.value(observables, totals)?;
         let v = if self.temperature {
-            self.heating.max_temperature_at(self.current, r).ok()?
+            // No temperature once the spot melts (Holm's relation ends).
+            self.heating
+                .peak_temperature((self.current * r).abs())
+                .ok()??
         } else {
             self.current * r
         };

@@ -5,7 +5,7 @@
 //! the sample itself (not from a mean field).
 
 use super::spot::SpotResistance;
-use super::spots::Spots;
+use super::spots::{Merged, Spots};
 use crate::error::{positive, Result};
 use crate::law::Branch;
 use crate::montecarlo::{Population, SummitLaw};
@@ -27,13 +27,19 @@ pub struct SampleResistance {
     /// The exact equal-potential solution (Ohm), for at most
     /// [`EXACT_MAX_SPOTS`] spots.
     pub exact: Option<f64>,
+    /// Summits whose spots overlapped others where they fell and were
+    /// merged with them (0 from [`SampleResistance::new`]; the caller that
+    /// merged sets it).
+    pub merged: usize,
 }
 
 /// The spots of `population` summed with `law` on approach at separation
 /// `d` (m), positions uniform in a square of side `side` (m) drawn from
 /// `seed` (splitmix64 stream, reproducible).
 ///
-/// `None` when no summit is in contact.
+/// Spots that overlap where they fell are merged into one spot of their
+/// joint area ([`Spots::merging`]; the groups are returned). `None` when
+/// no summit is in contact.
 ///
 /// # Errors
 /// [`crate::Error::OutOfRange`] naming `side`; as the law's radius scaling.
@@ -43,7 +49,7 @@ pub fn population_spots(
     separation: f64,
     side: f64,
     seed: u64,
-) -> Result<Option<Spots>> {
+) -> Result<Option<Merged>> {
     positive("side", side)?;
     let (mut x, mut y, mut a) = (Vec::new(), Vec::new(), Vec::new());
     let mut state = seed;
@@ -68,7 +74,7 @@ pub fn population_spots(
     if a.is_empty() {
         return Ok(None);
     }
-    Spots::new(x, y, a).map(Some)
+    Spots::merging(x, y, a).map(Some)
 }
 
 impl SampleResistance {
@@ -87,6 +93,7 @@ impl SampleResistance {
             } else {
                 None
             },
+            merged: 0,
         })
     }
 }

@@ -676,4 +676,9 @@ impl LoadingModel for GwModel {
     fn height_scale(&self) -> f64 {
         self.surface.sigma
     }
+
+    /// `rtol`: the totals are integrals to this relative tolerance.
+    fn load_tolerance(&self) -> f64 {
+        self.accuracy.rel_tol
+    }
 }

@@ -18,6 +18,10 @@
 
 use std::fmt;
 
+/// Largest order `n` of [`HeightDistribution::moment_above_checked`]: the
+/// GW integrals use `n <= 5/2`; `Gamma(n + 1)` overflows f64 past 170.
+pub const MAX_MOMENT_ORDER: f64 = 100.0;
+
 /// A standardised summit-height distribution. Object-safe, `Send + Sync`.
 ///
 /// Built once with validated parameters; evaluation never fails.
@@ -53,6 +57,34 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     /// or `n < 0`.
     fn moment_above(&self, n: f64, h: f64) -> f64;
 
+    /// [`moment_above`](HeightDistribution::moment_above) with its
+    /// arguments checked and a finite value promised: `n` in
+    /// `[0, `[`MAX_MOMENT_ORDER`]`]`, `h` finite, and `F_n(h)` within f64
+    /// (it grows like `|h|^n` below the distribution and like `Gamma(n+1)`
+    /// at any `h`).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`](crate::Error::OutOfRange) naming `n` or `h`;
+    /// [`Error::Invalid`](crate::Error::Invalid) naming `h` (or `n` where
+    /// even `h` above the distribution's mode overflows) when `F_n(h)`
+    /// overflows f64.
+    fn moment_above_checked(&self, n: f64, h: f64) -> crate::Result<f64> {
+        crate::error::Allowed::closed(0.0, MAX_MOMENT_ORDER).check("n", n)?;
+        crate::error::finite("h", h)?;
+        let f = self.moment_above(n, h);
+        if f.is_finite() {
+            return Ok(f);
+        }
+        let name = if h >= 0.0 { "n" } else { "h" };
+        Err(crate::Error::invalid(
+            name,
+            format!(
+                "F_{n}({h:e}) of the {} distribution overflows f64",
+                self.name()
+            ),
+        ))
+    }
+
     /// Quantile `s` with `P(S <= s) = p`, `p` in `(0, 1)`; used to sample.
     fn quantile(&self, p: f64) -> f64;
 
@@ -86,7 +118,7 @@ mod weibull;
 pub use empirical::Empirical;
 pub use exponential::Exponential;
 pub use gaussian::Gaussian;
-pub use truncated::TruncatedGaussian;
+pub use truncated::{TruncatedGaussian, MIN_TRUNCATION};
 pub use weibull::Weibull;
 
 mod kind;

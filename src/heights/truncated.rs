@@ -6,6 +6,12 @@ use crate::error::{positive, Result};
 use crate::numeric::quadrature::kronrod21;
 use crate::special::normal;
 
+/// Smallest truncation `k`: below 0.01 standard deviations every summit
+/// sits at one height for any resolved program (`truncation = 1e-300` gave
+/// negative areas and a negative hysteresis energy); a single height is the
+/// `empirical` distribution of one value.
+pub const MIN_TRUNCATION: f64 = 0.01;
+
 /// Standard normal heights truncated to `[-k, k]` and renormalised:
 /// `phi_T(s) = phi(s)/Z` on `[-k, k]`, `Z = 1 - 2 Q(k)`.
 ///
@@ -26,12 +32,14 @@ pub struct TruncatedGaussian {
 }
 
 impl TruncatedGaussian {
-    /// Truncation `k > 0` (in standard deviations of the parent Gaussian).
+    /// Truncation `k` in `[`[`MIN_TRUNCATION`]`, inf)` (in standard
+    /// deviations of the parent Gaussian).
     ///
     /// # Errors
     /// [`Error::OutOfRange`](crate::Error::OutOfRange) naming `truncation`.
     pub fn new(k: f64) -> Result<Self> {
         positive("truncation", k)?;
+        crate::error::Allowed::closed_open(MIN_TRUNCATION, f64::INFINITY).check("truncation", k)?;
         Ok(TruncatedGaussian {
             k,
             z: 1.0 - 2.0 * normal::tail(k),

@@ -49,6 +49,14 @@ pub trait LoadingModel: Sync {
     /// step of the load search.
     fn height_scale(&self) -> f64;
 
+    /// Relative tolerance to which
+    /// [`separation_at_load`](LoadingModel::separation_at_load) meets its
+    /// target load (default `1e-9`: exact sums; models computed to a
+    /// tolerance return it).
+    fn load_tolerance(&self) -> f64 {
+        1e-9
+    }
+
     /// Whether totals are step functions of the separation (a finite
     /// population): searches then bisect instead of interpolating.
     fn is_discrete(&self) -> bool {
@@ -142,13 +150,18 @@ pub trait LoadingModel: Sync {
     /// coming down from `start`: steps of one height scale down to
     /// `start - 50` height scales bracket the first crossing, then Brent's
     /// method (continuous models) or bisection keeping the side whose load
-    /// is `>= target` (discrete models) refines it to
-    /// [`separation_tolerance`](LoadingModel::separation_tolerance).
+    /// is `>= target` (discrete models) refines it down to a few ulps of the
+    /// separation, and the load found must meet the target to
+    /// [`load_tolerance`](LoadingModel::load_tolerance):
+    /// `|P(d) - target| <= load_tolerance * target`. A load that jumps over
+    /// the target (summits jumping into contact one by one, or a
+    /// discontinuous law) is refused rather than reported as the target.
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `max_load` for a target that is not
     /// finite and positive; [`Error::Invalid`] naming `max_load` when the
-    /// load is not reached within the search depth; as
+    /// load is not reached within the search depth, or is only reached by a
+    /// jump (the message gives the loads on either side); as
     /// [`LoadingModel::state`].
     fn separation_at_load(&self, target: f64, start: f64) -> Result<f64> {
         positive("max_load", target)?;
@@ -186,8 +199,11 @@ pub trait LoadingModel: Sync {
                 ));
             }
         }
-        let tol = self.separation_tolerance();
-        if self.is_discrete() {
+        // Down to a few ulps of the separation: the load, not the
+        // separation, carries the tolerance (a steep load moves by many
+        // tolerances over `rtol sigma`).
+        let tol = 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(scale);
+        let root = if self.is_discrete() {
             while hi - lo > tol {
                 let mid = 0.5 * (lo + hi);
                 if !(mid > lo && mid < hi) {
@@ -199,24 +215,124 @@ pub trait LoadingModel: Sync {
                     hi = mid;
                 }
             }
-            return Ok(lo);
+            lo
+        } else {
+            let mut failure = None;
+            let root = brent(
+                |d| match load(d) {
+                    Ok(p) => p - target,
+                    Err(e) => {
+                        failure = Some(e);
+                        f64::NAN
+                    }
+                },
+                lo,
+                hi,
+                tol,
+            );
+            if let Some(e) = failure {
+                return Err(e);
+            }
+            root.ok_or_else(|| Error::invalid("max_load", "could not bracket the load"))?
+        };
+        let met = load(root)?;
+        let rtol = self.load_tolerance();
+        if (met - target).abs() <= rtol * target {
+            return Ok(root);
         }
-        let mut failure = None;
-        let root = brent(
-            |d| match load(d) {
-                Ok(p) => p - target,
-                Err(e) => {
-                    failure = Some(e);
-                    f64::NAN
-                }
-            },
-            lo,
-            hi,
-            tol,
-        );
-        if let Some(e) = failure {
-            return Err(e);
+        // The crossing is a jump: report the loads on either side.
+        let step = (tol * 4.0).max(f64::EPSILON * root.abs());
+        let (below, above) = (load(root + step)?, load(root - step)?);
+        Err(Error::invalid(
+            "max_load",
+            format!(
+                "{target:e} N cannot be met to rtol {rtol:e}: the approach load jumps from \
+                 {below:.4e} N to {above:.4e} N at d = {root:.6e} m (summits jumping into contact); \
+                 ask for a load outside the jump, or a separation"
+            ),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::loading::{MethodUsed, Totals, SLOTS};
+
+    /// A toy model whose approach load is `load(d)`.
+    struct Toy<F: Fn(f64) -> f64 + Sync> {
+        load: F,
+        discrete: bool,
+    }
+
+    impl<F: Fn(f64) -> f64 + Sync> LoadingModel for Toy<F> {
+        fn state(&self, d: f64, _: History, obs: &Observables) -> Result<State> {
+            let mut values = [0.0; SLOTS];
+            values[0] = (self.load)(d);
+            Ok(State {
+                separation: d,
+                totals: Totals::new(values, [0.0; SLOTS], obs.mask()),
+                method: MethodUsed::ClosedForm,
+                evaluations: 1,
+            })
         }
-        root.ok_or_else(|| Error::invalid("max_load", "could not bracket the load"))
+        fn interaction_onset(&self) -> f64 {
+            1.0
+        }
+        // The old search stopped here: a tenth of the height scale.
+        fn separation_tolerance(&self) -> f64 {
+            0.1
+        }
+        fn height_scale(&self) -> f64 {
+            1.0
+        }
+        fn is_discrete(&self) -> bool {
+            self.discrete
+        }
+        fn load_tolerance(&self) -> f64 {
+            1e-6
+        }
+    }
+
+    /// A steep load (a factor e per 1 % of the height scale) is met to the
+    /// load tolerance, not to the separation tolerance (which allows a
+    /// factor e^10), by both searches.
+    #[test]
+    fn a_steep_load_is_met_to_the_load_tolerance() {
+        for discrete in [false, true] {
+            let toy = Toy {
+                load: |d: f64| if d < 0.0 { (-100.0 * d).exp_m1() } else { 0.0 },
+                discrete,
+            };
+            for target in [1e-6, 1.0, 1e3, 1e30] {
+                let d = toy.separation_at_load(target, 1.0).unwrap();
+                let p = (toy.load)(d);
+                assert!(
+                    (p - target).abs() <= 1e-6 * target,
+                    "{discrete} {target}: {p}"
+                );
+            }
+        }
+    }
+
+    /// A load that jumps over the target is refused, naming `max_load` and
+    /// the loads on either side of the jump.
+    #[test]
+    fn a_target_inside_a_jump_is_refused() {
+        for discrete in [false, true] {
+            let toy = Toy {
+                load: |d: f64| if d < 0.0 { 1.0 - d } else { 0.0 },
+                discrete,
+            };
+            let e = toy.separation_at_load(0.5, 1.0).unwrap_err();
+            assert_eq!(e.field(), Some("max_load"), "{e}");
+            assert!(
+                e.to_string()
+                    .contains("jumps from 0.0000e0 N to 1.0000e0 N"),
+                "{e}"
+            );
+            let d = toy.separation_at_load(2.0, 1.0).unwrap();
+            assert!(((toy.load)(d) - 2.0).abs() <= 2e-6);
+        }
     }
 }

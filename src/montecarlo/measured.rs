@@ -125,6 +125,10 @@ impl LoadingModel for MeasuredSummits {
         self.sum.height_scale()
     }
 
+    fn load_tolerance(&self) -> f64 {
+        self.sum.load_tolerance()
+    }
+
     fn is_discrete(&self) -> bool {
         true
     }

@@ -63,8 +63,8 @@ pub struct PunchFit {
 /// # Errors
 /// [`Error::OutOfRange`] naming `radius`, or `data` for a non-positive radius or non-finite
 /// load in a point; [`Error::Invalid`] naming `data` with one phase only, fewer than 3
-/// points, data that do not determine the parameters (rank-deficient) or a fitted `E*` that
-/// is not positive.
+/// points, data that do not determine the parameters (rank-deficient), a fitted `E*` that
+/// is not positive or a negative amplitude (the loading envelope below the unloading one).
 pub fn fit_envelopes(radius: f64, data: &[FitPoint]) -> Result<PunchFit> {
     positive("radius", radius)?;
     let n = data.len();
@@ -94,6 +94,19 @@ pub fn fit_envelopes(radius: f64, data: &[FitPoint]) -> Result<PunchFit> {
         return Err(Error::invalid(
             "data",
             format!("the fitted modulus is {t1:e} Pa; the data do not follow the envelopes"),
+        ));
+    }
+    if t3 < 0.0 {
+        // The loading envelope lies below the unloading one: phases
+        // swapped, or data that are not a wavy punch's.
+        return Err(Error::invalid(
+            "data",
+            format!(
+                "the fitted amplitude A sqrt(l) is negative ({:e} m^1/2): the loading points \
+                 lie below the unloading ones, so the data do not fit the model (are the \
+                 phases swapped?)",
+                t3 / (2.0 * PI * t1)
+            ),
         ));
     }
     // g(theta) = (t1, t2|t2|/(8 pi t1), t3/(2 pi t1)) and its Jacobian.

@@ -139,6 +139,29 @@ impl WavyPunch {
         self.state(a).load
     }
 
+    /// A contact radius `a` (m) checked for [`WavyPunch::state`] and the
+    /// envelopes: finite, `>= 0`, and small enough that the exact state and
+    /// both envelopes are finite (the load grows like `a^3`).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfRange`] naming `a` when negative or not
+    /// finite; [`crate::Error::Invalid`] naming `a` when a value overflows.
+    pub fn check_radius(&self, a: f64) -> Result<f64> {
+        let a = Allowed::closed_open(0.0, f64::INFINITY).check("a", a)?;
+        let finite = |p: PunchState| p.depth.is_finite() && p.load.is_finite();
+        if finite(self.state(a))
+            && finite(self.envelope(a, Envelope::Loading))
+            && finite(self.envelope(a, Envelope::Unloading))
+        {
+            Ok(a)
+        } else {
+            Err(crate::Error::invalid(
+                "a",
+                format!("at a = {a:e} m the punch's depth or load overflows f64"),
+            ))
+        }
+    }
+
     /// Exact equilibrium state at contact radius `a >= 0`: one Struve evaluation for both
     /// `h(a)` and `P(a)`.
     pub fn state(&self, a: f64) -> PunchState {

@@ -109,4 +109,9 @@ impl LoadingModel for RoughSphere {
     fn height_scale(&self) -> f64 {
         self.units().sigma
     }
+
+    /// The solver's tolerance on the load.
+    fn load_tolerance(&self) -> f64 {
+        self.core.options.tolerance
+    }
 }

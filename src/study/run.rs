@@ -2,6 +2,7 @@
 
 use super::plan::{McPlan, Plan};
 use super::scene::{LawName, ProgramTarget};
+use crate::electrical::heating::SpotCondition;
 use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction, StictionOdds};
 use crate::error::Result;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
@@ -155,8 +156,10 @@ fn run_montecarlo(
             let seed = crate::numeric::mix::splitmix64(mc.spec.seed ^ 0x5350_4f54); // "SPOT"
             let found = population_spots(&population, &law, curve.program.closest, side, seed)?;
             match found {
-                Some(s) if s.len() <= MAX_SAMPLE_SPOTS => {
-                    Some(SampleResistance::new(&s, res.spot())?)
+                Some(m) if m.spots.len() <= MAX_SAMPLE_SPOTS => {
+                    let mut r = SampleResistance::new(&m.spots, res.spot())?;
+                    r.merged = m.groups.iter().map(Vec::len).sum();
+                    Some(r)
                 }
                 _ => None,
             }
@@ -342,6 +345,15 @@ impl Plan {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
             None => None,
         };
+        if let Some(s) = montecarlo.as_ref().and_then(|m| m.spots.as_ref()) {
+            if s.merged > 0 {
+                warnings.push(format!(
+                    "montecarlo spots: {} spots overlapped others at their random positions and \
+                     were merged into spots of their joint area ({} spots remain)",
+                    s.merged, s.spots
+                ));
+            }
+        }
         Ok(Results {
             records: LegRecords::new(&self.quantities, &curve),
             curve,
@@ -361,6 +373,45 @@ impl Plan {
             model_error: Some(model_error),
         })
         .and_then(|r| self.finish(model, r))
+    }
+
+    /// The warning when spots soften or melt under the scene's current at
+    /// the states the summary reports (the closest approach and the listed
+    /// states): the hottest of them, with their number beyond softening.
+    /// The curve's far states (a fraction of one spot carrying the whole
+    /// current) are left to their columns: no temperature once molten.
+    fn heating_warning(&self, r: &Results, listed: &QuantitySet) -> Result<Option<String>> {
+        let Some((current, heating)) = self.heating else {
+            return Ok(None);
+        };
+        let voltages = |set: &QuantitySet, records: &[Record]| -> Vec<(f64, f64)> {
+            let Some((k, _)) = set.find("contact_voltage") else {
+                return Vec::new();
+            };
+            records
+                .iter()
+                .filter_map(|rec| Some((rec.values[k]?, rec.state.separation)))
+                .collect()
+        };
+        let first = &r.records.approach[..1.min(r.records.approach.len())];
+        let mut reported = voltages(&self.quantities, first);
+        reported.extend(voltages(listed, &r.listed));
+        let beyond = reported
+            .iter()
+            .filter(|(u, _)| heating.condition(*u).ok() != Some(SpotCondition::Solid))
+            .count();
+        let Some(&(u, d)) = reported.iter().max_by(|a, b| a.0.total_cmp(&b.0)) else {
+            return Ok(None);
+        };
+        Ok(heating.warning(u)?.map(|w| {
+            format!(
+                "electrical.current = {current:e} A at d = {d:.4e} m: {w} ({beyond} of the {} \
+                 reported states, the closest approach and the listed ones, are beyond \
+                 softening; electrical.softening_temperature and melting_temperature set the \
+                 metal, gold's by default)",
+                reported.len()
+            )
+        }))
     }
 
     /// The parts that follow from the curve: listed states, regime
@@ -391,6 +442,7 @@ impl Plan {
             _ => Vec::new(),
         };
         r.listed = listed.records(&model.states(&steps, listed.observables())?);
+        r.warnings.extend(self.heating_warning(&r, &listed)?);
         let closest = r.curve.program.closest;
         if let Some(p) = self.plasticity {
             // An elastic law: the Kogut–Etsion regimes as the diagnostic.

@@ -3,7 +3,21 @@
 use super::{
     summits, GwParameters, HeightMap, Moments, NayakPrediction, Plane, Summit, SummitStats,
 };
-use crate::error::{positive, Result};
+use crate::error::{Allowed, Error, Result};
+
+/// Pixel sizes (m) a topography may have: from 1 pm (below any
+/// instrument's sampling) to 1 km; beyond, the moments of any map in
+/// range would overflow or mean nothing.
+pub const PIXEL_SIZE_RANGE: Allowed = Allowed::closed(1e-12, 1e3);
+
+/// Largest height magnitude (m) of a topography: 1 km (a map in another
+/// unit needs its scale; with heights and pixels in range every moment is
+/// finite).
+pub const MAX_HEIGHT: f64 = 1e3;
+
+/// Relief at or below this many ulps of the largest height is roundoff:
+/// a map whose heights differ only there is flat.
+const ROUNDOFF_ULPS: f64 = 1e3;
 
 /// A height map with its pixel size: the starting point of a study.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,12 +48,25 @@ pub struct Characterisation {
 }
 
 impl Topography {
-    /// A map of heights in m with square pixels of `pixel_size` m.
+    /// A map of heights in m (`|h| <=` [`MAX_HEIGHT`]) with square pixels
+    /// of `pixel_size` m (in [`PIXEL_SIZE_RANGE`]).
     ///
     /// # Errors
-    /// [`crate::Error::OutOfRange`] naming `pixel_size` unless finite and > 0.
+    /// [`crate::Error::OutOfRange`] naming `pixel_size` outside its range;
+    /// [`crate::Error::Invalid`] naming `heights` when the largest
+    /// magnitude is above [`MAX_HEIGHT`].
     pub fn new(map: HeightMap, pixel_size: f64) -> Result<Self> {
-        positive("pixel_size", pixel_size)?;
+        PIXEL_SIZE_RANGE.check("pixel_size", pixel_size)?;
+        let largest = map.heights().iter().fold(0.0, |m: f64, z| m.max(z.abs()));
+        if !(largest <= MAX_HEIGHT) {
+            return Err(Error::invalid(
+                "heights",
+                format!(
+                    "the largest height magnitude {largest:e} m is above {MAX_HEIGHT:e} m \
+                     (a map in another unit needs its height scale)"
+                ),
+            ));
+        }
         Ok(Topography { map, pixel_size })
     }
 
@@ -60,12 +87,30 @@ impl Topography {
     ///
     /// # Errors
     /// [`crate::Error::Invalid`] named `topography` when the map is flat
-    /// after the plane is removed (a moment is 0).
+    /// after the plane is removed: a moment is 0, or the relief (rms) is at
+    /// roundoff level, within 1000 ulps of the largest height (a constant
+    /// map of 3e-9 m used to give a GW radius of 8.9e10 m).
     pub fn characterise(&self, periodic: bool) -> Result<Characterisation> {
         let (rows, cols, dx) = (self.map.rows(), self.map.cols(), self.pixel_size);
         let plane = Plane::fit(self.map.heights(), rows, cols, dx, periodic);
         let z = plane.residual(self.map.heights(), cols);
         let moments = Moments::measure(&z, rows, cols, dx, periodic).check_not_flat()?;
+        let largest = self
+            .map
+            .heights()
+            .iter()
+            .fold(0.0, |m: f64, z| m.max(z.abs()));
+        let roundoff = ROUNDOFF_ULPS * f64::EPSILON * largest;
+        if !(moments.m0.sqrt() > roundoff) {
+            return Err(Error::invalid(
+                super::map::NAME,
+                format!(
+                    "flat: the relief after mean-plane removal ({:.3e} m rms) is at roundoff \
+                     level for heights up to {largest:.3e} m (at most {roundoff:.3e} m)",
+                    moments.m0.sqrt()
+                ),
+            ));
+        }
         let summits = summits::find(&z, rows, cols, dx, periodic);
         let candidates = if periodic {
             rows * cols
@@ -105,5 +150,46 @@ impl Characterisation {
     /// Nominal area of the map, `rows cols dx^2` (m^2).
     pub fn nominal_area_m2(&self) -> f64 {
         (self.rows * self.cols) as f64 * self.pixel_size_m * self.pixel_size_m
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn map(f: impl Fn(usize, usize) -> f64) -> HeightMap {
+        let h = (0..32 * 32).map(|k| f(k / 32, k % 32)).collect();
+        HeightMap::new(32, 32, h).unwrap()
+    }
+
+    /// A tilted plane leaves only roundoff after the plane fit (9.9e-22 m
+    /// rms): it was characterised as a surface; now it is flat.
+    #[test]
+    fn relief_at_roundoff_level_is_flat() {
+        let plane = map(|i, j| 5e-6 + i as f64 * 1e-9 + j as f64 * 2e-9);
+        let e = Topography::new(plane, 1e-7)
+            .unwrap()
+            .characterise(false)
+            .unwrap_err();
+        assert_eq!(e.field(), Some(super::super::map::NAME));
+        assert!(e.to_string().contains("roundoff"), "{e}");
+        // A relief of 1e-9 relative to the heights is not roundoff.
+        let rough = map(|i, j| 1.0 + 1e-9 * ((i * 7 + j * 13) % 5) as f64);
+        assert!(Topography::new(rough, 1e-7)
+            .unwrap()
+            .characterise(false)
+            .is_ok());
+    }
+
+    #[test]
+    fn pixel_size_and_heights_have_ranges() {
+        let ok = map(|i, j| 1e-9 * ((i * 7 + j * 13) % 5) as f64);
+        for dx in [1e-300, 1e-13, 1e4, f64::NAN, 0.0] {
+            let e = Topography::new(ok.clone(), dx).unwrap_err();
+            assert_eq!(e.field(), Some("pixel_size"), "{dx}");
+        }
+        let big = map(|i, j| 1e300 * ((i * 7 + j * 13) % 5) as f64);
+        let e = Topography::new(big, 1e-7).unwrap_err();
+        assert_eq!(e.field(), Some("heights"));
     }
 }

@@ -33,7 +33,7 @@ mod summits;
 pub mod synthetic;
 pub mod text;
 
-pub use characterise::{Characterisation, Topography};
+pub use characterise::{Characterisation, Topography, MAX_HEIGHT, PIXEL_SIZE_RANGE};
 pub use map::HeightMap;
 pub use moments::Moments;
 pub use nayak::{GwParameters, NayakPrediction, MCCOOL_HEIGHT_CONSTANT, NAYAK_HEIGHT_CONSTANT};

@@ -52,6 +52,26 @@ impl Moments {
         self.m0.sqrt()
     }
 
+    /// RMS slope of a profile `sqrt(m2)` (dimensionless): along x or y,
+    /// averaged over both (SurfaceTopography's `rms_slope_from_profile`).
+    pub fn rms_slope(&self) -> f64 {
+        self.m2.sqrt()
+    }
+
+    /// RMS gradient of the surface `sqrt(2 m2)` (dimensionless):
+    /// `sqrt(<|grad z|^2>)` of an isotropic surface, `sqrt(2)` times the
+    /// profile slope (the easy factor to miss).
+    pub fn rms_gradient(&self) -> f64 {
+        (2.0 * self.m2).sqrt()
+    }
+
+    /// RMS curvature of a profile `sqrt(m4)` (1/m): the second derivative
+    /// along x or y, averaged over both (SurfaceTopography's
+    /// `rms_curvature_from_profile`).
+    pub fn rms_curvature(&self) -> f64 {
+        self.m4.sqrt()
+    }
+
     /// Measures the finite-difference moments of residual heights `z`
     /// (row-major, `rows, cols >= 3`, pixel size `dx` in m).
     pub(crate) fn measure(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Self {

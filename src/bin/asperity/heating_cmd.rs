@@ -14,8 +14,24 @@ pub fn run(args: &HeatingArgs) -> crate::CliResult {
         return Ok(());
     }
     match (out, args.voltage, args.max_temperature) {
-        (HeatingOutput::Temperature { max_temperature: t }, Some(u), _) => {
-            println!("peak contact temperature {t:.6} K at {u} V (bulk {bulk} K)")
+        (
+            HeatingOutput::Temperature {
+                max_temperature,
+                warnings,
+                ..
+            },
+            Some(u),
+            _,
+        ) => {
+            match max_temperature {
+                Some(t) => println!("peak contact temperature {t:.6} K at {u} V (bulk {bulk} K)"),
+                None => {
+                    println!("no peak contact temperature at {u} V: the spot melts (bulk {bulk} K)")
+                }
+            }
+            for w in warnings {
+                eprintln!("warning: {w}");
+            }
         }
         (HeatingOutput::Voltage { voltage: u }, _, Some(t)) => {
             println!("contact voltage {u:.9} V reaches {t} K (bulk {bulk} K)")

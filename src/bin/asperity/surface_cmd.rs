@@ -25,6 +25,14 @@ fn print_table(o: &SurfaceJson) {
         "m0, m2, m4                 {:.6e} m^2, {:.6e}, {:.6e} 1/m^2",
         o.m0, o.m2, o.m4
     );
+    println!(
+        "rms slope (profile)        {:.6e}  = sqrt(m2); surface rms gradient sqrt(2 m2) = {:.6e}",
+        o.rms_slope, o.rms_gradient
+    );
+    println!(
+        "rms curvature (profile)    {:.6e} 1/m = sqrt(m4)",
+        o.rms_curvature_per_m
+    );
     println!("bandwidth alpha            {:.6}", o.bandwidth_alpha);
     let s = &o.summits;
     println!("summits                    {}", s.count);

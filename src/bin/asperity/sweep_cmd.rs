@@ -26,8 +26,13 @@ pub struct SweepArgs {
     #[arg(long, default_value_t = 0)]
     seed: u64,
     /// Run only slice K of N (`K/N`), e.g. for a Slurm job array.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "shard_from_env")]
     shard: Option<String>,
+    /// Take the slice from a Slurm job array task's environment:
+    /// K = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1,
+    /// N = SLURM_ARRAY_TASK_COUNT (stepped or sparse arrays are refused).
+    #[arg(long)]
+    shard_from_env: bool,
     /// Worker threads (default: one per core).
     #[arg(long)]
     threads: Option<usize>,
@@ -51,7 +56,10 @@ pub struct MergeArgs {
 /// command line they are flags.
 fn as_flag(e: asperity::Error) -> asperity::Error {
     match e.field() {
-        Some(f @ ("vary" | "log" | "samples" | "seed" | "shard" | "threads" | "out")) => {
+        Some(
+            f @ ("vary" | "log" | "samples" | "seed" | "shard" | "shard-from-env" | "threads"
+            | "out"),
+        ) => {
             let flag = format!("--{f}");
             e.renamed(&flag)
         }
@@ -78,12 +86,15 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
         log: args.log,
         seed: args.seed,
     };
-    let shard = args
-        .shard
-        .as_deref()
-        .map(Shard::parse)
-        .transpose()
-        .map_err(as_flag)?;
+    let shard = if args.shard_from_env {
+        Some(Shard::from_slurm(|name| std::env::var(name).ok()).map_err(as_flag)?)
+    } else {
+        args.shard
+            .as_deref()
+            .map(Shard::parse)
+            .transpose()
+            .map_err(as_flag)?
+    };
     if args.threads == Some(0) {
         return Err(CliError::Usage("--threads = 0: give at least 1".into()));
     }

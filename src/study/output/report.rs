@@ -231,7 +231,10 @@ fn features(out: &mut String, summary: &Summary) {
             "  heating            {}: contact voltage {}, peak temperature {} (bulk {:.2} K)",
             format::si(h.current_a, "A"),
             show(h.contact_voltage_v, "V"),
-            show(h.max_temperature_k, "K"),
+            match (h.contact_voltage_v, h.max_temperature_k) {
+                (Some(_), None) => "none (the spot melts)".to_string(),
+                (_, t) => show(t, "K"),
+            },
             h.bulk_temperature_k
         );
     }

@@ -268,7 +268,7 @@ impl Plan {
     }
 
     /// The closest separation (m): given, or solved from the maximum load on
-    /// approach ([`LoadingModel::separation_at_load`] to `rtol * sigma`).
+    /// approach ([`LoadingModel::separation_at_load`]: the load met to `rtol`).
     ///
     /// # Errors
     /// [`Error::Invalid`](crate::Error::Invalid) naming `program.max_load` when the load is not

@@ -7,6 +7,9 @@ use super::law_name::LawName;
 use super::schema::{ElectricalSpec, LawSpec, Scene, MAX_LISTED_STATES};
 use crate::axisym::Profile;
 use crate::axisym::{ProfileKind, ProfileParams};
+use crate::electrical::heating::{
+    DEFAULT_BULK_TEMPERATURE, GOLD_MELTING_TEMPERATURE, GOLD_SOFTENING_TEMPERATURE,
+};
 use crate::electrical::{Conductor, Heating, Interaction, SpotResistance, Switch};
 use crate::error::{finite, positive, Allowed, Error, Result};
 use crate::material::plastic::Plasticity;
@@ -312,27 +315,39 @@ impl ElectricalSpec {
     /// The current (A) and the heating relation, when `current` is given.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] naming `electrical.current` or
-    /// `electrical.bulk_temperature`; [`Error::Invalid`] naming
-    /// `electrical.bulk_temperature` given without a current.
+    /// [`Error::OutOfRange`] naming `electrical.current`,
+    /// `electrical.bulk_temperature`, `electrical.softening_temperature` or
+    /// `electrical.melting_temperature`; [`Error::Invalid`] naming one of
+    /// the temperatures given without a current.
     pub fn heating(&self) -> Result<Option<(f64, Heating)>> {
-        match (self.current, self.bulk_temperature) {
-            (Some(i), t) => {
-                // Beyond a megaampere no contact spot carries the current.
-                Allowed::open_closed(0.0, MAX_CURRENT).check("electrical.current", i)?;
-                let h = match t {
-                    Some(t) => Heating::new(positive("electrical.bulk_temperature", t)?)
-                        .map_err(|e| e.renamed("electrical.bulk_temperature"))?,
-                    None => Heating::default(),
-                };
-                Ok(Some((i, h)))
+        let Some(i) = self.current else {
+            for (name, given) in [
+                ("electrical.bulk_temperature", self.bulk_temperature),
+                (
+                    "electrical.softening_temperature",
+                    self.softening_temperature,
+                ),
+                ("electrical.melting_temperature", self.melting_temperature),
+            ] {
+                if given.is_some() {
+                    return Err(Error::invalid(
+                        name,
+                        "applies only with electrical.current (the heating needs a current)",
+                    ));
+                }
             }
-            (None, Some(_)) => Err(Error::invalid(
-                "electrical.bulk_temperature",
-                "applies only with electrical.current (the heating needs a current)",
-            )),
-            (None, None) => Ok(None),
-        }
+            return Ok(None);
+        };
+        // Beyond a megaampere no contact spot carries the current.
+        Allowed::open_closed(0.0, MAX_CURRENT).check("electrical.current", i)?;
+        let h = Heating::for_metal(
+            self.bulk_temperature.unwrap_or(DEFAULT_BULK_TEMPERATURE),
+            self.softening_temperature
+                .unwrap_or(GOLD_SOFTENING_TEMPERATURE),
+            self.melting_temperature.unwrap_or(GOLD_MELTING_TEMPERATURE),
+        )
+        .map_err(|e| e.in_table("electrical"))?;
+        Ok(Some((i, h)))
     }
 
     /// The interaction choice.

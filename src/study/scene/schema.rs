@@ -94,9 +94,19 @@ pub struct ElectricalSpec {
     /// Wiedemann–Franz law).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub current: Option<f64>,
-    /// Bulk temperature (K), > 0, for the heating; default 293.15.
+    /// Bulk temperature (K), in (0, melting_temperature), for the heating;
+    /// default 293.15.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bulk_temperature: Option<f64>,
+    /// Softening temperature of the spots' metal (K), > 0; default gold's
+    /// 373.15 K (Holm): above it a warning says the spot softens.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub softening_temperature: Option<f64>,
+    /// Melting temperature of the spots' metal (K), > softening_temperature;
+    /// default gold's 1337.33 K: above it the spot melts, a warning says so
+    /// and no peak temperature is reported.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub melting_temperature: Option<f64>,
 }
 
 fn default_spreading() -> Spreading {

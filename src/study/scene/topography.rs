@@ -234,8 +234,10 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
     let map = read_map(&file)?
         .scaled(spec.height_scale)
         .map_err(|e| e.renamed("surface.height_scale"))?;
-    let topo =
-        Topography::new(map, spec.pixel_size).map_err(|e| e.renamed("surface.pixel_size"))?;
+    let topo = Topography::new(map, spec.pixel_size).map_err(|e| match e.field() {
+        Some("heights") => e.renamed("surface.height_scale"),
+        _ => e.renamed("surface.pixel_size"),
+    })?;
     let c = topo
         .characterise(spec.periodic)
         .map_err(|e| Error::invalid(FIELD, format!("{}: {e}", file.display())))?;

@@ -29,6 +29,11 @@ pub fn set_field(scene: &mut toml::Value, path: &str, value: f64) -> Result<()> 
         .as_table_mut()
         .ok_or_else(|| Error::invalid(path, "not inside a table"))?;
     match table.get(*key) {
+        // An absent key takes a whole value as an integer (a float field
+        // reads it too; an integer field reads nothing else).
+        None if value.fract() == 0.0 && value.abs() <= 9.0e15 => {
+            table.insert((*key).to_string(), toml::Value::Integer(value as i64));
+        }
         None | Some(toml::Value::Float(_)) => {
             table.insert((*key).to_string(), toml::Value::Float(value));
         }
@@ -67,6 +72,8 @@ mod tests {
         assert!(set_field(&mut v, "program.points", 2.5).is_err());
         set_field(&mut v, "program.start_separation", 1e-8).unwrap();
         assert_eq!(v["program"]["start_separation"].as_float(), Some(1e-8));
+        set_field(&mut v, "program.max_load", 2.0).unwrap();
+        assert_eq!(v["program"]["max_load"].as_integer(), Some(2));
         let e = set_field(&mut v, "program.name", 1.0).unwrap_err();
         assert_eq!(e.field(), Some("program.name"));
         let e = set_field(&mut v, "nosuch.sigma", 1.0).unwrap_err();

@@ -74,6 +74,45 @@ fn value(s: &Summary, c: &str) -> Option<f64> {
         .and_then(|(_, v)| v)
 }
 
+/// Most distinct values per varied field checked before the first point.
+const CHECKED_VALUES: usize = 4096;
+
+/// Fails early, before any point runs, on a bad path, a key the scene does
+/// not have (`surface.sigm`) or a value its field's type cannot hold (a
+/// fractional `montecarlo.summits`): every distinct value of each varied
+/// field (up to [`CHECKED_VALUES`]), the others at the first point's,
+/// deserialised into a scene. Values out of a field's range are left to
+/// the points (a sweep may cross a model's limits; those points fail).
+///
+/// # Errors
+/// [`Error::Invalid`] naming the varied path, the value and the reason.
+fn check_fields(base: &toml::Value, spec: &SweepSpec, points: &[SweepPoint]) -> Result<()> {
+    let Some(first) = points.first() else {
+        return Ok(());
+    };
+    for (d, v) in spec.vary.iter().enumerate() {
+        let mut seen = std::collections::HashSet::new();
+        for p in points {
+            let x = p.values[d];
+            if !seen.insert(x.to_bits()) {
+                continue;
+            }
+            if seen.len() > CHECKED_VALUES {
+                break;
+            }
+            let mut value = base.clone();
+            for (w, y) in spec.vary.iter().zip(&first.values) {
+                set_field(&mut value, &w.path, *y)?;
+            }
+            set_field(&mut value, &v.path, x)?;
+            Scene::deserialize(value).map_err(|e| {
+                Error::invalid(&v.path, format!("at {x:e}: {}", e.message().trim()))
+            })?;
+        }
+    }
+    Ok(())
+}
+
 /// Computes one point's row: `index, values.., seed, status, outputs..`.
 fn point_row(
     base: &toml::Value,
@@ -274,6 +313,8 @@ pub fn run_sweep(
     let paths: Vec<String> = spec.vary.iter().map(|v| v.path.clone()).collect();
     let header = results_header(&paths, &cols);
     let points = spec.points();
+    // Every distinct value of every varied field parses into the scene.
+    check_fields(&base_value, spec, &points)?;
     let meta = SweepMeta {
         scene: normalised,
         spec: spec.clone(),

@@ -271,6 +271,56 @@ impl Shard {
         Ok(Shard { k, n })
     }
 
+    /// The slice of a Slurm job array task from its environment (`get`
+    /// looks a variable up): `K = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN
+    /// + 1`, `N = SLURM_ARRAY_TASK_COUNT`, so arrays numbered from 0, 1 or
+    /// any start use every slice. Stepped (`--array=0-15:2`) or sparse
+    /// (`--array=1,3,8`) arrays are refused: their ids do not map onto
+    /// `1..=N`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `shard-from-env` when a variable is missing
+    /// or not an integer, or the array is stepped or sparse.
+    pub fn from_slurm(get: impl Fn(&str) -> Option<String>) -> Result<Shard> {
+        let var = |name: &str| -> Result<usize> {
+            let v = get(name).ok_or_else(|| {
+                Error::invalid(
+                    "shard-from-env",
+                    format!("{name} is not set (not a Slurm job array task?)"),
+                )
+            })?;
+            v.trim().parse().map_err(|_| {
+                Error::invalid(
+                    "shard-from-env",
+                    format!("{name} = {v:?} is not a non-negative integer"),
+                )
+            })
+        };
+        let (id, min, max, count) = (
+            var("SLURM_ARRAY_TASK_ID")?,
+            var("SLURM_ARRAY_TASK_MIN")?,
+            var("SLURM_ARRAY_TASK_MAX")?,
+            var("SLURM_ARRAY_TASK_COUNT")?,
+        );
+        let step = match get("SLURM_ARRAY_TASK_STEP") {
+            Some(_) => var("SLURM_ARRAY_TASK_STEP")?,
+            None => 1,
+        };
+        if step != 1 || max < min || max - min + 1 != count || id < min || id > max {
+            return Err(Error::invalid(
+                "shard-from-env",
+                format!(
+                    "array ids {min}..={max} step {step} with {count} tasks (this one {id}): \
+                     only contiguous arrays with step 1 map onto slices 1..=N; use --shard K/N"
+                ),
+            ));
+        }
+        Ok(Shard {
+            k: id - min + 1,
+            n: count,
+        })
+    }
+
     /// Whether point `index` belongs to this slice.
     pub fn contains(&self, index: usize) -> bool {
         index % self.n == self.k - 1
@@ -280,6 +330,40 @@ impl Shard {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `--array=1-16` with `$((SLURM_ARRAY_TASK_ID+1))/$SLURM_ARRAY_TASK_COUNT`
+    /// asked for shard 17/16 and left slice 1 undone; from the environment
+    /// the slices are 1..=16 whatever the array's first id.
+    #[test]
+    fn slurm_arrays_map_onto_every_slice() {
+        let env = |id: usize, min: usize, max: usize, step: Option<usize>| {
+            move |name: &str| match name {
+                "SLURM_ARRAY_TASK_ID" => Some(id.to_string()),
+                "SLURM_ARRAY_TASK_MIN" => Some(min.to_string()),
+                "SLURM_ARRAY_TASK_MAX" => Some(max.to_string()),
+                "SLURM_ARRAY_TASK_COUNT" => Some(((max - min) / step.unwrap_or(1) + 1).to_string()),
+                "SLURM_ARRAY_TASK_STEP" => step.map(|s| s.to_string()),
+                _ => None,
+            }
+        };
+        for min in [0, 1, 7] {
+            let ks: Vec<usize> = (min..min + 16)
+                .map(|id| Shard::from_slurm(env(id, min, min + 15, None)).unwrap().k)
+                .collect();
+            assert_eq!(ks, (1..=16).collect::<Vec<_>>());
+            assert_eq!(
+                Shard::from_slurm(env(min, min, min + 15, None)).unwrap().n,
+                16
+            );
+        }
+        let e = Shard::from_slurm(env(2, 0, 14, Some(2))).unwrap_err();
+        assert_eq!(e.field(), Some("shard-from-env"));
+        let e = Shard::from_slurm(|_: &str| None).unwrap_err();
+        assert!(
+            e.to_string().contains("SLURM_ARRAY_TASK_ID is not set"),
+            "{e}"
+        );
+    }
 
     #[test]
     fn vary_parses_and_rejects() {
