@@ -302,10 +302,14 @@ impl Plan {
             // The same surface model under an elastic sphere: every total
             // is over the bump, separations are remote.
             let sphere = sp.on(model)?;
-            let mut results = self.run_on(&sphere, run_law, t0, progress)?;
-            super::sphere::finish(self, &sphere, &mut results)?;
-            results.seconds = t0.elapsed().as_secs_f64();
-            return Ok(results);
+            let run = self
+                .run_on(&sphere, run_law, t0, progress)
+                .and_then(|mut results| {
+                    super::sphere::finish(self, &sphere, &mut results)?;
+                    results.seconds = t0.elapsed().as_secs_f64();
+                    Ok(results)
+                });
+            return run.map_err(|e| super::sphere::blame(self, e));
         }
         // A measured map with summits = "measured": the exact sum over its
         // summits replaces the integral.

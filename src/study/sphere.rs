@@ -140,3 +140,27 @@ fn set_resistance(plan: &Plan, res: &ResistanceObservables, rec: &mut Record) {
         );
     }
 }
+
+/// How many decades from typical an input must lie for a failed sphere
+/// run to be blamed on it.
+pub const BLAME_DECADES: f64 = 8.0;
+
+/// A failed rough-sphere run of a scene with an input
+/// [`BLAME_DECADES`] or more from a typical gold microswitch: bad input
+/// naming that input, with the failure (the solver cannot be expected to
+/// converge for, say, `adhesion.w = 1e300`); other failures pass
+/// unchanged.
+pub(super) fn blame(plan: &Plan, e: crate::Error) -> crate::Error {
+    let scene = &plan.scene;
+    let pick = crate::study::scene::most_extreme_input(scene, &[]);
+    if crate::study::scene::decades_from_typical(scene, pick) < BLAME_DECADES {
+        return e;
+    }
+    crate::Error::invalid(
+        pick,
+        format!(
+            "the rough sphere failed ({e}): {pick} is {:.0} decades from typical values",
+            crate::study::scene::decades_from_typical(scene, pick)
+        ),
+    )
+}

@@ -119,6 +119,18 @@ pub fn most_extreme_input(scene: &Scene, among: &[&str]) -> &'static str {
         .map_or("materials.e1", |x| x.0)
 }
 
+/// How far (in decades) `name`'s value lies from a typical gold microswitch
+/// ([`crate::material::gold`]); `inf` for a value that is not positive.
+pub fn decades_from_typical(scene: &Scene, name: &str) -> f64 {
+    let typical = TYPICAL.iter().find(|t| t.0 == name).map_or(1.0, |t| t.1);
+    let v = input(scene, name);
+    if v > 0.0 {
+        (v / typical).log10().abs()
+    } else {
+        f64::INFINITY
+    }
+}
+
 /// Maps an error about a derived quantity, which no scene key names (the
 /// Maugis `lambda` or Tabor `mu`, a start separation, a law not finite on
 /// the interferences reached), back to the scene input that drove it out of

@@ -15,8 +15,8 @@ mod schema;
 mod topography;
 
 pub use build::{
-    build_contact, build_distribution, build_surface, map_derived, most_extreme_input,
-    SPHERE_REFERENCE_AREA,
+    build_contact, build_distribution, build_surface, decades_from_typical, map_derived,
+    most_extreme_input, SPHERE_REFERENCE_AREA,
 };
 pub use features::ProgramTarget;
 pub use law_name::LawName;

@@ -231,6 +231,26 @@ fn costs(scene: &Scene) -> Result<()> {
             ),
         ));
     }
+    if let Some(sp) = &scene.sphere {
+        // The rough sphere's stiffness ratio within the solver's range.
+        let mu =
+            crate::roughsphere::units::greenwood_tripp_mu(s.density, s.sigma, sp.radius, s.radius);
+        let (lo, hi) = (crate::roughsphere::MIN_MU, crate::roughsphere::MAX_MU);
+        if !(lo..=hi).contains(&mu) {
+            let pick = super::build::most_extreme_input(
+                scene,
+                &["surface.density", "surface.radius", "surface.sigma"],
+            );
+            return Err(Error::invalid(
+                pick,
+                format!(
+                    "the rough sphere's Greenwood-Tripp mu = (8/3) eta sigma sqrt(2 R beta) = \
+                     {mu:e} (surface.density, surface.sigma, sphere.radius, surface.radius); \
+                     allowed [{lo:e}, {hi:e}]"
+                ),
+            ));
+        }
+    }
     let Some(mc) = &scene.montecarlo else {
         return Ok(());
     };
