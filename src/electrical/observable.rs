@@ -65,6 +65,21 @@ impl ResistanceObservables {
         }
     }
 
+    /// The same observables (the same slots of a computation's totals)
+    /// with Greenwood's interaction in a square of side `side` (m): a
+    /// rough sphere's bump gives each state its own equivalent square.
+    pub fn with_side(&self, side: f64) -> Self {
+        ResistanceObservables {
+            side,
+            ..self.clone()
+        }
+    }
+
+    /// The side (m) of the square apparent area of the interaction.
+    pub fn side(&self) -> f64 {
+        self.side
+    }
+
     /// `observables` plus the count and the two conductance sums.
     ///
     /// # Errors

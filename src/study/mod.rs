@@ -33,6 +33,7 @@ pub mod population;
 pub mod quantity;
 pub mod run;
 pub mod scene;
+mod sphere;
 pub mod sweep;
 pub mod validity;
 

@@ -110,6 +110,14 @@ pub fn measure(
             )
         });
     }
+    if plan.sphere.is_some() {
+        return Ok(ModelError::unmeasured(
+            "not measured on a rough sphere: the reference is the same program with the \
+             full-solver law, which here would repeat the whole sphere solve; the law's model \
+             error on the flat of the same surface (this scene without [sphere], with a \
+             surface.nominal_area) measures the law's share",
+        ));
+    }
     match plan.law.source {
         LawName::Calibrated => {
             return Ok(ModelError::unmeasured(

@@ -70,6 +70,10 @@ pub struct Results {
     pub pull_off_population: Option<super::population::PopulationResults>,
     /// The model error of the headline outputs on this surface.
     pub model_error: Option<super::model_error::ModelError>,
+    /// With `[sphere]`: the bump's state at the closest approach (contact
+    /// radius against Hertz's, approach, central deflection, mesh, model
+    /// warnings).
+    pub sphere: Option<crate::roughsphere::SphereState>,
 }
 
 /// The records of a curve's two legs.
@@ -216,6 +220,50 @@ impl Plan {
     }
 }
 
+impl Plan {
+    /// Contact-regime fractions of the summits at separation `separation`
+    /// (m, from the height origin), when the materials give a yield
+    /// strength (an elastic law: the Kogut–Etsion regimes as the
+    /// diagnostic).
+    pub fn regimes_at(&self, separation: f64) -> Option<RegimeFractions> {
+        let p = self.plasticity?;
+        let variant = match self.law.source {
+            LawName::Plastic(v) => v,
+            _ => Variant::KogutEtsion,
+        };
+        let limits = RegimeLimits::new(
+            variant,
+            &p,
+            self.contact.radius,
+            self.contact.contact_modulus,
+        );
+        Some(contact_fractions(
+            &limits,
+            self.surface.sigma,
+            separation,
+            self.distribution.as_ref(),
+        ))
+    }
+
+    /// For an elastic-plastic law, the elastic law it reduces to as
+    /// `psi -> 0` (JKR with adhesion, Hertz without), for the load–area
+    /// comparison; `None` for other laws.
+    ///
+    /// # Errors
+    /// As [`LawKind::build`].
+    pub fn elastic_law(&self) -> Result<Option<Arc<dyn AsperityLaw>>> {
+        if !matches!(self.law.source, LawName::Plastic(_)) {
+            return Ok(None);
+        }
+        let kind = if self.contact.adhesion.work() > 0.0 {
+            LawKind::Jkr
+        } else {
+            LawKind::Hertz
+        };
+        Ok(Some(Arc::from(kind.build(&self.contact)?)))
+    }
+}
+
 impl Results {
     /// Largest approach load (N) of the curve, if loads were computed.
     pub fn max_load(&self) -> Option<f64> {
@@ -253,6 +301,19 @@ impl Plan {
         let t0 = Instant::now();
         let run_law = self.run_law()?;
         let model = self.model_with(run_law.clone())?;
+        if let Some(sp) = &self.sphere {
+            // The same surface model under an elastic sphere: every total
+            // is over the bump, separations are remote.
+            let sphere = sp.on(model)?;
+            let run = self
+                .run_on(&sphere, run_law, t0, progress)
+                .and_then(|mut results| {
+                    super::sphere::finish(self, &sphere, &mut results)?;
+                    results.seconds = t0.elapsed().as_secs_f64();
+                    Ok(results)
+                });
+            return run.map_err(|e| super::sphere::blame(self, e));
+        }
         // A measured map with summits = "measured": the exact sum over its
         // summits replaces the integral.
         let mut results = match super::measured::main_model(self)? {
@@ -371,6 +432,7 @@ impl Plan {
             topography: None,
             pull_off_population,
             model_error: Some(model_error),
+            sphere: None,
         })
         .and_then(|r| self.finish(model, r))
     }
@@ -443,44 +505,21 @@ impl Plan {
         };
         r.listed = listed.records(&model.states(&steps, listed.observables())?);
         r.warnings.extend(self.heating_warning(&r, &listed)?);
-        let closest = r.curve.program.closest;
-        if let Some(p) = self.plasticity {
-            // An elastic law: the Kogut–Etsion regimes as the diagnostic.
-            let variant = match self.law.source {
-                LawName::Plastic(v) => v,
-                _ => Variant::KogutEtsion,
-            };
-            let limits = RegimeLimits::new(
-                variant,
-                &p,
-                self.contact.radius,
-                self.contact.contact_modulus,
-            );
-            r.regimes = Some(contact_fractions(
-                &limits,
-                self.surface.sigma,
-                closest,
-                self.distribution.as_ref(),
-            ));
-        }
-        if matches!(self.law.source, LawName::Plastic(_)) {
-            // The elastic law the plastic one reduces to as psi -> 0: JKR
-            // with adhesion, Hertz without.
-            let kind = if self.contact.adhesion.work() > 0.0 {
-                LawKind::Jkr
-            } else {
-                LawKind::Hertz
-            };
-            let law: Arc<dyn AsperityLaw> = Arc::from(kind.build(&self.contact)?);
-            let elastic = self.model_with(law)?;
-            let steps: Vec<(f64, History)> = r
-                .curve
-                .approach
-                .iter()
-                .map(|s| (s.separation, History::Approach))
-                .collect();
-            r.elastic_approach =
-                Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
+        if self.sphere.is_none() {
+            // (a rough sphere's are at the centre of its bump and on the
+            // same sphere: `study::sphere`)
+            r.regimes = self.regimes_at(r.curve.program.closest);
+            if let Some(law) = self.elastic_law()? {
+                let elastic = self.model_with(law)?;
+                let steps: Vec<(f64, History)> = r
+                    .curve
+                    .approach
+                    .iter()
+                    .map(|s| (s.separation, History::Approach))
+                    .collect();
+                r.elastic_approach =
+                    Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
+            }
         }
         if let Some(sw) = &self.switch {
             // The populations' pull-offs when there are any: a switch is one

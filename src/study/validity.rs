@@ -89,6 +89,13 @@ pub fn plan_warnings(plan: &Plan) -> Result<Vec<String>> {
         Target::Load(_) => f64::INFINITY,
     };
     for f in model(plan)?.findings_at(closest) {
+        // Under a rough sphere the surface has no nominal area (no fixed
+        // set of summits whose highest could be judged) and the program's
+        // separations are remote: only eta R sigma applies; the sphere
+        // judges its own local gaps (`study::sphere`).
+        if plan.sphere.is_some() && !matches!(f, Finding::EtaRSigma { .. }) {
+            continue;
+        }
         judge(plan, f, &mut warnings)?;
     }
     Ok(warnings)
@@ -129,7 +136,17 @@ pub fn run_warnings(
     }
     let model = model(plan)?;
     let mut findings = Vec::new();
-    if let Target::Load(_) = plan.target {
+    if plan.sphere.is_some() {
+        // A rough sphere: the real area against its own apparent area and
+        // its local gaps are judged by the sphere (`study::sphere`); the
+        // program's resolution applies as on a flat.
+        findings.extend(
+            model
+                .findings_of(curve)
+                .into_iter()
+                .filter(|f| matches!(f, Finding::Resolution { .. })),
+        );
+    } else if let Target::Load(_) = plan.target {
         findings.extend(
             model
                 .findings_at(curve.program.closest)
@@ -137,7 +154,9 @@ pub fn run_warnings(
                 .filter(|f| !matches!(f, Finding::EtaRSigma { .. })),
         );
     }
-    findings.extend(model.findings_of(curve));
+    if plan.sphere.is_none() {
+        findings.extend(model.findings_of(curve));
+    }
     for f in findings {
         judge(plan, f, &mut warnings)?;
     }

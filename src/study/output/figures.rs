@@ -86,7 +86,7 @@ fn summary_values(s: &Summary) -> Vec<(String, Option<f64>)> {
         ("tabor_mu".into(), s.tabor_mu),
         ("maugis_lambda".into(), s.maugis_lambda),
         ("contact_modulus".into(), Some(s.contact_modulus)),
-        ("summits".into(), Some(s.summits)),
+        ("summits".into(), s.summits),
         ("start_separation".into(), Some(s.start_separation)),
         ("closest_separation".into(), Some(s.closest_separation)),
     ];

@@ -25,13 +25,29 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
     let num = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.4}"));
     let _ = writeln!(
         out,
-        "{} — law {}, mu = {}, lambda = {}, {} summits",
+        "{} — law {}, mu = {}, lambda = {}, {}",
         summary.title.as_deref().unwrap_or("scene"),
         summary.law,
         num(summary.tabor_mu),
         num(summary.maugis_lambda),
-        summary.summits
+        match (summary.summits, &plan.sphere) {
+            (_, Some(s)) => format!("rough sphere R = {:e} m", s.radius),
+            (Some(n), None) => format!("{n} summits"),
+            (None, None) => "- summits".into(),
+        }
     );
+    if let Some(s) = &summary.rough_sphere {
+        let _ = writeln!(
+            out,
+            "  bump at the closest approach: load {}, radius holding 95 % of the load {} \
+             (Hertz {}), approach {}, contacts {}",
+            show(Some(s.load.value), "N"),
+            show(s.radius_95.map(|e| e.value), "m"),
+            show(s.hertz_radius_95, "m"),
+            show(Some(s.approach.value), "m"),
+            num(s.contacts.map(|e| e.value))
+        );
+    }
     let _ = writeln!(
         out,
         "  separations {:.3e} .. {:.3e} m, {} points per leg, rtol {:e}",

@@ -22,8 +22,9 @@ pub struct Summary {
     pub maugis_lambda: Option<f64>,
     /// Contact modulus `E*` (Pa).
     pub contact_modulus: f64,
-    /// Number of summits `eta A_n`.
-    pub summits: f64,
+    /// Number of summits `eta A_n` (`null` for a rough sphere: no nominal
+    /// area; its contacts are in `rough_sphere` and the states).
+    pub summits: Option<f64>,
     /// Separation where the program started and ended (m).
     pub start_separation: f64,
     /// Closest separation reached (m).
@@ -85,6 +86,14 @@ pub struct Summary {
     /// Absent without a map.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub topography: Option<TopographySummary>,
+    /// With `[sphere]`: the bump's state at the closest approach (remote
+    /// separation, approach, central deflection, load, the radius holding
+    /// 95 % of the load against Hertz's, real area, contacts, resistance
+    /// with the equivalent square of its interaction, outer mesh radius,
+    /// nodes, model and warnings; each estimate with its numerical error).
+    /// Absent without a sphere.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rough_sphere: Option<crate::roughsphere::SphereState>,
 }
 
 /// The model error of the headline outputs (relative: `(law -
@@ -323,7 +332,7 @@ impl Summary {
             tabor_mu: adhesive.then(|| plan.contact.tabor()),
             maugis_lambda: adhesive.then(|| plan.contact.lambda()),
             contact_modulus: plan.contact.contact_modulus,
-            summits: plan.surface.summits(),
+            summits: plan.sphere.is_none().then(|| plan.surface.summits()),
             start_separation: plan.start,
             closest_separation: results.curve.program.closest,
             points: plan.points,
@@ -387,6 +396,7 @@ impl Summary {
                 .cloned()
                 .collect(),
             topography: topography::summary(plan, results),
+            rough_sphere: results.sphere.clone(),
         }
     }
 

@@ -51,6 +51,13 @@ impl Plan {
             }
             None => None,
         };
+        let sphere = super::sphere::plan(
+            scene,
+            &surface,
+            contact.contact_modulus,
+            &budget,
+            &mut decisions,
+        )?;
         let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
         let (observables, accuracy) = outputs(scene, mode, &budget, &model, &law, &mut decisions)?;
         let resistance = resistance(scene, &surface, &mut decisions)?;
@@ -93,6 +100,7 @@ impl Plan {
             &surface,
             distribution.as_ref(),
             &law,
+            sphere.is_some(),
             &mut decisions,
         )?;
         let switch = match &scene.switch {
@@ -129,6 +137,7 @@ impl Plan {
             heating,
             warnings,
             topography,
+            sphere,
         })
     }
 }

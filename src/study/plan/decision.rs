@@ -184,6 +184,9 @@ pub enum Decision {
         greenwood: bool,
         /// Whether a film resistance is added.
         film: bool,
+        /// Over a rough sphere's bump (the interaction over its apparent
+        /// area, per state), not a square nominal area.
+        bump: bool,
     },
     /// The states listed in `[program]`.
     Listed {
@@ -202,6 +205,17 @@ pub enum Decision {
         draw: Option<crate::montecarlo::pull_off::Draw>,
         /// Why, in a sentence.
         why: String,
+    },
+    /// A rough sphere (`[sphere]`) on the scene's surface.
+    Sphere {
+        /// Sphere radius (m).
+        radius: f64,
+        /// Paraboloidal profile (else the exact sphere).
+        paraboloid: bool,
+        /// Greenwood–Tripp `mu`.
+        mu: f64,
+        /// The mesh extrapolation's relative tolerance on the load.
+        tolerance: f64,
     },
     /// Which model of a measured map (`[surface] topography`).
     Topography {
@@ -229,6 +243,7 @@ impl Decision {
             Decision::Listed { .. } => "listed states",
             Decision::Topography { .. } => "topography",
             Decision::PullOffPopulation { .. } => "pull-off spread",
+            Decision::Sphere { .. } => "rough sphere",
         }
     }
 
@@ -267,6 +282,7 @@ impl Decision {
                 format!("{count} {}", if *loads { "loads" } else { "separations" })
             }
             Decision::Topography { choice, .. } => choice.clone(),
+            Decision::Sphere { radius, .. } => format!("R = {radius:e} m"),
             Decision::PullOffPopulation { seeds, draw, .. } => match draw {
                 Some(crate::montecarlo::pull_off::Draw::Tail) => {
                     format!("{seeds} populations (tails)")
@@ -374,10 +390,15 @@ impl Decision {
                 }
             ),
             Decision::Resistance {
-                greenwood, film, ..
+                greenwood, film, bump, ..
             } => format!(
                 "each contact spot from the law's contact radius, summed in parallel{}{}",
-                if *greenwood {
+                if *greenwood && *bump {
+                    " plus Greenwood's mean-field interaction over the bump's apparent area, per \
+                     state: the spots' conductance-weighted mean inverse distance I from the \
+                     local GW state at every radius (the square of side c_sq/I has the same \
+                     interaction; left out where fewer than 2 contacts are expected)"
+                } else if *greenwood {
                     " plus Greenwood's mean-field interaction in the square apparent area (left out where fewer than 2 contacts are expected)"
                 } else {
                     " (independent spots, no interaction)"
@@ -391,6 +412,32 @@ impl Decision {
             ),
             Decision::Topography { why, .. } => why.clone(),
             Decision::PullOffPopulation { why, .. } => why.clone(),
+            Decision::Sphere {
+                paraboloid,
+                mu,
+                tolerance,
+                ..
+            } => format!(
+                "an elastic {} on the surface (Greenwood & Tripp 1967): the pressure at radius r \
+                 is the GW pressure of the local gap, which holds the sphere's shape and the \
+                 elastic displacement that pressure causes; the apparent area is the solution's \
+                 (surface.nominal_area is not used) and every total is over the bump; \
+                 separations are remote (minus the approach of distant points); Newton on \
+                 nested meshes, Richardson-extrapolated to {tolerance:e} of the load, outer \
+                 radius from the pressure's decay [Greenwood-Tripp mu = {mu:.4}: {}]",
+                if *paraboloid {
+                    "paraboloid r^2/(2R)"
+                } else {
+                    "sphere"
+                },
+                if *mu > 10.0 {
+                    "a stiff rough layer, Hertz-like at heavy loads"
+                } else if *mu < 0.1 {
+                    "a compliant rough layer, close to GW on a rigid sphere"
+                } else {
+                    "rough layer and bulk both deform"
+                }
+            ),
         }
     }
 }

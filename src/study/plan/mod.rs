@@ -35,6 +35,7 @@ mod outputs;
 pub mod population;
 mod preview;
 mod program;
+mod sphere;
 mod topography;
 
 pub use budget::{Budget, Share, START_TAIL_FRACTION, TABLE_TOLERANCE_FRACTION};
@@ -47,6 +48,7 @@ use outputs::{outputs, resistance};
 pub use preview::Preview;
 pub use program::start_of;
 use program::{program, tabulation};
+pub use sphere::SpherePlan;
 pub use topography::TopographyPlan;
 
 use crate::electrical::{Heating, ResistanceObservables, Switch};
@@ -156,6 +158,9 @@ pub struct Plan {
     pub warnings: Vec<String>,
     /// The measured map, when the scene has `[surface] topography`.
     pub topography: Option<TopographyPlan>,
+    /// The rough sphere, when the scene has `[sphere]`: every total is
+    /// then over the bump, and separations are remote.
+    pub sphere: Option<SpherePlan>,
 }
 
 impl Plan {

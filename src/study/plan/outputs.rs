@@ -9,6 +9,8 @@ use crate::loading::Observables;
 use crate::study::scene::Scene;
 
 /// The contact resistance's observables and decision, with `[electrical]`.
+/// On a rough sphere the interaction's square side is NaN here: the run
+/// gives each state the bump's own ([`crate::study::Plan::run`]).
 pub(super) fn resistance(
     scene: &Scene,
     surface: &RoughSurface,
@@ -23,12 +25,14 @@ pub(super) fn resistance(
         spreading: spot.spreading().name(),
         greenwood: interaction == Interaction::Greenwood,
         film: spot.has_film(),
+        bump: scene.sphere.is_some(),
     });
-    Ok(Some(ResistanceObservables::new(
-        spot,
-        interaction,
-        surface.nominal_area.sqrt(),
-    )))
+    let side = if scene.sphere.is_some() {
+        f64::NAN
+    } else {
+        surface.nominal_area.sqrt()
+    };
+    Ok(Some(ResistanceObservables::new(spot, interaction, side)))
 }
 
 /// The integration accuracy of `model`: the budget's tolerance, closed

@@ -40,6 +40,9 @@ pub enum NoPopulation {
     MeasuredSummits,
     /// `eta A_n` is below one summit or beyond what can be counted.
     NotFinite(f64),
+    /// A rough sphere (`[sphere]`): its summits are those of an apparent
+    /// area the solution sets, not a fixed population.
+    RoughSphere,
 }
 
 impl std::fmt::Display for NoPopulation {
@@ -58,6 +61,13 @@ impl std::fmt::Display for NoPopulation {
             NoPopulation::NotFinite(n) => {
                 write!(f, "eta A_n = {n:e} summits is no population to draw")
             }
+            NoPopulation::RoughSphere => write!(
+                f,
+                "a rough sphere: its summits are those of an apparent area the load sets (no \
+                 fixed population of eta A_n summits to redraw); the pull-off is the sphere's \
+                 own (the GW densities integrated over the bump), and [switch] uses it (basis \
+                 \"integral\")"
+            ),
         }
     }
 }
@@ -73,10 +83,13 @@ pub(super) fn plan(
     surface: &RoughSurface,
     distribution: &dyn HeightDistribution,
     law: &LawChoice,
+    sphere: bool,
     decisions: &mut Vec<Decision>,
 ) -> Result<std::result::Result<PopulationPlan, NoPopulation>> {
     let why = if !pull_off {
         Some(NoPopulation::NoPullOff)
+    } else if sphere {
+        Some(NoPopulation::RoughSphere)
     } else if !scene.outputs.pull_off_population {
         Some(NoPopulation::Off)
     } else if distribution.sample_points().is_some() {

@@ -28,6 +28,9 @@ pub fn build_contact(scene: &Scene) -> Result<AsperityContact> {
 /// The surface statistics. For `distribution = "empirical"` the height
 /// scale is the measured heights' standard deviation (divisor N), whatever
 /// `surface.sigma` says, and separations are measured from their mean.
+/// With `[sphere]` the nominal area is [`SPHERE_REFERENCE_AREA`]: the
+/// rough sphere integrates the surface's densities over its own apparent
+/// area, and nothing reads the placeholder as an area.
 ///
 /// # Errors
 /// Bad values, naming the scene field.
@@ -39,8 +42,19 @@ pub fn build_surface(scene: &Scene) -> Result<RoughSurface> {
             .std_m(),
         _ => s.sigma,
     };
-    RoughSurface::new(s.density, s.radius, sigma, s.nominal_area).map_err(|e| e.in_table("surface"))
+    let area = if scene.sphere.is_some() {
+        SPHERE_REFERENCE_AREA
+    } else {
+        s.nominal_area
+    };
+    RoughSurface::new(s.density, s.radius, sigma, area).map_err(|e| e.in_table("surface"))
 }
+
+/// The nominal area (m^2) of the surface model under a rough sphere: a
+/// unit reference area, so that the model's totals are densities per
+/// square metre (the sphere divides by it and integrates over its own
+/// apparent area; the value drops out of every output).
+pub const SPHERE_REFERENCE_AREA: f64 = 1.0;
 
 /// The standardised height distribution named by `surface.distribution`.
 ///
@@ -103,6 +117,18 @@ pub fn most_extreme_input(scene: &Scene, among: &[&str]) -> &'static str {
             d(x).total_cmp(&d(y))
         })
         .map_or("materials.e1", |x| x.0)
+}
+
+/// How far (in decades) `name`'s value lies from a typical gold microswitch
+/// ([`crate::material::gold`]); `inf` for a value that is not positive.
+pub fn decades_from_typical(scene: &Scene, name: &str) -> f64 {
+    let typical = TYPICAL.iter().find(|t| t.0 == name).map_or(1.0, |t| t.1);
+    let v = input(scene, name);
+    if v > 0.0 {
+        (v / typical).log10().abs()
+    } else {
+        f64::INFINITY
+    }
 }
 
 /// Maps an error about a derived quantity, which no scene key names (the

@@ -15,7 +15,8 @@ mod schema;
 mod topography;
 
 pub use build::{
-    build_contact, build_distribution, build_surface, map_derived, most_extreme_input,
+    build_contact, build_distribution, build_surface, decades_from_typical, map_derived,
+    most_extreme_input, SPHERE_REFERENCE_AREA,
 };
 pub use features::ProgramTarget;
 pub use law_name::LawName;
@@ -23,8 +24,8 @@ pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
 pub use schema::{
     AccuracySpec, AdhesionSpec, ElectricalSpec, LawSpec, MaterialsSpec, MonteCarloSpec,
-    OutputsSpec, ProgramSpec, Scene, SurfaceSpec, SwitchSpec, DEFAULT_POPULATIONS, DEFAULT_SEED,
-    MAX_LISTED_STATES, MAX_POPULATIONS,
+    OutputsSpec, ProgramSpec, Scene, SphereShape, SphereSpec, SurfaceSpec, SwitchSpec,
+    DEFAULT_POPULATIONS, DEFAULT_SEED, MAX_LISTED_STATES, MAX_POPULATIONS,
 };
 
 /// The reference scene of the tests and examples

@@ -35,7 +35,24 @@ impl Scene {
         nu.check("materials.nu1", m.nu1)?;
         nu.check("materials.nu2", m.nu2)?;
         let s = &self.surface;
-        super::topography::validate_surface(s)?;
+        super::topography::validate_surface(s, self.sphere.is_some())?;
+        if let Some(sp) = &self.sphere {
+            if sp.radius.is_nan() {
+                return Err(Error::invalid(
+                    "sphere.radius",
+                    "NaN; give the sphere radius (m)",
+                ));
+            }
+            Allowed::closed(MIN_LENGTH, MAX_LENGTH).check("sphere.radius", sp.radius)?;
+            if self.montecarlo.is_some() {
+                return Err(Error::invalid(
+                    "montecarlo",
+                    "not with [sphere]: an explicit population needs a nominal area, and a \
+                     rough sphere's apparent area is the solution's; remove [montecarlo] (the \
+                     flat scene without [sphere] draws one)",
+                ));
+            }
+        }
         distribution_parameters(s)?;
         non_negative("adhesion.w", self.adhesion.w)?;
         positive("adhesion.z0", self.adhesion.z0)?;
@@ -201,7 +218,9 @@ fn costs(scene: &Scene) -> Result<()> {
         Allowed::closed(MIN_LENGTH, MAX_LENGTH).check(name, x)?;
     }
     let summits = s.density * s.nominal_area;
-    if !measured && !(1.0..=MAX_SURFACE_SUMMITS).contains(&summits) {
+    // A rough sphere has no nominal area: its apparent area is the solution's.
+    let flat = !measured && scene.sphere.is_none();
+    if flat && !(1.0..=MAX_SURFACE_SUMMITS).contains(&summits) {
         let pick =
             super::build::most_extreme_input(scene, &["surface.density", "surface.nominal_area"]);
         return Err(Error::invalid(
@@ -211,6 +230,26 @@ fn costs(scene: &Scene) -> Result<()> {
                  [1, {MAX_SURFACE_SUMMITS:e}] (fewer than one summit is no rough surface)"
             ),
         ));
+    }
+    if let Some(sp) = &scene.sphere {
+        // The rough sphere's stiffness ratio within the solver's range.
+        let mu =
+            crate::roughsphere::units::greenwood_tripp_mu(s.density, s.sigma, sp.radius, s.radius);
+        let (lo, hi) = (crate::roughsphere::MIN_MU, crate::roughsphere::MAX_MU);
+        if !(lo..=hi).contains(&mu) {
+            let pick = super::build::most_extreme_input(
+                scene,
+                &["surface.density", "surface.radius", "surface.sigma"],
+            );
+            return Err(Error::invalid(
+                pick,
+                format!(
+                    "the rough sphere's Greenwood-Tripp mu = (8/3) eta sigma sqrt(2 R beta) = \
+                     {mu:e} (surface.density, surface.sigma, sphere.radius, surface.radius); \
+                     allowed [{lo:e}, {hi:e}]"
+                ),
+            ));
+        }
     }
     let Some(mc) = &scene.montecarlo else {
         return Ok(());

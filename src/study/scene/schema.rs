@@ -47,6 +47,38 @@ pub struct Scene {
     /// Optional switch: spring and travel, for the stiction margin.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub switch: Option<SwitchSpec>,
+    /// Optional rough sphere: the scene becomes an elastic sphere of this
+    /// radius on the surface (Greenwood & Tripp 1967; absent: a nominally
+    /// flat contact of area `surface.nominal_area`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sphere: Option<SphereSpec>,
+}
+
+/// `[sphere]`: an elastic sphere (or paraboloid) of radius `radius`
+/// pressed on the scene's rough surface (Greenwood & Tripp 1967; a switch's
+/// contact bump, an AFM colloidal probe). The apparent area is the
+/// solution's, so `surface.nominal_area` must not be given; separations are
+/// remote (minus the approach of distant points, as a machine controls
+/// them); every output is a total over the bump.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SphereSpec {
+    /// Sphere radius (m), in `[1e-15, 1]`.
+    pub radius: f64,
+    /// `"paraboloid"` (default: `r^2/(2R)`, Hertz and Greenwood & Tripp)
+    /// or `"sphere"` (`R - sqrt(R^2 - r^2)`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub profile: Option<SphereShape>,
+}
+
+/// The undeformed profile of `[sphere]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SphereShape {
+    /// `r^2/(2R)`.
+    Paraboloid,
+    /// `R - sqrt(R^2 - r^2)`.
+    Sphere,
 }
 
 /// `[electrical]`: constriction resistance of the contact spots
@@ -218,7 +250,9 @@ pub struct SurfaceSpec {
     #[serde(default = "default_distribution")]
     pub distribution: DistributionKind,
     /// Nominal area `A_n` (m^2), > 0. Required unless `topography` is
-    /// given (default then: the map's area, rows x cols x pixel_size^2).
+    /// given (default then: the map's area, rows x cols x pixel_size^2) or
+    /// the scene has `[sphere]` (then it must not be given: the bump's
+    /// apparent area is the solution's).
     #[serde(default = "unset", skip_serializing_if = "is_unset")]
     pub nominal_area: f64,
     /// Weibull shape `k` (> 0), for `distribution = "weibull"`.

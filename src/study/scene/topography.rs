@@ -109,11 +109,29 @@ impl TopographySpec {
 /// Checks the summit statistics of `[surface]`: given and positive without
 /// a topography; with one, `density`, `radius`, `sigma` and the
 /// distribution parameters not given, `nominal_area` positive if given.
+/// With `[sphere]` (`sphere`), `nominal_area` must not be given and a
+/// topography is refused.
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the missing or forbidden key,
 /// [`Error::OutOfRange`] naming a bad value.
-pub(super) fn validate_surface(s: &SurfaceSpec) -> Result<()> {
+pub(super) fn validate_surface(s: &SurfaceSpec, sphere: bool) -> Result<()> {
+    if sphere {
+        if s.topography.is_some() {
+            return Err(Error::invalid(
+                "surface.topography",
+                "not with [sphere]: a rough sphere stands on a statistical surface (density, \
+                 radius, sigma); run the map's moments as one (summits = \"moments\" gives them)",
+            ));
+        }
+        if !s.nominal_area.is_nan() {
+            return Err(Error::invalid(
+                "surface.nominal_area",
+                "not with [sphere]: the bump's apparent area is the solution's (Greenwood & \
+                 Tripp); remove it",
+            ));
+        }
+    }
     let stats = [
         ("surface.density", s.density),
         ("surface.radius", s.radius),
@@ -131,10 +149,8 @@ pub(super) fn validate_surface(s: &SurfaceSpec) -> Result<()> {
                 return Err(Error::invalid(name, "only with surface.topography"));
             }
         }
-        for (name, v) in stats
-            .into_iter()
-            .chain([("surface.nominal_area", s.nominal_area)])
-        {
+        let area = (!sphere).then_some(("surface.nominal_area", s.nominal_area));
+        for (name, v) in stats.into_iter().chain(area) {
             if v.is_nan() {
                 return Err(Error::invalid(
                     name,

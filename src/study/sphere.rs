@@ -1,0 +1,166 @@
+//! The run of a rough-sphere scene (`[sphere]`): what follows the curve
+//! on the bump rather than on a nominal area.
+//!
+//! - The state at the closest approach ([`SphereState`]: the radius holding
+//!   95 % of the load against Hertz's, the approach, the central
+//!   deflection, the mesh) with its model warnings.
+//! - Greenwood's interaction per state over the bump's apparent area: the
+//!   square of side `c_sq / I` (`I` the spots' conductance-weighted mean
+//!   inverse distance, [`crate::roughsphere::BumpResistance`]) replaces
+//!   the nominal area's square in the resistance, the contact voltage and
+//!   the temperature of every state.
+//! - The regime fractions at the centre of the bump (its closest local
+//!   gap), and the elastic law's approach states on the same sphere.
+
+use super::plan::Plan;
+use super::quantity::Record;
+use super::run::Results;
+use crate::electrical::{Interaction, ResistanceObservables};
+use crate::error::Result;
+use crate::loading::{History, LoadingModel, Observables};
+use crate::roughsphere::{BumpElectrics, RoughSphere, SphereQuery, SphereState};
+
+/// The bump's state at remote separation `separation` after `history`,
+/// with area, count and (with `[electrical]`) the resistance.
+fn state(
+    plan: &Plan,
+    sphere: &RoughSphere,
+    separation: f64,
+    history: History,
+) -> Result<SphereState> {
+    let query = SphereQuery {
+        area_and_count: true,
+        electrics: plan.resistance.as_ref().map(|r| BumpElectrics {
+            spot: *r.spot(),
+            interaction: r.interaction(),
+        }),
+        ..SphereQuery::default()
+    };
+    sphere.sphere_state(separation, history, &query)
+}
+
+/// Completes `r`, a run of `plan` on `sphere`.
+///
+/// # Errors
+/// As [`RoughSphere::sphere_state`].
+pub(super) fn finish(plan: &Plan, sphere: &RoughSphere, r: &mut Results) -> Result<()> {
+    let closest = state(plan, sphere, r.curve.program.closest, History::Approach)?;
+    r.warnings.extend(
+        closest
+            .warnings
+            .iter()
+            .map(|w| format!("rough sphere at the closest approach: {w}")),
+    );
+    r.regimes = plan.regimes_at(closest.central_separation);
+    if let Some(law) = plan.elastic_law()? {
+        let elastic = plan
+            .sphere
+            .as_ref()
+            .expect("a sphere plan")
+            .on(plan.model_with(law)?)?;
+        let steps: Vec<(f64, History)> = r
+            .curve
+            .approach
+            .iter()
+            .map(|s| (s.separation, History::Approach))
+            .collect();
+        r.elastic_approach =
+            Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
+    }
+    if let Some(res) = &plan.resistance {
+        if res.interaction() == Interaction::Greenwood {
+            bump_interaction(plan, sphere, res, r)?;
+        }
+    }
+    r.sphere = Some(closest);
+    Ok(())
+}
+
+/// Every record's resistance, voltage and temperature with the bump's own
+/// interaction square at that state.
+fn bump_interaction(
+    plan: &Plan,
+    sphere: &RoughSphere,
+    res: &ResistanceObservables,
+    r: &mut Results,
+) -> Result<()> {
+    let closest = r.curve.program.closest;
+    let retract = if plan.compute_retraction {
+        History::Retract { closest }
+    } else {
+        History::Approach
+    };
+    let legs: [(&mut Vec<Record>, History); 3] = [
+        (&mut r.records.approach, History::Approach),
+        (&mut r.records.retract, retract),
+        (&mut r.listed, History::Approach),
+    ];
+    for (records, history) in legs {
+        for rec in records.iter_mut() {
+            let h = match history {
+                // a retraction state at the closest separation is the
+                // deepest approach state
+                History::Retract { closest } if rec.state.separation <= closest => {
+                    History::Approach
+                }
+                h => h,
+            };
+            let side = state(plan, sphere, rec.state.separation, h)?
+                .resistance
+                .map_or(f64::NAN, |b| b.equivalent_square_side);
+            set_resistance(plan, &res.with_side(side), rec);
+        }
+    }
+    Ok(())
+}
+
+/// The record's resistance, contact voltage and peak temperature from its
+/// totals with `res`.
+fn set_resistance(plan: &Plan, res: &ResistanceObservables, rec: &mut Record) {
+    let q = &plan.quantities;
+    let ohm = res
+        .resistance(q.observables(), &rec.state.totals)
+        .map(|c| c.resistance)
+        .filter(|x| x.is_finite());
+    let mut set = |name: &str, v: Option<f64>| {
+        if let Some((i, _)) = q.find(name) {
+            rec.values[i] = v;
+        }
+    };
+    set("resistance", ohm);
+    if let Some((current, heating)) = plan.heating {
+        set(
+            "contact_voltage",
+            ohm.map(|x| current * x).filter(|x| x.is_finite()),
+        );
+        set(
+            "max_temperature",
+            ohm.and_then(|x| heating.max_temperature_at(current, x).ok())
+                .filter(|x| x.is_finite()),
+        );
+    }
+}
+
+/// How many decades from typical an input must lie for a failed sphere
+/// run to be blamed on it.
+pub const BLAME_DECADES: f64 = 8.0;
+
+/// A failed rough-sphere run of a scene with an input
+/// [`BLAME_DECADES`] or more from a typical gold microswitch: bad input
+/// naming that input, with the failure (the solver cannot be expected to
+/// converge for, say, `adhesion.w = 1e300`); other failures pass
+/// unchanged.
+pub(super) fn blame(plan: &Plan, e: crate::Error) -> crate::Error {
+    let scene = &plan.scene;
+    let pick = crate::study::scene::most_extreme_input(scene, &[]);
+    if crate::study::scene::decades_from_typical(scene, pick) < BLAME_DECADES {
+        return e;
+    }
+    crate::Error::invalid(
+        pick,
+        format!(
+            "the rough sphere failed ({e}): {pick} is {:.0} decades from typical values",
+            crate::study::scene::decades_from_typical(scene, pick)
+        ),
+    )
+}
