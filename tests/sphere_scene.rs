@@ -295,3 +295,30 @@ fn sphere_profile_matches_the_paraboloid_at_small_contact() {
     let (p1, p2) = (states(&s1.unwrap())[0].1, states(&s2.unwrap())[0].1);
     assert!((p1 - p2).abs() < 1e-3 * p1, "{p1} {p2}");
 }
+
+/// The bump's temperatures come from its per-state resistances (set after
+/// the run over the bump's apparent area): a current that melts the spots
+/// says so, with no temperature.
+#[test]
+fn a_melting_current_on_the_bump_is_a_warning() {
+    let text = std::fs::read_to_string(EXAMPLE).unwrap().replacen(
+        "[electrical]",
+        "[electrical]\ncurrent = 10.0",
+        1,
+    );
+    assert!(text.contains("current = 10.0"));
+    let (code, s, err) = run("melting", &text);
+    assert_eq!(code, 0, "{err}");
+    let s = s.unwrap();
+    let warnings = s["warnings"].to_string();
+    assert!(
+        warnings.contains("electrical.current = 1e1 A") && warnings.contains("melt"),
+        "{warnings}"
+    );
+    // 10 A through ~0.1 Ohm is ~1 V, beyond gold's melting voltage 0.43 V.
+    assert!(
+        s["heating"]["max_temperature_K"].is_null(),
+        "{}",
+        s["heating"]
+    );
+}

@@ -309,6 +309,8 @@ impl Plan {
                 .run_on(&sphere, run_law, t0, progress)
                 .and_then(|mut results| {
                     super::sphere::finish(self, &sphere, &mut results)?;
+                    let heating = self.heating_warning(&results, &self.listed_quantities()?)?;
+                    results.warnings.extend(heating);
                     results.seconds = t0.elapsed().as_secs_f64();
                     Ok(results)
                 });
@@ -478,16 +480,21 @@ impl Plan {
 
     /// The parts that follow from the curve: listed states, regime
     /// fractions, stiction, and their warnings.
-    fn finish<M: LoadingModel>(&self, model: &M, mut r: Results) -> Result<Results> {
-        // Listed states carry load, area and count whatever the curve does.
-        let listed = self.quantities.over(
+    /// The quantities of the listed states: load, area and count whatever
+    /// the curve carries.
+    fn listed_quantities(&self) -> Result<QuantitySet> {
+        self.quantities.over(
             self.quantities
                 .observables()
                 .clone()
                 .with(Observable::Load)?
                 .with(Observable::Area)?
                 .with(Observable::Count)?,
-        )?;
+        )
+    }
+
+    fn finish<M: LoadingModel>(&self, model: &M, mut r: Results) -> Result<Results> {
+        let listed = self.listed_quantities()?;
         let steps: Vec<(f64, History)> = match &self.listed {
             Some(ProgramTarget::Separations(xs)) => {
                 xs.iter().map(|&d| (d, History::Approach)).collect()
@@ -504,7 +511,11 @@ impl Plan {
             _ => Vec::new(),
         };
         r.listed = listed.records(&model.states(&steps, listed.observables())?);
-        r.warnings.extend(self.heating_warning(&r, &listed)?);
+        if self.sphere.is_none() {
+            // (a rough sphere's resistances, and so its temperatures, are
+            // set per state by `study::sphere::finish`, which runs after)
+            r.warnings.extend(self.heating_warning(&r, &listed)?);
+        }
         if self.sphere.is_none() {
             // (a rough sphere's are at the centre of its bump and on the
             // same sphere: `study::sphere`)

@@ -135,7 +135,8 @@ fn set_resistance(plan: &Plan, res: &ResistanceObservables, rec: &mut Record) {
         );
         set(
             "max_temperature",
-            ohm.and_then(|x| heating.max_temperature_at(current, x).ok())
+            // None once the spot melts (Holm's relation ends there).
+            ohm.and_then(|x| heating.peak_temperature((current * x).abs()).ok().flatten())
                 .filter(|x| x.is_finite()),
         );
     }
