@@ -41,8 +41,13 @@ def test_heating():
 
 
 def test_spots(tmp_path):
+    # 40 spots on a jittered 8 x 5 grid of 1.25 um x 2 um cells: radii
+    # below 0.2 um and jitter below 0.3 um keep them apart (overlapping
+    # spots are refused, naming the pair).
     rng = np.random.default_rng(3)
-    x, y = rng.uniform(0, 1e-5, 40), rng.uniform(0, 1e-5, 40)
+    gx, gy = np.meshgrid(np.arange(8) * 1.25e-6, np.arange(5) * 2e-6)
+    x = gx.ravel() + rng.uniform(-3e-7, 3e-7, 40)
+    y = gy.ravel() + rng.uniform(-3e-7, 3e-7, 40)
     r = rng.uniform(5e-8, 2e-7, 40)
     f = tmp_path / "spots.csv"
     f.write_text("x_m,y_m,radius_m\n" + "".join(f"{num(a)},{num(b)},{num(c)}\n" for a, b, c in zip(x, y, r)))
@@ -167,7 +172,14 @@ def test_sweep_where_every_point_fails_is_runtime_error_like_the_cli(tmp_path):
     scene = REPO / "examples" / "scenes" / "hertz-exponential.toml"
     from conftest import cli
 
+    # A bad path is bad input, refused before any point runs (exit 2 and
+    # ValueError, naming it); a sweep whose every point fails at run time
+    # is exit 1 and RuntimeError.
     r = cli("sweep", scene, "--vary", "surface.nonsense=1:2:2", "--out", tmp_path / "sw", check=False)
-    assert r.returncode == 1 and "every one of the 2 points failed" in r.stderr
-    with pytest.raises(RuntimeError, match=r"every one of the 2 points failed .*nonsense"):
+    assert r.returncode == 2 and "surface.nonsense" in r.stderr
+    with pytest.raises(ValueError, match=r"surface\.nonsense"):
         asperity.sweep(scene, {"surface.nonsense": [1.0, 2.0]})
+    r = cli("sweep", scene, "--vary", "surface.sigma=1:2:2", "--out", tmp_path / "sw2", check=False)
+    assert r.returncode == 1 and "every one of the 2 points failed" in r.stderr
+    with pytest.raises(RuntimeError, match=r"every one of the 2 points failed"):
+        asperity.sweep(scene, {"surface.sigma": [1.0, 2.0]})

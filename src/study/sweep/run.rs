@@ -86,11 +86,11 @@ const CHECKED_VALUES: usize = 4096;
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the varied path, the value and the reason.
-fn check_fields(base: &toml::Value, spec: &SweepSpec, points: &[SweepPoint]) -> Result<()> {
+fn check_fields(base: &toml::Value, paths: &[String], points: &[SweepPoint]) -> Result<()> {
     let Some(first) = points.first() else {
         return Ok(());
     };
-    for (d, v) in spec.vary.iter().enumerate() {
+    for (d, path) in paths.iter().enumerate() {
         let mut seen = std::collections::HashSet::new();
         for p in points {
             let x = p.values[d];
@@ -101,13 +101,12 @@ fn check_fields(base: &toml::Value, spec: &SweepSpec, points: &[SweepPoint]) -> 
                 break;
             }
             let mut value = base.clone();
-            for (w, y) in spec.vary.iter().zip(&first.values) {
-                set_field(&mut value, &w.path, *y)?;
+            for (w, y) in paths.iter().zip(&first.values) {
+                set_field(&mut value, w, *y)?;
             }
-            set_field(&mut value, &v.path, x)?;
-            Scene::deserialize(value).map_err(|e| {
-                Error::invalid(&v.path, format!("at {x:e}: {}", e.message().trim()))
-            })?;
+            set_field(&mut value, path, x)?;
+            Scene::deserialize(value)
+                .map_err(|e| Error::invalid(path, format!("at {x:e}: {}", e.message().trim())))?;
         }
     }
     Ok(())
@@ -263,6 +262,8 @@ pub fn sweep_table(
             }
         })
         .collect();
+    // As `asperity sweep`: a bad path or value fails before any point runs.
+    check_fields(&base_value, &paths, &points)?;
     let work = || -> Vec<String> {
         points
             .par_iter()
@@ -314,7 +315,8 @@ pub fn run_sweep(
     let header = results_header(&paths, &cols);
     let points = spec.points();
     // Every distinct value of every varied field parses into the scene.
-    check_fields(&base_value, spec, &points)?;
+    let varied: Vec<String> = spec.vary.iter().map(|v| v.path.clone()).collect();
+    check_fields(&base_value, &varied, &points)?;
     let meta = SweepMeta {
         scene: normalised,
         spec: spec.clone(),
