@@ -61,6 +61,14 @@ impl AsperityLaw for Dmt {
         "dmt"
     }
 
+    /// `-2 pi w R` at `delta = 0`; Hertz's rise above, free below.
+    fn retraction_minimum(&self, _delta_max: f64) -> Option<super::RetractionMinimum> {
+        Some(super::RetractionMinimum {
+            interference: 0.0,
+            load: -2.0 * self.scales.load,
+        })
+    }
+
     #[inline]
     fn state(&self, delta: f64, _branch: Branch) -> ContactState {
         if delta >= 0.0 {

@@ -67,6 +67,11 @@ impl AsperityLaw for Hertz {
         "hertz"
     }
 
+    /// The load rises with the interference, zero out of contact.
+    fn retraction_minimum(&self, _delta_max: f64) -> Option<super::RetractionMinimum> {
+        Some(super::RetractionMinimum::MONOTONE)
+    }
+
     #[inline]
     fn state(&self, delta: f64, _branch: Branch) -> ContactState {
         ContactState {

@@ -288,6 +288,20 @@ impl AsperityLaw for Jkr {
         "jkr"
     }
 
+    /// The stable branch's load falls to `-(3/2) pi w R` (load-controlled
+    /// pull-off), then rises to the jump-out; a summit that never touched
+    /// stays free.
+    fn retraction_minimum(&self, delta_max: f64) -> Option<super::RetractionMinimum> {
+        if delta_max < self.attach_interference() {
+            return Some(super::RetractionMinimum::MONOTONE);
+        }
+        let p = self.pull_off(Control::Load)?;
+        Some(super::RetractionMinimum {
+            interference: p.interference,
+            load: p.load,
+        })
+    }
+
     #[inline]
     fn state(&self, delta: f64, branch: Branch) -> ContactState {
         match branch {

@@ -36,6 +36,7 @@ pub mod jkr;
 mod kind;
 pub mod maugis;
 pub mod plastic;
+pub mod retraction;
 mod scaling;
 pub mod shaped;
 pub mod tabulated;
@@ -48,6 +49,7 @@ pub use hertz::Hertz;
 pub use jkr::Jkr;
 pub use kind::{LawInputs, LawKind, TABULATE_ABOVE_NS};
 pub use maugis::{Maugis, MaugisCurve};
+pub use retraction::RetractionMinimum;
 pub use scaling::RadiusScaling;
 pub use shaped::Shaped;
 pub use tabulated::Tabulated;
@@ -274,6 +276,19 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     /// asperity's maximum interference. Default `false`.
     fn remembers_maximum(&self) -> bool {
         false
+    }
+
+    /// The most tensile point of the retraction curve
+    /// `state_after(delta, delta_max).load` over `delta <= delta_max`
+    /// (`delta_max` in m), for laws whose retraction load is unimodal in
+    /// the interference ([`RetractionMinimum`]); sums over many separations
+    /// then bound the load between two separations from its values at
+    /// them. Default `None` (shape not known: every separation is
+    /// evaluated). Checked for each law that answers by
+    /// `tests/retraction_minimum.rs` on dense grids.
+    fn retraction_minimum(&self, delta_max: f64) -> Option<RetractionMinimum> {
+        let _ = delta_max;
+        None
     }
 
     /// Values of `delta_max` at which [`state_after`](AsperityLaw::state_after)

@@ -55,7 +55,7 @@ pub use comparison::{contacts_of, Comparison, MIN_SUMMITS_FOR_Z};
 pub use measured::MeasuredSummits;
 pub use population::{Population, PopulationSpec, Radii, RadiusSpec, MAX_SUMMITS, SAMPLING_BLOCK};
 pub use scaling::{SummitLaw, TABLE_TOLERANCE_FRACTION};
-pub use summation::{MonteCarlo, CHUNK, LANES, SERIAL_BELOW, SUM_BLOCK};
+pub use summation::{MonteCarlo, RetractionBounds, CHUNK, LANES, SERIAL_BELOW, SUM_BLOCK};
 
 #[cfg(test)]
 mod tests;

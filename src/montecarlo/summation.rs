@@ -39,6 +39,9 @@ use crate::loading::{
     History, LoadingModel, MethodUsed, Observables, State, Totals, EXTRA_SLOTS, SLOTS,
 };
 use rayon::prelude::*;
+
+mod bounds;
+pub use bounds::RetractionBounds;
 use std::f64::consts::PI;
 use std::sync::Arc;
 

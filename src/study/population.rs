@@ -8,7 +8,8 @@ use crate::error::Result;
 use crate::law::AsperityLaw;
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables, PullOff};
 use crate::montecarlo::pull_off::{
-    population_model, pull_off_populations, retraction_loads, Draw, PullOffStatistics,
+    candidate_separations, population_model, pull_off_populations, retraction_loads_at, Draw,
+    PullOffStatistics,
 };
 use crate::montecarlo::{RadiusSpec, SummitLaw};
 use std::sync::Arc;
@@ -16,6 +17,10 @@ use std::time::Instant;
 
 /// Populations whose retraction curves the charts draw.
 pub const EXAMPLE_CURVES: usize = 3;
+
+/// The example curves are drawn at every this many program separations
+/// (and wherever the pull-off can lie).
+pub const EXAMPLE_STRIDE: usize = 4;
 
 /// Fewest populations drawn when the cost bound cuts their number.
 pub const MIN_POPULATIONS: usize = 20;
@@ -172,7 +177,19 @@ pub fn run(
             seed,
             p.draw,
         )?;
-        let curve = retraction_loads(&mc, program, p.factor)?;
+        // Drawn at every EXAMPLE_STRIDE-th separation and wherever the
+        // minimum can lie: the pull-off is the least of these loads, as
+        // `realised_pull_off` finds it.
+        let candidates = candidate_separations(&mc, program);
+        let all = program.separations();
+        let last = all.len() - 1;
+        let shown_at: Vec<f64> = all
+            .iter()
+            .enumerate()
+            .filter(|&(i, d)| i % EXAMPLE_STRIDE == 0 || i == last || candidates.contains(d))
+            .map(|(_, &d)| d)
+            .collect();
+        let curve = retraction_loads_at(&mc, program, &shown_at, p.factor)?;
         values.push(curve.iter().fold(0.0f64, |m, &(_, load)| m.min(load)));
         out.examples.push((seed, curve));
     }

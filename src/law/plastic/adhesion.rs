@@ -195,6 +195,20 @@ impl AsperityLaw for AdhesivePlastic {
         true
     }
 
+    /// JKR on the flattened shape: the load-controlled pull-off after
+    /// `delta_max` ([`AdhesivePlastic::pull_off_after`]); a summit that
+    /// never touched stays free.
+    fn retraction_minimum(&self, delta_max: f64) -> Option<crate::law::RetractionMinimum> {
+        if delta_max < 0.0 {
+            return Some(crate::law::RetractionMinimum::MONOTONE);
+        }
+        let p = self.pull_off_after(delta_max, Control::Load);
+        Some(crate::law::RetractionMinimum {
+            interference: p.interference,
+            load: p.load,
+        })
+    }
+
     fn attach_interference(&self) -> f64 {
         0.0
     }

@@ -1,0 +1,102 @@
+//! Lower bounds of a population's retraction load between separations,
+//! from its loads at them: what lets a pull-off search skip separations
+//! that cannot hold the most tensile load.
+//!
+//! On retraction every summit's load is a unimodal function of its
+//! interference when the law says so
+//! ([`AsperityLaw::retraction_minimum`](crate::law::AsperityLaw::retraction_minimum)):
+//! its least value between two separations is its load at one of them, or
+//! its own most tensile load when that lies between
+//! ([`RetractionMinimum::window_minimum`](crate::law::RetractionMinimum::window_minimum)).
+//! Summed over the summits, these are rigorous lower bounds of the
+//! population's load anywhere between the two separations.
+
+use super::{MonteCarlo, CHUNK};
+
+/// Loads of a population at a few separations on retraction, and lower
+/// bounds of its load between consecutive ones.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RetractionBounds {
+    /// Load (N) at each separation (summed per summit, in another order
+    /// than [`MonteCarlo::states`]: equal to it within roundoff).
+    pub loads: Vec<f64>,
+    /// Lower bound (N) of the load between separations `k` and `k + 1`.
+    pub lower: Vec<f64>,
+    /// Largest sum of absolute per-summit terms (N) behind any of these:
+    /// their roundoff is a tiny fraction of it.
+    pub magnitude: f64,
+}
+
+impl MonteCarlo {
+    /// [`RetractionBounds`] at `separations` (m, ascending, at least two)
+    /// on retraction after the flat came to `closest` (m); `None` when the
+    /// law does not say its retraction curves are unimodal.
+    pub fn retraction_bounds(&self, separations: &[f64], closest: f64) -> Option<RetractionBounds> {
+        let k = separations.len();
+        if k < 2 {
+            return None;
+        }
+        let law = self.law.law();
+        let n = self.population.len();
+        let firsts: Vec<usize> = separations
+            .iter()
+            .map(|&d| self.first_in_range(d))
+            .collect();
+        let start = firsts.iter().copied().min().unwrap_or(n);
+        let z = self.population.heights();
+        let reversible = law.reversible();
+        let mut out = RetractionBounds {
+            loads: vec![0.0; k],
+            lower: vec![0.0; k - 1],
+            magnitude: 0.0,
+        };
+        let mut abs = vec![0.0; k];
+        let (mut delta, mut load) = (vec![0.0; k * CHUNK], vec![0.0; k * CHUNK]);
+        let (mut delta_max, mut radius) = ([0.0; CHUNK], [0.0; CHUNK]);
+        let mut a = start;
+        while a < n {
+            let m = CHUNK.min(n - a);
+            let zc = &z[a..a + m];
+            let f = self.chunk_factors(a, m);
+            f.interferences(zc, closest, &mut delta_max[..m]);
+            for (s, &d) in separations.iter().enumerate() {
+                let (dl, ll) = (
+                    &mut delta[s * CHUNK..s * CHUNK + m],
+                    &mut load[s * CHUNK..s * CHUNK + m],
+                );
+                f.interferences(zc, d, dl);
+                law.state_batch(
+                    dl,
+                    (!reversible).then_some(&delta_max[..m]),
+                    ll,
+                    &mut radius[..m],
+                );
+                f.scale(ll, &mut radius[..m]);
+                // Summits out of the law's reach add nothing to the sums.
+                let skip = firsts[s].saturating_sub(a).min(m);
+                ll[..skip].fill(0.0);
+                for &l in ll.iter() {
+                    out.loads[s] += l;
+                    abs[s] += l.abs();
+                }
+            }
+            for i in 0..m {
+                let rm = law.retraction_minimum(delta_max[i])?;
+                let [_, load_factor, _] = f.at(i);
+                let rm = crate::law::RetractionMinimum {
+                    load: rm.load * load_factor,
+                    ..rm
+                };
+                for j in 0..k - 1 {
+                    // Interferences fall as the separation grows.
+                    let (hi, lo) = (delta[j * CHUNK + i], delta[(j + 1) * CHUNK + i]);
+                    let (at_hi, at_lo) = (load[j * CHUNK + i], load[(j + 1) * CHUNK + i]);
+                    out.lower[j] += rm.window_minimum(lo, at_lo, hi, at_hi);
+                }
+            }
+            a += m;
+        }
+        out.magnitude = abs.iter().copied().fold(0.0, f64::max);
+        Some(out)
+    }
+}

@@ -1,0 +1,173 @@
+//! The laws that call their retraction curves unimodal
+//! (`AsperityLaw::retraction_minimum`) are checked on dense grids, and the
+//! pull-off search that prunes separations with it finds exactly the
+//! minimum of the full retraction curve (same bits), seed by seed.
+//!
+//! Unimodal: after `delta_max`, the load is non-increasing in the
+//! interference below `delta_p` and non-decreasing above it, with
+//! `f(delta_p)` its least value. On a grid of 4001 interferences from far
+//! out of contact up to `delta_max`, every sample must obey both
+//! monotonicities (to roundoff: 1e-12 of the largest load on the grid),
+//! and no sample may fall below the stated minimum.
+
+use asperity::heights::Gaussian;
+use asperity::law::{AsperityLaw, Dmt, Hertz, Jkr, RetractionMinimum};
+use asperity::loading::{LoadingModel, LoadingProgram, Observables};
+use asperity::montecarlo::pull_off::{candidate_separations, realised_pull_off};
+use asperity::montecarlo::{MonteCarlo, Population, PopulationSpec, RadiusSpec, SummitLaw};
+use asperity::prelude::{build_plastic, AdhesivePlastic, Plasticity, Variant};
+use asperity::sphere::{Shape, SolverOptions, SphereProblem};
+use asperity::study::cache::CalibrationCache;
+use std::sync::Arc;
+
+const R: f64 = 1e-6;
+const E_STAR: f64 = 4.8e10;
+const W: f64 = 0.5;
+
+fn adhesive_plastic(v: Variant) -> Arc<dyn AsperityLaw> {
+    let law = build_plastic(v, R, E_STAR, Plasticity::gold()).unwrap();
+    Arc::new(AdhesivePlastic::new(law.as_loading(), W).unwrap())
+}
+
+fn plastic(v: Variant) -> Arc<dyn AsperityLaw> {
+    build_plastic(v, R, E_STAR, Plasticity::gold())
+        .unwrap()
+        .as_law()
+}
+
+/// Calibrated (full Lennard-Jones solver) laws, coarse tables: one
+/// without hysteresis (mu = 0.5) and two with it.
+fn calibrated() -> Vec<(String, Arc<dyn AsperityLaw>)> {
+    let dir = std::env::temp_dir().join(format!("asperity-retr-min-{}", std::process::id()));
+    let cache = CalibrationCache::new(&dir);
+    [0.5, 1.0, 2.0]
+        .iter()
+        .map(|&mu| {
+            let p = SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::coarse()).unwrap();
+            let law: Arc<dyn AsperityLaw> =
+                Arc::new(cache.get_or_compute(&p).unwrap().law(R, E_STAR, W).unwrap());
+            (format!("calibrated mu={mu}"), law)
+        })
+        .collect()
+}
+
+fn laws() -> Vec<(String, Arc<dyn AsperityLaw>)> {
+    let mut v: Vec<(String, Arc<dyn AsperityLaw>)> = vec![
+        ("hertz".into(), Arc::new(Hertz::new(R, E_STAR).unwrap())),
+        ("jkr".into(), Arc::new(Jkr::new(R, E_STAR, W).unwrap())),
+        ("dmt".into(), Arc::new(Dmt::new(R, E_STAR, W).unwrap())),
+    ];
+    for variant in [
+        Variant::KogutEtsion,
+        Variant::JacksonGreen,
+        Variant::ChangEtsionBogy,
+        Variant::ZhaoMaiettaChang,
+    ] {
+        v.push((format!("{variant:?}"), plastic(variant)));
+        v.push((format!("{variant:?}+jkr"), adhesive_plastic(variant)));
+    }
+    v.extend(calibrated());
+    v
+}
+
+#[test]
+fn stated_minima_bound_dense_retraction_curves() {
+    for (name, law) in laws() {
+        // The interference scale: the JKR scale of the contact (~1 nm).
+        let s = Jkr::new(R, E_STAR, W).unwrap().scales().interference;
+        let mut answered = 0;
+        for dm in [-0.5, 0.0, 0.3, 2.0, 20.0, 200.0, 2000.0] {
+            let delta_max = dm * s;
+            let Some(rm) = law.retraction_minimum(delta_max) else {
+                continue;
+            };
+            answered += 1;
+            let lo = -30.0 * s;
+            let grid: Vec<f64> = (0..=4000)
+                .map(|i| lo + (delta_max - lo) * i as f64 / 4000.0)
+                .collect();
+            let loads: Vec<f64> = grid
+                .iter()
+                .map(|&d| law.state_after(d, delta_max).load)
+                .collect();
+            let scale = loads.iter().fold(rm.load.abs(), |m, l| m.max(l.abs()));
+            let tol = 1e-12 * scale;
+            for (i, w) in grid.windows(2).enumerate() {
+                let (a, b) = (loads[i], loads[i + 1]);
+                if w[1] <= rm.interference {
+                    assert!(
+                        b <= a + tol,
+                        "{name} dmax {dm}: rises below delta_p at {}",
+                        w[0]
+                    );
+                }
+                if w[0] >= rm.interference {
+                    assert!(
+                        b >= a - tol,
+                        "{name} dmax {dm}: falls above delta_p at {}",
+                        w[0]
+                    );
+                }
+            }
+            let least = loads.iter().copied().fold(f64::INFINITY, f64::min);
+            assert!(
+                least >= rm.load - tol,
+                "{name} dmax {dm}: {least} < {}",
+                rm.load
+            );
+            // Windows: the bound never exceeds the samples inside.
+            for (i, j) in [(0, 4000), (100, 900), (2000, 2100), (3990, 4000)] {
+                let b = rm.window_minimum(grid[i], loads[i], grid[j], loads[j]);
+                let inside = loads[i..=j].iter().copied().fold(f64::INFINITY, f64::min);
+                assert!(b <= inside + tol, "{name} dmax {dm}: window {i}..{j}");
+            }
+        }
+        assert!(answered > 0, "{name} gives no retraction minimum");
+    }
+}
+
+#[test]
+fn monotone_marker_bounds_by_the_lower_end() {
+    let m = RetractionMinimum::MONOTONE;
+    assert_eq!(m.window_minimum(-1.0, 0.0, 2.0, 5.0), 0.0);
+    let p = RetractionMinimum {
+        interference: 1.0,
+        load: -3.0,
+    };
+    assert_eq!(p.window_minimum(0.0, -1.0, 2.0, 4.0), -3.0);
+    assert_eq!(p.window_minimum(1.5, -2.0, 2.0, 4.0), -2.0);
+    assert_eq!(p.window_minimum(-1.0, 0.0, 0.5, -1.0), -1.0);
+}
+
+/// The pruned pull-off is the full curve's least load, bit for bit, for
+/// every law and 6 seeds; and it does skip separations.
+#[test]
+fn pruned_pull_off_equals_the_full_curve_minimum() {
+    let program = LoadingProgram::new(25e-9, -5e-9, 200).unwrap();
+    let mut pruned = 0usize;
+    let mut total = 0usize;
+    for (name, law) in laws() {
+        let summit = SummitLaw::fixed(law.clone(), R).unwrap();
+        for seed in 1..=6 {
+            let spec = PopulationSpec::new(2000, 5e-9, RadiusSpec::Fixed(R), seed).unwrap();
+            let pop = Population::sample(&spec, &Gaussian::new()).unwrap();
+            let mc = MonteCarlo::new(Arc::new(pop), summit.clone()).unwrap();
+            let curve = mc.curve(&program, &Observables::LOAD).unwrap();
+            let want = curve
+                .retract
+                .iter()
+                .filter_map(|s| s.load())
+                .fold(0.0f64, f64::min);
+            let got = realised_pull_off(&mc, &program, 1.0).unwrap();
+            assert_eq!(
+                got.to_bits(),
+                want.to_bits(),
+                "{name} seed {seed}: {got} vs {want}"
+            );
+            total += program.points;
+            pruned += program.points - candidate_separations(&mc, &program).len();
+        }
+    }
+    // Most separations are ruled out without being summed.
+    assert!(pruned * 2 > total, "{pruned} of {total} pruned");
+}
