@@ -104,9 +104,16 @@ impl AdhesivePlastic {
         if u.elastic {
             return (u, self.elastic);
         }
-        let a = self.loading.asperity();
-        // R_u > 0 and finite, E* and w validated: cannot fail.
-        let s = MaugisScales::new(u.radius, a.contact_modulus, self.work).unwrap_or(self.elastic);
+        // The JKR scales of radius R_u from those of R: lengths go as
+        // R^(1/3) (interference) and R^(2/3) (radius), the load as R (one
+        // cube root instead of MaugisScales::new's two).
+        let ratio = u.radius / self.loading.asperity().radius;
+        let c = ratio.cbrt();
+        let s = MaugisScales {
+            radius: self.elastic.radius * c * c,
+            load: self.elastic.load * ratio,
+            interference: self.elastic.interference * c,
+        };
         (u, s)
     }
 
