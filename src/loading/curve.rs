@@ -21,6 +21,13 @@ pub struct PullOff {
     pub load: f64,
     /// Separation where it occurs (m).
     pub separation: f64,
+    /// Whether it is the load at the upper end of the retraction searched
+    /// (the program's start) while that end is still within the law's
+    /// reach: the load may still have been falling there, so the contact
+    /// had not pulled off within the program and the true pull-off lies
+    /// beyond it (callers warn; start further out, or at the model's
+    /// interaction onset, to find it).
+    pub at_start: bool,
 }
 
 impl Curve {
@@ -84,13 +91,26 @@ pub fn hysteresis_energy(
 
 /// The most tensile (most negative) of `(load, separation)` samples, if any
 /// load is tensile; missing loads are skipped.
+///
+/// The samples are in ascending separation (a retraction leg as
+/// [`Curve`] stores it): [`PullOff::at_start`] is set when the most
+/// tensile is the last sample.
 pub fn most_tensile(samples: impl IntoIterator<Item = (Option<f64>, f64)>) -> Option<PullOff> {
-    samples
+    let loaded: Vec<(f64, f64)> = samples
         .into_iter()
         .filter_map(|(load, separation)| load.map(|p| (p, separation)))
-        .filter(|&(p, _)| p < 0.0)
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(load, separation)| PullOff { load, separation })
+        .collect();
+    let last = loaded.len().checked_sub(1)?;
+    loaded
+        .iter()
+        .enumerate()
+        .filter(|(_, &(p, _))| p < 0.0)
+        .min_by(|a, b| a.1 .0.total_cmp(&b.1 .0))
+        .map(|(i, &(load, separation))| PullOff {
+            load,
+            separation,
+            at_start: i == last,
+        })
 }
 
 #[cfg(test)]
@@ -110,11 +130,15 @@ mod tests {
             most_tensile(samples),
             Some(PullOff {
                 load: -3.0,
-                separation: 3.0
+                separation: 3.0,
+                at_start: false,
             })
         );
         assert_eq!(most_tensile([(Some(0.0), 0.0), (None, 1.0)]), None);
         assert_eq!(most_tensile([]), None);
+        // Still most tensile at the last (largest) separation: cut off.
+        let cut = most_tensile([(Some(-1.0), 0.0), (Some(-2.0), 1.0)]).unwrap();
+        assert!(cut.at_start);
     }
 
     #[test]

@@ -86,7 +86,10 @@ pub trait LoadingModel: Sync {
     /// [`separation_tolerance`](LoadingModel::separation_tolerance). `None`
     /// when no retraction load within the program is tensile (the flat
     /// never goes beyond `start`, so a tensile load above it is never
-    /// felt). `start = f64::INFINITY` searches up to the interaction onset.
+    /// felt). `start = f64::INFINITY` searches up to the interaction onset
+    /// ([`LoadingModel::pull_off_in`] takes a program's own start). When
+    /// the most tensile sample is the start itself and the start is within
+    /// the law's reach, [`PullOff::at_start`] says the answer is cut off.
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `start_separation` when `start` is NaN;
@@ -143,7 +146,23 @@ pub trait LoadingModel: Sync {
             return Err(e);
         }
         let (load, separation) = if p < pmin { (p, d) } else { (pmin, seps[imin]) };
-        Ok(Some(PullOff { load, separation }))
+        // The least sample at the top, below the interaction onset: the
+        // load may still fall beyond the start.
+        let at_start = imin == seps.len() - 1 && top < self.interaction_onset();
+        Ok(Some(PullOff {
+            load,
+            separation,
+            at_start,
+        }))
+    }
+
+    /// [`pull_off`](LoadingModel::pull_off) over `program`: from its
+    /// closest separation up to its own start.
+    ///
+    /// # Errors
+    /// As [`LoadingModel::pull_off`].
+    fn pull_off_in(&self, program: &LoadingProgram, samples: usize) -> Result<Option<PullOff>> {
+        self.pull_off(program.closest, program.start, samples)
     }
 
     /// Separation (m) at which the approach load reaches `target` (N, > 0)
@@ -159,7 +178,9 @@ pub trait LoadingModel: Sync {
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `max_load` for a target that is not
-    /// finite and positive; [`Error::Invalid`] naming `max_load` when the
+    /// finite and positive; [`Error::Invalid`] naming `start_separation`
+    /// when the load at `start` already reaches the target (the crossing
+    /// lies above the start); [`Error::Invalid`] naming `max_load` when the
     /// load is not reached within the search depth, or is only reached by a
     /// jump (the message gives the loads on either side); as
     /// [`LoadingModel::state`].
@@ -172,6 +193,20 @@ pub trait LoadingModel: Sync {
                 .load()
                 .unwrap_or(0.0))
         };
+        // Coming down from a start where the target is already exceeded
+        // would miss the crossing above it.
+        let at_start = load(start)?;
+        if at_start >= target {
+            return Err(Error::invalid(
+                "start_separation",
+                format!(
+                    "the approach load at the start d = {start:e} m is already {at_start:e} N \
+                     >= the target {target:e} N, so the separation of the target lies above \
+                     the start: start further out (the model's interaction onset is {:e} m)",
+                    self.interaction_onset()
+                ),
+            ));
+        }
         let (mut lo, mut hi) = (start - scale, start);
         loop {
             let p = load(lo)?;

@@ -398,6 +398,15 @@ impl Plan {
             hysteresis_energy,
         )?;
         warnings.extend(model_error.warnings(&self.law.name));
+        if let Some(p) = pull_off.filter(|p| p.at_start) {
+            warnings.push(format!(
+                "pull-off: the retraction ends at program.start_separation = {:e} m with the load \
+                 still at its most tensile ({:.3e} N): the contact has not pulled off within the \
+                 program, and the true pull-off lies further out (start further out, or leave \
+                 start_separation unset for the law's reach)",
+                p.separation, p.load
+            ));
+        }
         if let Some(r) = &pull_off_population {
             // How many populations the budget allowed is a note of the
             // population (in the summary and the report), not a warning:
