@@ -11,6 +11,11 @@
 //!   (Kogut & Etsion 2002; Jackson & Green 2005), whose flat is rigid.
 //! - Plasticity index `psi = (E*/H) sqrt(sigma/R)` (Greenwood & Williamson
 //!   1966): above about 1 most contacts yield.
+//!
+//! This module holds the *material* data; the elastic-plastic *laws* built
+//! from it are in [`crate::law::plastic`]. The Poisson ratio is the yielding
+//! body's, the one its [`Material`](super::Material) already carries:
+//! [`Plasticity::of`] takes it from there, so it is given once.
 
 use crate::error::{positive, Allowed, Error, Result};
 use std::f64::consts::PI;
@@ -52,6 +57,29 @@ impl Plasticity {
             hardness,
             poisson_ratio,
         })
+    }
+
+    /// The plastic data of `material` (the yielding body): its Poisson ratio,
+    /// yield strength `Y` (Pa) and optional hardness `H` (Pa, default
+    /// `2.8 Y`); the Poisson ratio is not given a second time.
+    ///
+    /// ```
+    /// use asperity::prelude::*;
+    /// let gold = Material::gold();
+    /// let p = Plasticity::of(&gold, 0.4e9, None)?;
+    /// assert_eq!(p.poisson_ratio(), gold.poisson_ratio());
+    /// assert_eq!(p, Plasticity::gold());
+    /// # Ok::<(), asperity::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Plasticity::new`].
+    pub fn of(
+        material: &super::Material,
+        yield_strength: f64,
+        hardness: Option<f64>,
+    ) -> Result<Self> {
+        Plasticity::new(yield_strength, hardness, material.poisson_ratio())
     }
 
     /// Plastic data from optional scene values: `law` (its name, for the

@@ -17,6 +17,12 @@
 //! that shape, so the pull-off grows with the maximum load reached.
 //! [`diagnostics`] gives the plasticity index and the regime fractions.
 //!
+//! The material data these laws take (yield strength, hardness, the
+//! yielding body's Poisson ratio, critical interferences, plasticity index)
+//! are in [`crate::material::plastic`]; build them from a
+//! [`Material`](crate::material::Material) with
+//! [`Plasticity::of`](crate::material::plastic::Plasticity::of).
+//!
 //! Every law here scales with the radius as `delta ~ R`, `P ~ R^2`, `a ~ R`
 //! at fixed `E*`, `Y`, `H` (its fit is in `w = delta/omega_c`, `omega_c ~ R`,
 //! `P_c ~ R^2`), i.e. a Monte Carlo `RadiusScaling { interference: 1,
