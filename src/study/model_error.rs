@@ -38,6 +38,10 @@ pub struct ModelError {
     pub reference_max_load: Option<f64>,
     /// The reference's hysteresis energy (J).
     pub reference_hysteresis_energy: Option<f64>,
+    /// Of the load at each listed state (`[program] separations` or
+    /// `loads`, in order), at the state's separation; empty when none are
+    /// listed or the error is unmeasured.
+    pub listed_loads: Vec<Option<f64>>,
 }
 
 impl ModelError {
@@ -50,7 +54,53 @@ impl ModelError {
             reference_pull_off: None,
             reference_max_load: None,
             reference_hysteresis_energy: None,
+            listed_loads: Vec::new(),
         }
+    }
+
+    /// Adds the model error of the loads at the listed states (their
+    /// separations `separations` (m), the run's loads `loads` (N)) when the
+    /// rest was measured: the reference law's load at the same separation.
+    /// A failing reference leaves them unmeasured.
+    pub fn measure_listed(&mut self, plan: &Plan, separations: &[f64], loads: &[Option<f64>]) {
+        if self.reference_pull_off.is_none()
+            && self.reference_max_load.is_none()
+            && self.reference_hysteresis_energy.is_none()
+        {
+            return;
+        }
+        let Some(reference) = &plan.reference else {
+            return;
+        };
+        let reference_loads = || -> Result<Vec<Option<f64>>> {
+            let rtol = plan.budget.rtol.max(REFERENCE_RTOL);
+            let model = plan
+                .model_with(reference.clone())?
+                .with_accuracy(Accuracy::new(rtol)?);
+            let steps: Vec<(f64, History)> = separations
+                .iter()
+                .map(|&d| (d, History::Approach))
+                .collect();
+            Ok(model
+                .states(&steps, &Observables::LOAD)?
+                .iter()
+                .map(|s| s.load())
+                .collect())
+        };
+        if let Ok(r) = reference_loads() {
+            self.listed_loads = loads.iter().zip(r).map(|(&l, r)| relative(l, r)).collect();
+        }
+    }
+
+    /// The listed state with the largest load error, as a warning row.
+    fn listed_warning(&self) -> Option<(&'static str, Option<f64>, Option<f64>, &'static str)> {
+        let worst = self
+            .listed_loads
+            .iter()
+            .flatten()
+            .copied()
+            .max_by(|a, b| a.abs().total_cmp(&b.abs()))?;
+        Some(("load at a listed state", Some(worst), None, "N"))
     }
 
     /// Warnings for the outputs whose model error exceeds
@@ -67,15 +117,16 @@ impl ModelError {
             ),
         ]
         .into_iter()
+        .chain(self.listed_warning())
         .filter_map(|(name, e, r, unit)| {
             let e = e?;
             (e.abs() > MODEL_ERROR_WARN).then(|| {
+                let reference = r.map_or(String::new(), |r| format!(" ({r:.4e} {unit})"));
                 format!(
                     "model error: the {name} of law {law} differs by {:.1} % from the full \
-                     Lennard-Jones solver's law on this surface ({:.4e} {unit}); law.kind = \
+                     Lennard-Jones solver's law on this surface{reference}; law.kind = \
                      \"calibrated\" (or \"auto\") uses the full-solver law",
                     100.0 * e,
-                    r.unwrap_or(f64::NAN)
                 )
             })
         })
@@ -221,5 +272,6 @@ fn reference_run(
         reference_pull_off: ref_pull,
         reference_max_load: ref_load,
         reference_hysteresis_energy: ref_energy,
+        listed_loads: Vec::new(),
     })
 }

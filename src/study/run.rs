@@ -520,6 +520,15 @@ impl Plan {
             _ => Vec::new(),
         };
         r.listed = listed.records(&model.states(&steps, listed.observables())?);
+        if let Some(m) = r.model_error.as_mut() {
+            let loads: Vec<Option<f64>> = r.listed.iter().map(|l| l.state.load()).collect();
+            let separations: Vec<f64> = steps.iter().map(|&(d, _)| d).collect();
+            m.measure_listed(self, &separations, &loads);
+            let before = m.warnings(&self.law.name);
+            if let Some(w) = before.into_iter().find(|w| w.contains("listed state")) {
+                r.warnings.push(w);
+            }
+        }
         if self.sphere.is_none() {
             // (a rough sphere's resistances, and so its temperatures, are
             // set per state by `study::sphere::finish`, which runs after)

@@ -117,6 +117,10 @@ pub struct ModelErrorSummary {
     /// The reference's hysteresis energy (J).
     #[serde(rename = "reference_hysteresis_energy_J")]
     pub reference_hysteresis_energy_j: Option<f64>,
+    /// Of the load at each listed state, in the listed order (absent when
+    /// no state is listed).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub listed_loads: Vec<Option<f64>>,
 }
 
 /// Joule heating of the contact at the closest approach.
@@ -354,6 +358,7 @@ impl Summary {
                 reference_pull_off_n: m.reference_pull_off,
                 reference_max_load_n: m.reference_max_load,
                 reference_hysteresis_energy_j: m.reference_hysteresis_energy,
+                listed_loads: m.listed_loads.clone(),
             }),
             seconds: results.seconds,
             evaluations: results.evaluations,
