@@ -158,3 +158,142 @@ fn plastic_fits_beyond_their_range_are_warned() {
         s["warnings"]
     );
 }
+
+/// Item 12: extreme shaped profiles ended in a quadrature failure (exit 1)
+/// or ran for minutes (`coefficient = 1e300` on a power law: a contact
+/// radius of 1.7e-77 m at one sigma); a 1 nm true sphere under 200 nm
+/// roughness ran on past its equator. Now refused up front, naming the key
+/// and its range.
+#[test]
+fn extreme_shaped_profiles_are_refused_naming_the_key() {
+    let dir = tmp("shaped");
+    let cases = [
+        (
+            "power.toml",
+            vec![
+                ("profile =", "profile = \"power\""),
+                ("tan_angle", "exponent = 4\ncoefficient = 1e300"),
+            ],
+            "error: law.coefficient:",
+            "allowed 7.500e10 ..= 9.259e30",
+        ),
+        (
+            "sphere.toml",
+            vec![
+                ("profile =", "profile = \"sphere\""),
+                ("tan_angle", "radius = 1e-9"),
+            ],
+            "error: law.radius:",
+            "allowed >= 2e-7 m",
+        ),
+        (
+            "cone.toml",
+            vec![("tan_angle", "tan_angle = 1e-300")],
+            "error: law.tan_angle:",
+            "allowed",
+        ),
+    ];
+    for (name, edits, field, range) in cases {
+        let scene = edited("conical-summits.toml", &edits);
+        let start = std::time::Instant::now();
+        let (code, err) = run_scene(&dir, name, &scene);
+        assert_eq!(code, 2, "{name}: {err}");
+        assert!(err.contains(field), "{name}: {err}");
+        assert!(err.contains(range), "{name}: {err}");
+        assert!(start.elapsed().as_secs() < 30, "{name}: refused late");
+    }
+    // The documented power law (the example's comment) stays accepted.
+    let doc = edited(
+        "conical-summits.toml",
+        &[
+            ("profile =", "profile = \"power\""),
+            ("tan_angle", "exponent = 4\ncoefficient = 1e15"),
+        ],
+    );
+    std::fs::write(dir.join("doc.toml"), doc).unwrap();
+    let (code, _, err) = run(&["run", "doc.toml", "--plan"], &dir);
+    assert_eq!(code, 0, "{err}");
+}
+
+/// Item 15: `nominal_area = nan` was taken as "not given" (NaN is the
+/// unset mark); a NaN written anywhere is refused naming its key.
+#[test]
+fn a_written_nan_is_not_an_absent_key() {
+    let dir = tmp("nan");
+    for (key, line, field) in [
+        ("nominal_area", "nominal_area = nan", "surface.nominal_area"),
+        ("density", "density = nan", "surface.density"),
+    ] {
+        let scene = edited("mems-gold.toml", &[(key, line)]);
+        std::fs::write(dir.join("s.toml"), scene).unwrap();
+        let (code, _, err) = run(&["run", "s.toml", "--plan"], &dir);
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains(&format!("error: {field}")), "{err}");
+    }
+}
+
+/// Item 15: a UTF-8 byte-order mark was accepted in scenes but refused in
+/// CSVs (spots, height maps); now accepted in both, with the same numbers.
+#[test]
+fn a_byte_order_mark_is_accepted_in_csvs() {
+    let dir = tmp("bom");
+    let body = "x_m,y_m,radius_m\n0,0,1e-6\n1e-5,0,1e-6\n";
+    std::fs::write(dir.join("plain.csv"), body).unwrap();
+    std::fs::write(dir.join("bom.csv"), format!("\u{feff}{body}")).unwrap();
+    let args = |f: &'static str| ["spots", f, "--resistivity", "2.44e-8", "--json"];
+    let (c1, plain, e1) = run(&args("plain.csv"), &dir);
+    let (c2, bom, e2) = run(&args("bom.csv"), &dir);
+    assert_eq!((c1, c2), (0, 0), "{e1} {e2}");
+    assert_eq!(plain, bom);
+    let map: String = (0..8)
+        .map(|i| {
+            (0..8)
+                .map(|j| format!("{:e}", 1e-9 * (((i * 7 + j * 3) % 5) as f64)))
+                .collect::<Vec<_>>()
+                .join(",")
+                + "\n"
+        })
+        .collect();
+    std::fs::write(dir.join("m.csv"), &map).unwrap();
+    std::fs::write(dir.join("mb.csv"), format!("\u{feff}{map}")).unwrap();
+    let args = |f: &'static str| ["surface", f, "--pixel-size", "1e-8", "--json"];
+    let (c1, plain, e1) = run(&args("m.csv"), &dir);
+    let (c2, bom, e2) = run(&args("mb.csv"), &dir);
+    assert_eq!((c1, c2), (0, 0), "{e1} {e2}");
+    assert_eq!(plain, bom);
+}
+
+/// Item 15: 24 stray bytes after a `.npy` array were accepted; the file is
+/// now refused naming it.
+#[test]
+fn stray_bytes_after_npy_data_are_refused() {
+    let dir = tmp("npy");
+    let root = env!("CARGO_MANIFEST_DIR");
+    let mut bytes = std::fs::read(format!("{root}/examples/data/selfaffine-256.npy")).unwrap();
+    std::fs::write(dir.join("good.npy"), &bytes).unwrap();
+    bytes.extend_from_slice(&[0u8; 24]);
+    std::fs::write(dir.join("long.npy"), &bytes).unwrap();
+    let (code, _, err) = run(&["surface", "good.npy", "--pixel-size", "1e-8"], &dir);
+    assert_eq!(code, 0, "{err}");
+    let (code, _, err) = run(&["surface", "long.npy", "--pixel-size", "1e-8"], &dir);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("long.npy"), "{err}");
+    assert!(err.contains("24 stray bytes"), "{err}");
+}
+
+/// Item 15: outputs are written whole or not at all (temporary file and
+/// rename): a run leaves no `*.tmp` beside its outputs, and a run whose
+/// `summary.json` cannot be written exits 1 leaving no temporary file.
+#[test]
+fn outputs_leave_no_temporary_files() {
+    let dir = tmp("atomic");
+    std::fs::write(dir.join("s.toml"), example("mems-gold.toml")).unwrap();
+    std::fs::create_dir_all(dir.join("o/summary.json/x")).unwrap();
+    let (code, _, err) = run(&["run", "s.toml", "--out", "o"], &dir);
+    assert_eq!(code, 1, "{err}");
+    let names: Vec<String> = std::fs::read_dir(dir.join("o"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(!names.iter().any(|n| n.contains("tmp")), "{names:?}");
+}

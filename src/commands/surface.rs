@@ -222,7 +222,7 @@ fn write_outputs(dir: &Path, json: &str, c: &Characterisation) -> CommandResult<
     let io = |p: &Path, e: std::io::Error| CommandError::from(Error::io(p.display(), e));
     std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
     let p = dir.join("surface.json");
-    std::fs::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
+    crate::study::atomic::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
     if c.summits.len() < 2 {
         eprintln!("note: fewer than 2 summits, no charts written");
         return Ok(());

@@ -56,10 +56,8 @@ impl CalibrationCache {
         let io = |e: std::io::Error| Error::io(self.dir.display(), e);
         std::fs::create_dir_all(&self.dir).map_err(io)?;
         let path = self.path_for(problem);
-        let tmp = path.with_extension(format!("tmp{}", std::process::id()));
         let text = serde_json::to_string(c).map_err(|e| Error::io(path.display(), e))?;
-        std::fs::write(&tmp, text).map_err(io)?;
-        std::fs::rename(&tmp, &path).map_err(io)?;
+        crate::study::atomic::write(&path, text).map_err(io)?;
         Ok(path)
     }
 

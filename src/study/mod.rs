@@ -23,6 +23,7 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
+pub mod atomic;
 pub mod cache;
 pub mod measured;
 pub mod model_error;
