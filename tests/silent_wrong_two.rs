@@ -297,3 +297,74 @@ fn outputs_leave_no_temporary_files() {
         .collect();
     assert!(!names.iter().any(|n| n.contains("tmp")), "{names:?}");
 }
+
+/// Every array under a key `load_bar` in `v`, times `k`.
+fn scale_load_bars(v: &mut serde_json::Value, k: f64) {
+    match v {
+        serde_json::Value::Object(m) => {
+            for (key, x) in m.iter_mut() {
+                if key == "load_bar" {
+                    if let Some(xs) = x.as_array_mut() {
+                        for y in xs {
+                            *y = serde_json::json!(y.as_f64().unwrap() * k);
+                        }
+                    }
+                } else {
+                    scale_load_bars(x, k);
+                }
+            }
+        }
+        serde_json::Value::Array(xs) => xs.iter_mut().for_each(|x| scale_load_bars(x, k)),
+        _ => {}
+    }
+}
+
+/// Item 9: a parseable but altered calibration cache entry (loads x1.5)
+/// was trusted silently (+50 % on the maximum load). Entries now carry a
+/// checksum; a bad one is recomputed, with a warning naming the file.
+#[test]
+fn an_altered_calibration_cache_entry_is_recomputed_with_a_note() {
+    let dir = tmp("cache");
+    let cache = dir.join("cache");
+    let scene = edited(
+        "calibrated-gold.toml",
+        &[("rtol", "rtol = 1e-3"), ("points", "points = 40")],
+    );
+    std::fs::write(dir.join("s.toml"), scene).unwrap();
+    let go = |out: &str| {
+        let o = bin()
+            .args(["run", "s.toml", "--out", out])
+            .env("ASPERITY_CACHE", &cache)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        json(&dir.join(out).join("summary.json"))
+    };
+    let first = go("a");
+    let entries: Vec<PathBuf> = std::fs::read_dir(&cache)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    assert_eq!(entries.len(), 1, "{entries:?}");
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&entries[0]).unwrap()).unwrap();
+    scale_load_bars(&mut v, 1.5);
+    std::fs::write(&entries[0], v.to_string()).unwrap();
+    let second = go("b");
+    let max = |s: &serde_json::Value| s["max_load"].as_f64().unwrap();
+    assert_eq!(max(&second), max(&first), "the altered entry was used");
+    let w = second["warnings"].to_string();
+    assert!(w.contains("fails its checksum"), "{w}");
+    assert!(w.contains(&entries[0].display().to_string()), "{w}");
+    // Stored again intact: the third run uses it quietly.
+    let third = go("c");
+    assert_eq!(max(&third), max(&first));
+    assert!(!third["warnings"].to_string().contains("checksum"));
+}
