@@ -47,7 +47,7 @@ fn judge(plan: &Plan, f: Finding, closest: f64, warnings: &mut Vec<String>) -> R
         Finding::AreaAboveNominal { fraction } => {
             let ers = s.eta_r_sigma();
             if ers <= crate::gw::validity::ETA_R_SIGMA_WARN {
-                if let Some(e) = plastic_blame(plan, fraction, closest) {
+                if let Some(e) = law_blame(plan, fraction, closest) {
                     return Err(e);
                 }
             }
@@ -72,13 +72,14 @@ fn judge(plan: &Plan, f: Finding, closest: f64, warnings: &mut Vec<String>) -> R
     }
 }
 
-/// An impossible real area under a plastic law that the elastic (Hertz)
-/// law on the same surface and program keeps below the nominal area: the
-/// yield strength (or hardness) the user wrote drove it, far outside the
-/// plastic fits' range, not the program. `None` when the elastic area is
-/// impossible too (then the program or the surface is to blame).
-fn plastic_blame(plan: &Plan, fraction: f64, closest: f64) -> Option<Error> {
-    let plasticity = plan.plasticity.as_ref()?;
+/// An impossible real area that the elastic, non-adhesive (Hertz) law on
+/// the same surface and program keeps below the nominal area: under a
+/// plastic law the yield strength (or hardness) the user wrote drove it,
+/// far outside the plastic fits' range; under another law the moduli or
+/// the adhesion (the one furthest from typical values), not the program.
+/// `None` when the Hertz area is impossible too (then the program or the
+/// surface is to blame).
+fn law_blame(plan: &Plan, fraction: f64, closest: f64) -> Option<Error> {
     if !closest.is_finite() {
         return None;
     }
@@ -97,6 +98,23 @@ fn plastic_blame(plan: &Plan, fraction: f64, closest: f64) -> Option<Error> {
     if !(elastic_fraction <= 1.0) {
         return None;
     }
+    let Some(plasticity) = plan.plasticity.as_ref() else {
+        // An adhesive or shaped law spreads the contacts where Hertz does
+        // not: the moduli or the adhesion drove it.
+        let pick = crate::study::scene::most_extreme_input(
+            &plan.scene,
+            &["materials.e1", "materials.e2", "adhesion.w", "adhesion.z0"],
+        );
+        return Some(Error::invalid(
+            pick,
+            format!(
+                "the law's real contact area would be {fraction:.3e} x the nominal area \
+                 (impossible), where the non-adhesive Hertz law on the same surface and program \
+                 gives {elastic_fraction:.3e} x: {pick} is the input furthest from typical \
+                 values (a gold microswitch: E = 79e9 Pa, w = 0.5 J/m^2, z0 = 0.3e-9 m)"
+            ),
+        ));
+    };
     let (field, value) = if plan.scene.materials.hardness.is_some() {
         ("materials.hardness", plasticity.hardness())
     } else {
