@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 #[derive(Debug, Clone, PartialEq)]
 pub enum Lookup {
     /// An intact entry for these parameters.
-    Found(Calibration),
+    Found(Box<Calibration>),
     /// No entry (or one for other parameters or solver version).
     Missing,
     /// An entry that is damaged or altered: the note to show.
@@ -76,7 +76,7 @@ impl CalibrationCache {
     /// parameters.
     pub fn load(&self, problem: &SphereProblem) -> Option<Calibration> {
         match self.lookup(problem) {
-            Lookup::Found(c) => Some(c),
+            Lookup::Found(c) => Some(*c),
             _ => None,
         }
     }
@@ -105,7 +105,7 @@ impl CalibrationCache {
             return bad("fails its checksum (altered or damaged)");
         }
         if entry.calibration.matches(problem) {
-            Lookup::Found(entry.calibration)
+            Lookup::Found(Box::new(entry.calibration))
         } else {
             Lookup::Missing
         }
@@ -153,7 +153,7 @@ impl CalibrationCache {
         problem: &SphereProblem,
     ) -> Result<(Calibration, bool, Option<String>)> {
         let note = match self.lookup(problem) {
-            Lookup::Found(c) => return Ok((c, true, None)),
+            Lookup::Found(c) => return Ok((*c, true, None)),
             Lookup::Missing => None,
             Lookup::Bad(note) => Some(note),
         };
