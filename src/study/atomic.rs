@@ -28,7 +28,7 @@ pub fn write(path: &Path, contents: impl AsRef<[u8]>) -> std::io::Result<()> {
 /// Writes through `fill` to `path` atomically (see the module notes).
 ///
 /// # Errors
-/// As [`write`], or `fill`'s error.
+/// As [`write()`], or `fill`'s error.
 pub fn write_with(
     path: &Path,
     fill: impl FnOnce(&mut std::fs::File) -> std::io::Result<()>,
