@@ -111,6 +111,7 @@ pub fn read_map(path: &Path) -> CommandResult<HeightMap> {
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase)
         .unwrap_or_default();
+    crate::study::memory::check_map(path).map_err(CommandError::Usage)?;
     let bytes = std::fs::read(path)
         .map_err(|e| CommandError::Usage(format!("{shown}: cannot read: {e}")))?;
     let map = match ext.as_str() {

@@ -26,6 +26,7 @@
 pub mod atomic;
 pub mod cache;
 pub mod measured;
+pub mod memory;
 pub mod model_error;
 pub mod output;
 pub mod plan;
