@@ -407,3 +407,37 @@ fn a_map_beyond_the_memory_is_refused_with_an_estimate() {
     assert!(err.contains("240.0 GB"), "{err}");
     std::fs::remove_file(&path).unwrap();
 }
+
+/// Item 10: a tabulated profile of 100,000 points ran for many minutes
+/// without a word (22 s of CPU at 1,000 points); beyond the documented
+/// 2,000 points it is refused up front with the cost estimate.
+#[test]
+fn a_huge_tabulated_profile_is_refused_with_its_cost() {
+    let dir = tmp("tabulated");
+    let n = 100_000;
+    let r: Vec<String> = (0..n)
+        .map(|i| format!("{:e}", 4e-6 * i as f64 / (n - 1) as f64))
+        .collect();
+    let f: Vec<String> = (0..n)
+        .map(|i| {
+            let x = 4e-6 * i as f64 / (n - 1) as f64;
+            format!("{:e}", x * x / 2e-5)
+        })
+        .collect();
+    let profile = format!(
+        "profile = \"tabulated\"\nprofile_r = [{}]\nprofile_f = [{}]",
+        r.join(","),
+        f.join(",")
+    );
+    let scene = edited(
+        "conical-summits.toml",
+        &[("profile =", &profile), ("tan_angle", "")],
+    );
+    let start = std::time::Instant::now();
+    let (code, err) = run_scene(&dir, "t.toml", &scene);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("error: law.profile_r: 100000 points"), "{err}");
+    assert!(err.contains("760 s of CPU"), "{err}");
+    assert!(err.contains("allowed 3 ..= 2000 points"), "{err}");
+    assert!(start.elapsed().as_secs() < 30);
+}

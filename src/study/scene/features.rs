@@ -15,6 +15,16 @@ use crate::error::{finite, positive, Allowed, Error, Result};
 use crate::material::plastic::Plasticity;
 use crate::named::Named;
 
+/// Most points of a tabulated profile (`law.profile_r`): the shaped law's
+/// cost grows with the table (about [`TABULATED_CPU_S_PER_POINT`] each: a
+/// 100,000-point profile ran for many minutes without a word).
+pub const MAX_TABULATED_POINTS: usize = 2000;
+
+/// CPU seconds per point of a tabulated profile's shaped-law run, measured
+/// on `conical-summits.toml` with a 400-point paraboloid table (3.05 s, a
+/// release build; 0.55 s at 100 points).
+pub const TABULATED_CPU_S_PER_POINT: f64 = 7.6e-3;
+
 /// Where the program's approach stops, as the scene gives it.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ProgramTarget {
@@ -317,6 +327,22 @@ impl Scene {
         self.plasticity()?;
         match self.law.kind {
             LawName::Shaped => {
+                if let Some(r) = &self.law.profile_r {
+                    if r.len() > MAX_TABULATED_POINTS {
+                        let cpu = TABULATED_CPU_S_PER_POINT * r.len() as f64;
+                        return Err(Error::invalid(
+                            "law.profile_r",
+                            format!(
+                                "{} points: a shaped law on a tabulated profile costs about \
+                                 {cpu:.0} s of CPU at this size ({:.1} ms per point, measured \
+                                 at 400 points); allowed 3 ..= {MAX_TABULATED_POINTS} points \
+                                 (resample the profile: PCHIP needs far fewer)",
+                                r.len(),
+                                1e3 * TABULATED_CPU_S_PER_POINT
+                            ),
+                        ));
+                    }
+                }
                 let profile = self.law.profile(self.surface.radius)?;
                 self.check_profile_scale(&profile)?;
             }
