@@ -348,7 +348,7 @@ pub struct LawSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coefficient: Option<f64>,
     /// Shaped tabulated profile: radii `r` (m), ascending from 0; 3 ..=
-    /// [`MAX_TABULATED_POINTS`](super::features::MAX_TABULATED_POINTS) points.
+    /// 2000 points (`MAX_TABULATED_POINTS`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub profile_r: Option<Vec<f64>>,
     /// Shaped tabulated profile: heights `f(r)` (m) at `profile_r`.
