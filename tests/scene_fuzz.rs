@@ -8,9 +8,10 @@
 //! - run (`exit 0`) with finite outputs, and with warnings when the real
 //!   area is outside GW's validity range;
 //!
-//! never panic, abort or hang. Three variants add the keys no example sets
+//! never panic, abort or hang. Variants add the keys no example sets
 //! (`montecarlo.summits`, `program.start_separation`, `weibull_shape`,
-//! `truncation`). To keep every run cheap in a debug build the
+//! `truncation`; the shaped power, sphere and tabulated profiles' keys;
+//! two metals' resistivities and mean free paths, `hardness`). To keep every run cheap in a debug build the
 //! base scenes use at most [`POINTS`] points per leg (the `points` field
 //! itself is mutated from its original value), and the calibrated scene is
 //! only planned (`Plan::preview`: the sphere solver for every mutated Tabor
@@ -82,10 +83,49 @@ fn scenes() -> Vec<(String, String)> {
         "distribution = \"truncated-gaussian\"\ntruncation = 3.0",
         1,
     );
+    // The shaped profiles and electrical keys no example sets (issue 24:
+    // the newer keys are fuzzed too): a power law, a true sphere and a
+    // tabulated profile on the conical example; two metals and a hardness
+    // on the switch example.
+    let cone = find("conical-summits.toml");
+    let shaped = |profile: &str| {
+        cone.replacen("profile = \"cone\"", profile, 1).replacen(
+            "tan_angle = 0.3 ",
+            "# tan_angle ",
+            1,
+        )
+    };
+    let power = shaped("profile = \"power\"\nexponent = 4.0\ncoefficient = 1e15");
+    let sphere = shaped("profile = \"sphere\"\nradius = 10e-6");
+    let tabulated = shaped(
+        "profile = \"tabulated\"\nprofile_r = [0.0, 1e-6, 2e-6, 4e-6]\n\
+         profile_f = [0.0, 5e-8, 2e-7, 8e-7]",
+    );
+    let switch = find("rf-mems-switch.toml");
+    let metals = switch
+        .replacen(
+            "resistivity = 2.44e-8 ",
+            "resistivity1 = 2.44e-8\nresistivity2 = 1.0e-7 ",
+            1,
+        )
+        .replacen(
+            "mean_free_path = 3.46e-8 ",
+            "mean_free_path1 = 3.46e-8\nmean_free_path2 = 1e-8 ",
+            1,
+        )
+        .replacen(
+            "yield_strength = 0.4e9 ",
+            "yield_strength = 0.4e9\nhardness = 1.2e9 ",
+            1,
+        );
     for (n, t) in [
         ("extra-montecarlo", mc),
         ("extra-weibull", weibull),
         ("extra-truncated", truncated),
+        ("extra-power", power),
+        ("extra-sphere-profile", sphere),
+        ("extra-tabulated", tabulated),
+        ("extra-two-metals", metals),
     ] {
         assert!(Scene::from_toml(&t).is_ok(), "{n}");
         v.push((n.to_string(), t));

@@ -404,7 +404,7 @@ fn write_outputs(
     let io = |p: &Path, e: std::io::Error| CliError::from(Error::io(p.display(), e));
     std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
     let p = dir.join("bem.json");
-    std::fs::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
+    crate::study::atomic::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
     let (rows, cols) = problem.shape();
     for (k, s) in sols.iter().enumerate() {
         let fields: [(&str, Vec<f64>); 3] = [
@@ -421,7 +421,7 @@ fn write_outputs(
         for (name, v) in fields {
             let m = HeightMap::new(rows, cols, v).map_err(|e| CliError::Failed(e.to_string()))?;
             let p = dir.join(format!("{name}_{k}.npy"));
-            std::fs::write(&p, npy::to_bytes(&m)).map_err(|e| io(&p, e))?;
+            crate::study::atomic::write(&p, npy::to_bytes(&m)).map_err(|e| io(&p, e))?;
         }
     }
     use crate::study::plot::{Chart, Series};

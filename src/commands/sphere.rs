@@ -8,7 +8,6 @@ use crate::sphere::{
 };
 use serde::Serialize;
 use std::fmt::Write as _;
-use std::io::Write;
 
 /// Arguments of `asperity sphere`.
 #[derive(Debug, Clone)]
@@ -161,8 +160,6 @@ pub fn run(args: &SphereArgs) -> super::CommandResult<Report> {
         let mut progress = Progress::new("sphere curve");
         let curve = problem.trace_with_progress(Some(&mut |p: &SpherePoint| progress.tick(p)))?;
         progress.done();
-        let mut file = std::fs::File::create(path)
-            .map_err(|e| CliError::Failed(format!("--curve {}: {e}", path.display())))?;
         let mut text = String::from(
             "central_gap,approach,load_bar,interference_bar,radius,radius_bar,d_approach,d_load\n",
         );
@@ -179,7 +176,7 @@ pub fn run(args: &SphereArgs) -> super::CommandResult<Report> {
                 p.d_load
             ));
         }
-        file.write_all(text.as_bytes())
+        crate::study::atomic::write(path, text.as_bytes())
             .map_err(|e| CliError::Failed(format!("--curve {}: {e}", path.display())))?;
     }
     let mut t = String::new();

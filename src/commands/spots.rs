@@ -43,6 +43,9 @@ const COLUMNS: [&str; 3] = ["x_m", "y_m", "radius_m"];
 /// Parses the spots CSV: a header naming `x_m,y_m,radius_m`, then numbers.
 /// Errors name the column (and line).
 pub fn parse_csv(text: &str) -> CommandResult<Spots> {
+    // A UTF-8 byte-order mark (spreadsheets write one) before the header,
+    // accepted as in scenes.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
         .enumerate()

@@ -111,6 +111,7 @@ pub fn read_map(path: &Path) -> CommandResult<HeightMap> {
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase)
         .unwrap_or_default();
+    crate::study::memory::check_map(path).map_err(CommandError::Usage)?;
     let bytes = std::fs::read(path)
         .map_err(|e| CommandError::Usage(format!("{shown}: cannot read: {e}")))?;
     let map = match ext.as_str() {
@@ -222,7 +223,7 @@ fn write_outputs(dir: &Path, json: &str, c: &Characterisation) -> CommandResult<
     let io = |p: &Path, e: std::io::Error| CommandError::from(Error::io(p.display(), e));
     std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
     let p = dir.join("surface.json");
-    std::fs::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
+    crate::study::atomic::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
     if c.summits.len() < 2 {
         eprintln!("note: fewer than 2 summits, no charts written");
         return Ok(());

@@ -7,8 +7,10 @@
 //!   a finding above [`AREA_FRACTION_WARN`] (Ciavarella et al. 2008, J.
 //!   Mech. Phys. Solids 56, 3432), an impossible one above 1;
 //! - interferences small against the summit radius (Hertz/JKR/Maugis are
-//!   small-strain paraboloid theories): the highest expected summit's
-//!   Hertz contact radius `a = sqrt(R delta)` against
+//!   small-strain paraboloid theories, and the plastic fits were fitted
+//!   to finite elements at small `a/R`): the highest expected summit's
+//!   contact radius (the Hertz estimate `a = sqrt(R delta)`, or the law's
+//!   own when larger, as for the plastic fits) against
 //!   [`CONTACT_RADIUS_WARN`] `R`; impossible when `delta > R` (a cap
 //!   deeper than the radius is no paraboloid);
 //! - `eta R sigma`, the one dimensionless group of the GW surface:
@@ -23,14 +25,16 @@
 
 use super::{GwModel, RoughSurface};
 use crate::heights::HeightDistribution;
+use crate::law::{AsperityLaw, Branch};
 use crate::loading::{Curve, LoadingModel};
 use std::fmt;
 
 /// Real-area fraction `A_r/A_n` above which contacts interact.
 pub const AREA_FRACTION_WARN: f64 = 0.1;
 
-/// Hertz contact radius of the highest expected summit, in units of `R`,
-/// above which the paraboloid (small-strain) laws lose accuracy.
+/// Contact radius of the highest expected summit, in units of `R` (the
+/// larger of the Hertz estimate and the law's own), above which the
+/// paraboloid (small-strain) laws and the plastic fits lose accuracy.
 pub const CONTACT_RADIUS_WARN: f64 = 0.3;
 
 /// `eta R sigma` above which the surface is outside GW's measured range.
@@ -49,13 +53,17 @@ pub enum Finding {
         /// `eta R sigma`.
         value: f64,
     },
-    /// The highest expected summit's Hertz contact radius above
-    /// [`CONTACT_RADIUS_WARN`] `R`.
+    /// The highest expected summit's contact radius (Hertz estimate, or
+    /// the law's own when larger) above [`CONTACT_RADIUS_WARN`] `R`.
     ContactRadius {
         /// Its interference (m).
         depth: f64,
         /// `a/R`.
         ratio: f64,
+        /// Whether `a` is the law's own contact radius (larger than the
+        /// Hertz estimate `sqrt(R delta)`, e.g. a plastic fit's) rather
+        /// than the Hertz estimate.
+        from_law: bool,
     },
     /// The highest expected summit pressed deeper than its radius
     /// (impossible for a paraboloid).
@@ -111,11 +119,26 @@ impl fmt::Display for Finding {
                  {:.0} % of the nominal area near the mean plane, outside GW's independent summits",
                 100.0 * std::f64::consts::PI * value * 0.4
             ),
-            Finding::ContactRadius { depth, ratio } => write!(
+            Finding::ContactRadius {
+                depth,
+                ratio,
+                from_law: false,
+            } => write!(
                 f,
                 "interference: the highest expected summit is pressed {depth:.3e} m deep, contact \
                  radius a/R = {ratio:.2} > {CONTACT_RADIUS_WARN} (Hertz estimate): the \
                  small-strain asperity laws lose accuracy"
+            ),
+            Finding::ContactRadius {
+                depth,
+                ratio,
+                from_law: true,
+            } => write!(
+                f,
+                "interference: the highest expected summit is pressed {depth:.3e} m deep, where \
+                 the law's own contact radius is a/R = {ratio:.2} > {CONTACT_RADIUS_WARN}: \
+                 outside the range its fit or theory assumes (small a/R; the plastic fits' \
+                 finite-element data stay well below a/R = 1), the result is an extrapolation"
             ),
             Finding::DeeperThanRadius {
                 depth,
@@ -178,7 +201,12 @@ impl GwModel {
         if ers > ETA_R_SIGMA_WARN {
             out.push(Finding::EtaRSigma { value: ers });
         }
-        out.extend(interference(s, self.distribution(), closest));
+        out.extend(interference(
+            s,
+            self.distribution(),
+            Some(self.law()),
+            closest,
+        ));
         out
     }
 
@@ -221,6 +249,7 @@ impl GwModel {
 fn interference(
     surface: &RoughSurface,
     distribution: &dyn HeightDistribution,
+    law: Option<&dyn AsperityLaw>,
     closest: f64,
 ) -> Option<Finding> {
     let top = top_summit(surface, distribution);
@@ -235,8 +264,31 @@ fn interference(
             closest,
         });
     }
-    let ratio = (depth / surface.radius).sqrt();
-    (ratio > CONTACT_RADIUS_WARN).then_some(Finding::ContactRadius { depth, ratio })
+    // The law's own contact radius where it has one: the plastic fits
+    // (Jackson–Green's `a/R = sqrt(delta/R) (w/1.9)^(B/2)`, Kogut–Etsion's
+    // `A = 2 A_c w`) spread wider than Hertz, far beyond the fitted range
+    // (a Jackson–Green summit at 9.5 R reaches a = 12.8 R).
+    let hertz = (depth / surface.radius).sqrt();
+    let own = law.map_or(0.0, |l| {
+        let a = l
+            .state(depth.min(l.max_interference()), Branch::Approach)
+            .radius;
+        if a.is_finite() {
+            a / surface.radius
+        } else {
+            0.0
+        }
+    });
+    let (ratio, from_law) = if own > hertz {
+        (own, true)
+    } else {
+        (hertz, false)
+    };
+    (ratio > CONTACT_RADIUS_WARN).then_some(Finding::ContactRadius {
+        depth,
+        ratio,
+        from_law,
+    })
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@ use super::model::LoadingModel;
 use super::observable::Observables;
 use super::program::{History, LoadingProgram};
 use crate::error::{Allowed, Error, Result};
-use crate::numeric::quadrature::{integrate, kronrod21_n, QuadOptions};
+use crate::numeric::quadrature::{integrate_pieces, kronrod21_n, QuadOptions};
 
 /// Most K21 panels of [`hysteresis_energy_to`] before it reports
 /// [`Error::NoConvergence`] (each panel costs 42 states).
@@ -63,7 +63,13 @@ pub fn hysteresis_energy_to<M: LoadingModel + ?Sized>(
         max_intervals: MAX_PANELS,
         relative_to_magnitude: true,
     };
-    let q = integrate(|d| gap(d)[0], a, b, &opts);
+    // Split at the model's own kinks of the gap (the attach/detach
+    // crossing): an adaptive rule's error estimate is fooled by a kink
+    // inside a panel and stops early.
+    let mut points = vec![a];
+    points.extend(model.cycle_kinks(a).into_iter().filter(|&d| d > a && d < b));
+    points.push(b);
+    let q = integrate_pieces(|d| gap(d)[0], &points, &opts);
     if let Some(e) = failure {
         return Err(e);
     }

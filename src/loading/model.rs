@@ -63,6 +63,15 @@ pub trait LoadingModel: Sync {
         false
     }
 
+    /// Separations (m) where the cycle's load gap `P_approach(d) -
+    /// P_retract(d)` after a closest approach `closest` has a kink (or
+    /// jump) of its own: a cycle integral splits its quadrature there
+    /// ([`hysteresis_energy_to`](super::hysteresis_energy_to)). Default:
+    /// none known.
+    fn cycle_kinks(&self, _closest: f64) -> Vec<f64> {
+        Vec::new()
+    }
+
     /// Runs `program`: approach states, then retraction states after the
     /// closest separation.
     ///

@@ -115,11 +115,13 @@ impl SummitLaw {
     }
 
     /// Ties the table of a tabulated law to `accuracy`: tolerance
-    /// [`TABLE_TOLERANCE_FRACTION`]` * rel_tol` (at least `1e-13`). No
-    /// effect on laws that are not tabulated.
+    /// [`TABLE_TOLERANCE_FRACTION`]` * rel_tol`, kept in the table's range
+    /// `[1e-13, 1e-2]` (`0.1 * 0.1` rounds to `0.010000000000000002`, just
+    /// above it). No effect on laws that are not tabulated.
     pub fn with_accuracy(mut self, accuracy: &Accuracy) -> Self {
         if self.table_tolerance.is_some() {
-            self.table_tolerance = Some((TABLE_TOLERANCE_FRACTION * accuracy.rel_tol).max(1e-13));
+            self.table_tolerance =
+                Some((TABLE_TOLERANCE_FRACTION * accuracy.rel_tol).clamp(1e-13, 1e-2));
         }
         self
     }

@@ -1,10 +1,41 @@
 //! The on-disk cache of sphere-solver calibrations: JSON files in one
 //! directory, named by [`Calibration::key`], so scenes and sweeps never
-//! recompute a calibration.
+//! recompute a calibration. Each entry carries the FNV-1a 64-bit checksum
+//! of its calibration's canonical JSON (`{"fnv1a64": "...", "calibration":
+//! {...}}`): an entry altered by hand or damaged (a parseable file with
+//! loads x1.5 was trusted silently before) fails it and is recomputed, with
+//! a note ([`Lookup::Bad`]).
 
 use crate::error::{Error, Result};
 use crate::sphere::{Calibration, Shape, SolverOptions, SphereProblem};
 use std::path::{Path, PathBuf};
+
+/// What the cache holds for a problem.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Lookup {
+    /// An intact entry for these parameters.
+    Found(Box<Calibration>),
+    /// No entry (or one for other parameters or solver version).
+    Missing,
+    /// An entry that is damaged or altered: the note to show.
+    Bad(String),
+}
+
+/// One stored entry: the calibration and the checksum of its canonical
+/// JSON.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct Entry {
+    fnv1a64: String,
+    calibration: Calibration,
+}
+
+/// FNV-1a, 64 bits (Fowler–Noll–Vo): a checksum against accidental or
+/// hand-made changes, not an authentication.
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
 
 /// Calibrations stored as JSON files in one directory.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -40,12 +71,44 @@ impl CalibrationCache {
         self.dir.join(format!("{}.json", Calibration::key(problem)))
     }
 
-    /// The stored calibration of `problem`, if present, readable and made by
-    /// this solver version for these parameters.
+    /// The stored calibration of `problem`, if present, intact (its
+    /// checksum holds) and made by this solver version for these
+    /// parameters.
     pub fn load(&self, problem: &SphereProblem) -> Option<Calibration> {
-        let text = std::fs::read_to_string(self.path_for(problem)).ok()?;
-        let c: Calibration = serde_json::from_str(&text).ok()?;
-        c.matches(problem).then_some(c)
+        match self.lookup(problem) {
+            Lookup::Found(c) => Some(*c),
+            _ => None,
+        }
+    }
+
+    /// The stored entry of `problem`: found, absent (or for other
+    /// parameters or another solver version), or present but bad (not the
+    /// cache's format, or its checksum fails), with the reason.
+    pub fn lookup(&self, problem: &SphereProblem) -> Lookup {
+        let path = self.path_for(problem);
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            return Lookup::Missing;
+        };
+        let bad = |why: &str| {
+            Lookup::Bad(format!(
+                "calibration cache entry {} {why}: recomputed and stored again",
+                path.display()
+            ))
+        };
+        let Ok(entry) = serde_json::from_str::<Entry>(&text) else {
+            return bad("is not a calibration entry with a checksum (damaged, or an older format)");
+        };
+        let Ok(canonical) = serde_json::to_string(&entry.calibration) else {
+            return bad("cannot be re-serialised");
+        };
+        if format!("{:016x}", fnv1a64(canonical.as_bytes())) != entry.fnv1a64 {
+            return bad("fails its checksum (altered or damaged)");
+        }
+        if entry.calibration.matches(problem) {
+            Lookup::Found(Box::new(entry.calibration))
+        } else {
+            Lookup::Missing
+        }
     }
 
     /// Stores a calibration (atomically: temp file then rename).
@@ -56,10 +119,13 @@ impl CalibrationCache {
         let io = |e: std::io::Error| Error::io(self.dir.display(), e);
         std::fs::create_dir_all(&self.dir).map_err(io)?;
         let path = self.path_for(problem);
-        let tmp = path.with_extension(format!("tmp{}", std::process::id()));
-        let text = serde_json::to_string(c).map_err(|e| Error::io(path.display(), e))?;
-        std::fs::write(&tmp, text).map_err(io)?;
-        std::fs::rename(&tmp, &path).map_err(io)?;
+        let canonical = serde_json::to_string(c).map_err(|e| Error::io(path.display(), e))?;
+        let entry = Entry {
+            fnv1a64: format!("{:016x}", fnv1a64(canonical.as_bytes())),
+            calibration: c.clone(),
+        };
+        let text = serde_json::to_string(&entry).map_err(|e| Error::io(path.display(), e))?;
+        crate::study::atomic::write(&path, text).map_err(io)?;
         Ok(path)
     }
 
@@ -75,6 +141,25 @@ impl CalibrationCache {
         let c = Calibration::compute(problem)?;
         let _ = self.store(problem, &c);
         Ok(c)
+    }
+
+    /// As [`CalibrationCache::get_or_compute`], with whether the entry was
+    /// in the cache and the note of a bad entry that was recomputed.
+    ///
+    /// # Errors
+    /// As [`Calibration::compute`].
+    pub fn get_or_compute_noted(
+        &self,
+        problem: &SphereProblem,
+    ) -> Result<(Calibration, bool, Option<String>)> {
+        let note = match self.lookup(problem) {
+            Lookup::Found(c) => return Ok((*c, true, None)),
+            Lookup::Missing => None,
+            Lookup::Bad(note) => Some(note),
+        };
+        let c = Calibration::compute(problem)?;
+        let _ = self.store(problem, &c);
+        Ok((c, false, note))
     }
 }
 
@@ -112,11 +197,22 @@ mod tests {
         let path = cache.path_for(&p);
         assert!(path.exists());
         assert_eq!(cache.load(&p).unwrap(), c);
-        // A tampered file is returned as is: proof that nothing is recomputed.
+        // An entry stored through the cache is returned as is: proof that
+        // nothing is recomputed.
         let mut t = c.clone();
         t.lambda_equivalent = 42.0;
         cache.store(&p, &t).unwrap();
         assert_eq!(cache.get_or_compute(&p).unwrap().lambda_equivalent, 42.0);
+        // The same change made in the file fails the checksum: recomputed,
+        // with a note naming the file.
+        let text = std::fs::read_to_string(&path).unwrap();
+        std::fs::write(&path, text.replacen("42.0", "63.0", 1)).unwrap();
+        assert!(matches!(cache.lookup(&p), Lookup::Bad(ref n) if n.contains("checksum")));
+        let (again, cached, note) = cache.get_or_compute_noted(&p).unwrap();
+        assert_eq!(again, c);
+        assert!(!cached);
+        assert!(note.unwrap().contains(&path.display().to_string()));
+        assert_eq!(cache.load(&p).unwrap(), c);
         // Other parameters, other files.
         let q =
             SphereProblem::new(1.0, Shape::Sphere { rho: 100.0 }, SolverOptions::coarse()).unwrap();

@@ -163,7 +163,7 @@ fn headline<M: LoadingModel>(
         Target::Separation(d) => d,
         Target::Load(p) => model
             .separation_at_load(p, start)
-            .map_err(|e| e.in_table("program"))?,
+            .map_err(|e| plan.blame_target(e))?,
     };
     let program = LoadingProgram::new(start, closest, plan.points)?;
     let curve = model.curve(&program, plan.quantities.observables())?;

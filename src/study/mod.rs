@@ -23,8 +23,10 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 
+pub mod atomic;
 pub mod cache;
 pub mod measured;
+pub mod memory;
 pub mod model_error;
 pub mod output;
 pub mod plan;

@@ -6,20 +6,17 @@
 use crate::error::{Error, Result};
 use crate::gw::validity::Finding;
 use crate::gw::GwModel;
-use crate::loading::Curve;
+use crate::loading::{Curve, LoadingModel};
 use crate::study::plan::{Plan, Target};
 
-/// The scene field that sets the closest separation.
+/// The scene field that sets the closest separation, as the user wrote it.
 fn program_field(plan: &Plan) -> &'static str {
-    match plan.target {
-        Target::Load(_) => "program.max_load",
-        _ => "program.closest_separation",
-    }
+    plan.target_field()
 }
 
 /// A finding as a warning, or as an error naming the input that drove it
 /// when it makes the result impossible.
-fn judge(plan: &Plan, f: Finding, warnings: &mut Vec<String>) -> Result<()> {
+fn judge(plan: &Plan, f: Finding, closest: f64, warnings: &mut Vec<String>) -> Result<()> {
     let s = &plan.surface;
     match f {
         Finding::DeeperThanRadius {
@@ -49,6 +46,11 @@ fn judge(plan: &Plan, f: Finding, warnings: &mut Vec<String>) -> Result<()> {
         }
         Finding::AreaAboveNominal { fraction } => {
             let ers = s.eta_r_sigma();
+            if ers <= crate::gw::validity::ETA_R_SIGMA_WARN {
+                if let Some(e) = law_blame(plan, fraction, closest) {
+                    return Err(e);
+                }
+            }
             let field = if ers > crate::gw::validity::ETA_R_SIGMA_WARN {
                 "surface.sigma"
             } else {
@@ -68,6 +70,73 @@ fn judge(plan: &Plan, f: Finding, warnings: &mut Vec<String>) -> Result<()> {
             Ok(())
         }
     }
+}
+
+/// An impossible real area that the elastic, non-adhesive (Hertz) law on
+/// the same surface and program keeps below the nominal area: under a
+/// plastic law the yield strength (or hardness) the user wrote drove it,
+/// far outside the plastic fits' range; under another law the moduli or
+/// the adhesion (the one furthest from typical values), not the program.
+/// `None` when the Hertz area is impossible too (then the program or the
+/// surface is to blame).
+fn law_blame(plan: &Plan, fraction: f64, closest: f64) -> Option<Error> {
+    if !closest.is_finite() {
+        return None;
+    }
+    let c = &plan.contact;
+    let hertz = crate::law::Hertz::new(c.radius, c.contact_modulus).ok()?;
+    let elastic = plan.model_with(std::sync::Arc::new(hertz)).ok()?;
+    let area = elastic
+        .state(
+            closest,
+            crate::loading::History::Approach,
+            &crate::loading::Observables::standard(false, true, false),
+        )
+        .ok()?
+        .area()?;
+    let elastic_fraction = area / plan.surface.nominal_area;
+    if !(elastic_fraction <= 1.0) {
+        return None;
+    }
+    let Some(plasticity) = plan.plasticity.as_ref() else {
+        // An adhesive or shaped law spreads the contacts where Hertz does
+        // not: the moduli or the adhesion drove it.
+        let pick = crate::study::scene::most_extreme_input(
+            &plan.scene,
+            &["materials.e1", "materials.e2", "adhesion.w", "adhesion.z0"],
+        );
+        return Some(Error::invalid(
+            pick,
+            format!(
+                "the law's real contact area would be {fraction:.3e} x the nominal area \
+                 (impossible), where the non-adhesive Hertz law on the same surface and program \
+                 gives {elastic_fraction:.3e} x: {pick} is the input furthest from typical \
+                 values (a gold microswitch: E = 79e9 Pa, w = 0.5 J/m^2, z0 = 0.3e-9 m)"
+            ),
+        ));
+    };
+    let (field, value) = if plan.scene.materials.hardness.is_some() {
+        ("materials.hardness", plasticity.hardness())
+    } else {
+        ("materials.yield_strength", plasticity.yield_strength())
+    };
+    let psi = crate::material::plastic::plasticity_index(
+        c.contact_modulus,
+        plasticity.hardness(),
+        plan.surface.sigma,
+        plan.surface.radius,
+    )
+    .ok()?;
+    Some(Error::invalid(
+        field,
+        format!(
+            "{field} = {value:e} Pa makes the plastic law's real contact area {fraction:.3e} x \
+             the nominal area (impossible), where the elastic (Hertz) law on the same surface \
+             and program gives {elastic_fraction:.3e} x: the plastic fit is extrapolated far \
+             beyond its range (plasticity index psi = {psi:.3e}; metals give 0.1 .. 100, \
+             yield strengths of 1e7 .. 1e10 Pa)"
+        ),
+    ))
 }
 
 /// The plan's GW model with its own law (the findings need no table).
@@ -96,7 +165,7 @@ pub fn plan_warnings(plan: &Plan) -> Result<Vec<String>> {
         if plan.sphere.is_some() && !matches!(f, Finding::EtaRSigma { .. }) {
             continue;
         }
-        judge(plan, f, &mut warnings)?;
+        judge(plan, f, closest, &mut warnings)?;
     }
     Ok(warnings)
 }
@@ -158,7 +227,7 @@ pub fn run_warnings(
         findings.extend(model.findings_of(curve));
     }
     for f in findings {
-        judge(plan, f, &mut warnings)?;
+        judge(plan, f, curve.program.closest, &mut warnings)?;
     }
     if let Some(e) = *hysteresis_energy {
         // The energy's error scale: the budget times int |P| over both legs.

@@ -85,10 +85,22 @@ pub fn parse(bytes: &[u8]) -> Result<HeightMap> {
         .checked_mul(cols)
         .ok_or_else(|| bad("the shape overflows"))?;
     let data = &bytes[start + len..];
-    if data.len() < n * size {
+    let want = n
+        .checked_mul(size)
+        .ok_or_else(|| bad("the shape overflows"))?;
+    if data.len() < want {
         return Err(bad(format!(
             "truncated data: {} bytes for {rows} x {cols} values of {size} bytes",
             data.len()
+        )));
+    }
+    if data.len() > want {
+        // Stray bytes after the array: a damaged or mislabelled file (the
+        // shape in the header does not describe the data).
+        return Err(bad(format!(
+            "{} stray bytes after the {rows} x {cols} values of {size} bytes (the header's \
+             shape does not describe the data)",
+            data.len() - want
         )));
     }
     let heights: Vec<f64> = if size == 8 {

@@ -14,6 +14,8 @@ use crate::error::{Error, Result};
 /// rows (the first line whose count differs), or any reason
 /// [`HeightMap::new`] gives (1-D, too small, NaN or infinite heights).
 pub fn parse(text: &str) -> Result<HeightMap> {
+    // A UTF-8 byte-order mark (spreadsheets write one) is no height.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut heights = Vec::new();
     let mut cols = 0;
     let mut rows = 0;

@@ -25,7 +25,7 @@ pub fn run(args: &MapArgs) -> crate::CliResult {
     let svg = dir.join("map.svg");
     write_adhesion_map(table, args.tolerance, &svg)?;
     let csv = dir.join("map.csv");
-    std::fs::write(&csv, adhesion_map_csv(table, args.tolerance))
+    asperity::study::atomic::write(&csv, adhesion_map_csv(table, args.tolerance))
         .map_err(|e| crate::CliError::Failed(format!("--out: {}: {e}", csv.display())))?;
     println!(
         "adhesion map at tolerance {:e} ({} Tabor parameters x {} loads; {})",

@@ -191,15 +191,15 @@ pub fn write_outputs(
     }
     let mut written = Vec::new();
     let csv = dir.join("curve.csv");
-    std::fs::write(&csv, curve).map_err(io)?;
+    crate::study::atomic::write(&csv, curve).map_err(io)?;
     written.push(csv);
     if let Some(text) = mc {
         let path = dir.join("montecarlo.csv");
-        std::fs::write(&path, text).map_err(io)?;
+        crate::study::atomic::write(&path, text).map_err(io)?;
         written.push(path);
     }
     let json = dir.join("summary.json");
-    std::fs::write(&json, summary.to_json() + "\n").map_err(io)?;
+    crate::study::atomic::write(&json, summary.to_json() + "\n").map_err(io)?;
     written.push(json);
     for chart in charts {
         let path = dir.join(&chart.0);

@@ -53,9 +53,11 @@ impl Budget {
         START_TAIL_FRACTION * self.rtol
     }
 
-    /// Relative tolerance of a Chebyshev table of the law.
+    /// Relative tolerance of a Chebyshev table of the law, kept in the
+    /// table's range `[1e-13, 1e-2]` (`0.1 x 0.1` rounds just above
+    /// `1e-2`, which refused `rtol = 0.1`, inside the scene's range).
     pub fn table(&self) -> f64 {
-        TABLE_TOLERANCE_FRACTION * self.rtol
+        (TABLE_TOLERANCE_FRACTION * self.rtol).clamp(1e-13, 1e-2)
     }
 
     /// Separation tolerance of the root and minimum searches (the pull-off,

@@ -71,7 +71,9 @@ impl Plan {
             quantities = quantities.with_electrical(r, o.resistance, heating)?;
         }
         let plasticity = scene.plasticity()?;
-        let warnings = plasticity_decision(plasticity, &surface, &contact, &law, &mut decisions)?;
+        let mut warnings =
+            plasticity_decision(plasticity, &surface, &contact, &law, &mut decisions)?;
+        warnings.extend(calibration.and_then(|c| c.note.clone()));
         let model = model.with_accuracy(accuracy);
         let (target, start, listed) = program(scene, mode, &budget, &model, &mut decisions)?;
         let tabulation = tabulation(&law, &model, start, target, &budget, mode);

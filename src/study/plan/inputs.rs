@@ -32,6 +32,9 @@ pub struct CalibrationInput {
     pub cached: bool,
     /// Its cache file.
     pub path: PathBuf,
+    /// Why the cache's entry was not used (damaged or altered: it failed
+    /// its checksum) and was recomputed; a warning of the run.
+    pub note: Option<String>,
 }
 
 /// What is still to be gathered when a run starts, for a preview.
@@ -105,14 +108,12 @@ impl Inputs {
         let calibration = match problem(scene)? {
             Some(p) => {
                 let cache = CalibrationCache::default_location();
-                let cached = cache.load(&p);
+                let (calibration, cached, note) = cache.get_or_compute_noted(&p)?;
                 Some(CalibrationInput {
-                    cached: cached.is_some(),
+                    cached,
                     path: cache.path_for(&p),
-                    calibration: match cached {
-                        Some(c) => c,
-                        None => cache.get_or_compute(&p)?,
-                    },
+                    calibration,
+                    note,
                 })
             }
             None => None,
@@ -142,6 +143,7 @@ impl Inputs {
                     calibration,
                     cached: true,
                     path,
+                    note: None,
                 }),
             }),
             None => Err(Pending::Calibration { mu: p.mu(), path }),

@@ -283,7 +283,30 @@ impl Plan {
             Target::Separation(d) => Ok(d),
             Target::Load(p) => model
                 .separation_at_load(p, self.start)
-                .map_err(|e| e.in_table("program")),
+                .map_err(|e| self.blame_target(e)),
+        }
+    }
+
+    /// The scene key that sets how far the program goes, as the user wrote
+    /// it: `program.loads` or `program.separations` for listed states,
+    /// `program.max_load` or `program.closest_separation` otherwise.
+    pub fn target_field(&self) -> &'static str {
+        match (&self.target, &self.listed) {
+            (Target::Load(_), Some(ProgramTarget::Loads(_))) => "program.loads",
+            (Target::Load(_), _) => "program.max_load",
+            (_, Some(ProgramTarget::Separations(_))) => "program.separations",
+            _ => "program.closest_separation",
+        }
+    }
+
+    /// An error of the separation-at-a-load search (naming the core's
+    /// `max_load`) renamed to [`Plan::target_field`]; other fields put in
+    /// `[program]`.
+    pub(crate) fn blame_target(&self, e: crate::Error) -> crate::Error {
+        if e.field() == Some("max_load") {
+            e.renamed(self.target_field())
+        } else {
+            e.in_table("program")
         }
     }
 }

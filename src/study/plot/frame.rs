@@ -117,7 +117,7 @@ pub fn finish_svg_at(path: &Path, title: &str, width: u32, height: u32, scale: u
         .replace('<', "&lt;")
         .replace('>', "&gt;");
     let out = format!("{head}>\n<title>{escaped}</title>{}", &svg[head_end + 1..]);
-    std::fs::write(path, out).map_err(io)
+    crate::study::atomic::write(path, out).map_err(io)
 }
 
 /// The legend corner (fractions of the plot: x from the left, y from the

@@ -15,6 +15,16 @@ use crate::error::{finite, positive, Allowed, Error, Result};
 use crate::material::plastic::Plasticity;
 use crate::named::Named;
 
+/// Most points of a tabulated profile (`law.profile_r`): the shaped law's
+/// cost grows with the table (about [`TABULATED_CPU_S_PER_POINT`] each: a
+/// 100,000-point profile ran for many minutes without a word).
+pub const MAX_TABULATED_POINTS: usize = 2000;
+
+/// CPU seconds per point of a tabulated profile's shaped-law run, measured
+/// on `conical-summits.toml` with a 400-point paraboloid table (3.05 s, a
+/// release build; 0.55 s at 100 points).
+pub const TABULATED_CPU_S_PER_POINT: f64 = 7.6e-3;
+
 /// Where the program's approach stops, as the scene gives it.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ProgramTarget {
@@ -84,7 +94,130 @@ impl LawSpec {
     }
 }
 
+/// The contact radius `a` (m) where the profile's non-adhesive interference
+/// `delta_0(a)` reaches `depth` (m): geometric bisection (the sphere's
+/// `delta_0` grows without bound as `a -> R`); infinite when no `a` below
+/// 1e30 m reaches `depth`; `None` for the flat punch (its contact radius
+/// is fixed).
+fn contact_radius_at(profile: &Profile, depth: f64) -> Option<f64> {
+    let hi_max = match profile {
+        Profile::Flat { .. } => return None,
+        Profile::Sphere { radius } => *radius,
+        _ => 1e30,
+    };
+    let (mut lo, mut hi) = (1e-300_f64, hi_max);
+    if !(profile.delta0(hi) >= depth || matches!(profile, Profile::Sphere { .. })) {
+        // Wider than any length here: a profile too flat for the depth.
+        return Some(f64::INFINITY);
+    }
+    for _ in 0..200 {
+        let mid = (lo * hi).sqrt();
+        if !(mid > lo && mid < hi) {
+            break;
+        }
+        if profile.delta0(mid) >= depth {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(hi)
+}
+
 impl Scene {
+    /// A shaped law's profile against the surface's scales: at an
+    /// interference of one `surface.sigma` its contact radius must lie
+    /// between `adhesion.z0` (a narrower contact is a needle thinner than
+    /// the range of the surface forces, outside continuum contact) and the
+    /// summit spacing `surface.density^(-1/2)` (a wider one merges with its
+    /// neighbours); a true sphere must be at least `surface.sigma` in
+    /// radius (a smaller one is pressed past its equator by typical
+    /// summits). Before, `coefficient = 1e300` on a power law ran for
+    /// minutes and a 1 nm sphere ran on at a/R -> 1 without a word.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the profile key (`law.radius`,
+    /// `law.tan_angle`, `law.coefficient`) with its allowed range.
+    fn check_profile_scale(&self, profile: &Profile) -> Result<()> {
+        let s = &self.surface;
+        let (sigma, density, z0) = (s.sigma, s.density, self.adhesion.z0);
+        if s.topography.is_some() || !(sigma > 0.0 && density > 0.0 && z0 > 0.0) {
+            return Ok(());
+        }
+        let spacing = density.powf(-0.5);
+        let (lo_a, hi_a) = (z0, spacing);
+        let why = |a: f64| {
+            format!(
+                "at an interference of surface.sigma = {sigma:e} m the profile's contact radius \
+                 is {a:.3e} m, outside [adhesion.z0, surface.density^(-1/2)] = [{lo_a:e}, \
+                 {hi_a:.3e}] m (thinner than the range of the surface forces, or wider than the \
+                 summit spacing)"
+            )
+        };
+        // Each key's range from the same bounds on `a` (closed forms of
+        // `delta_0`: paraboloid a^2/R, cone (pi/2) a tan(beta), power k A a^n).
+        let refuse = |key: &str, a: f64, lo: f64, hi: f64, unit: &str| {
+            Err(Error::invalid(
+                key,
+                format!("{}: allowed {lo:.3e} ..= {hi:.3e} {unit} here", why(a)),
+            ))
+        };
+        match profile {
+            Profile::Sphere { radius } if *radius < sigma => Err(Error::invalid(
+                "law.radius",
+                format!(
+                    "a true sphere of radius {radius:e} m is smaller than surface.sigma = \
+                     {sigma:e} m: typical summits press it past its equator (a/R -> 1), where \
+                     the profile means nothing; allowed >= {sigma:e} m (surface.sigma)"
+                ),
+            )),
+            Profile::Flat { radius } if !(*radius >= lo_a && *radius <= hi_a) => {
+                Err(Error::invalid(
+                    "law.radius",
+                    format!(
+                        "a flat punch of radius {radius:e} m is outside [adhesion.z0, \
+                         surface.density^(-1/2)] = [{lo_a:e}, {hi_a:.3e}] m"
+                    ),
+                ))
+            }
+            _ => {
+                let Some(a) = contact_radius_at(profile, sigma) else {
+                    return Ok(());
+                };
+                if a >= lo_a && a <= hi_a {
+                    return Ok(());
+                }
+                match profile {
+                    Profile::Paraboloid { .. } | Profile::Sphere { .. } => refuse(
+                        "law.radius",
+                        a,
+                        (lo_a * lo_a / sigma).max(sigma),
+                        hi_a * hi_a / sigma,
+                        "m",
+                    ),
+                    Profile::Cone { .. } => refuse(
+                        "law.tan_angle",
+                        a,
+                        2.0 * sigma / (std::f64::consts::PI * hi_a),
+                        2.0 * sigma / (std::f64::consts::PI * lo_a),
+                        "",
+                    ),
+                    Profile::Power { exponent, .. } => {
+                        let k = crate::axisym::profile::power_law_factor(*exponent);
+                        refuse(
+                            "law.coefficient",
+                            a,
+                            sigma / (k * hi_a.powf(*exponent)),
+                            sigma / (k * lo_a.powf(*exponent)),
+                            &format!("m^(1-{exponent})"),
+                        )
+                    }
+                    _ => Err(Error::invalid("law.profile_f", why(a))),
+                }
+            }
+        }
+    }
+
     /// The program's target.
     ///
     /// # Errors
@@ -194,7 +327,24 @@ impl Scene {
         self.plasticity()?;
         match self.law.kind {
             LawName::Shaped => {
-                self.law.profile(self.surface.radius)?;
+                if let Some(r) = &self.law.profile_r {
+                    if r.len() > MAX_TABULATED_POINTS {
+                        let cpu = TABULATED_CPU_S_PER_POINT * r.len() as f64;
+                        return Err(Error::invalid(
+                            "law.profile_r",
+                            format!(
+                                "{} points: a shaped law on a tabulated profile costs about \
+                                 {cpu:.0} s of CPU at this size ({:.1} ms per point, measured \
+                                 at 400 points); allowed 3 ..= {MAX_TABULATED_POINTS} points \
+                                 (resample the profile: PCHIP needs far fewer)",
+                                r.len(),
+                                1e3 * TABULATED_CPU_S_PER_POINT
+                            ),
+                        ));
+                    }
+                }
+                let profile = self.law.profile(self.surface.radius)?;
+                self.check_profile_scale(&profile)?;
             }
             _ => {
                 if let Some(k) = self.law.given_profile_keys().first() {

@@ -14,6 +14,13 @@ impl Scene {
     /// [`Error::OutOfRange`] naming the field for bad values.
     pub fn from_toml(text: &str) -> Result<Scene> {
         let scene: Scene = toml::from_str(text).map_err(|e| parse_error(text, &e))?;
+        // An absent number reads as NaN (`surface.nominal_area` and its
+        // kind): a NaN the user wrote must not pass for "not given".
+        if let Ok(table) = text.parse::<toml::Table>() {
+            if let Some(path) = first_nan(&table, "") {
+                finite(&path, f64::NAN)?;
+            }
+        }
         scene.validate()?;
         Ok(scene)
     }
@@ -339,5 +346,26 @@ fn field_at(text: &str, line_no: usize) -> Option<String> {
     Some(match table {
         Some(t) => format!("{t}.{key}"),
         None => key.to_string(),
+    })
+}
+
+/// The dotted path of the first NaN number written in `table` (an array
+/// names its key).
+fn first_nan(table: &toml::Table, prefix: &str) -> Option<String> {
+    fn in_value(v: &toml::Value, path: &str) -> Option<String> {
+        match v {
+            toml::Value::Float(x) if x.is_nan() => Some(path.to_string()),
+            toml::Value::Array(xs) => xs.iter().find_map(|x| in_value(x, path)),
+            toml::Value::Table(t) => first_nan(t, path),
+            _ => None,
+        }
+    }
+    table.iter().find_map(|(k, v)| {
+        let path = if prefix.is_empty() {
+            k.clone()
+        } else {
+            format!("{prefix}.{k}")
+        };
+        in_value(v, &path)
     })
 }

@@ -347,7 +347,8 @@ pub struct LawSpec {
     /// Shaped power law: the coefficient `A` (m^(1-n)), > 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coefficient: Option<f64>,
-    /// Shaped tabulated profile: radii `r` (m), ascending from 0.
+    /// Shaped tabulated profile: radii `r` (m), ascending from 0; 3 ..=
+    /// 2000 points (`MAX_TABULATED_POINTS`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub profile_r: Option<Vec<f64>>,
     /// Shaped tabulated profile: heights `f(r)` (m) at `profile_r`.

@@ -262,9 +262,7 @@ fn write_sorted(path: &Path, header: &str, rows: &BTreeMap<usize, String>) -> Re
         text.push_str(r);
         text.push('\n');
     }
-    let tmp = path.with_extension("csv.tmp");
-    std::fs::write(&tmp, text).map_err(|e| io_err(&tmp, e))?;
-    std::fs::rename(&tmp, path).map_err(|e| io_err(path, e))
+    crate::study::atomic::write(path, text).map_err(|e| io_err(path, e))
 }
 
 /// Joins the results of shard directories into `out`, checking that they
