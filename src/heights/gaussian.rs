@@ -50,6 +50,13 @@ impl HeightDistribution for Gaussian {
         normal::tail(s)
     }
 
+    /// `sqrt(r^2 + 2 drop)`, `r = max(s, 0)`: where `-s^2/2` has fallen by
+    /// `drop` from its value at `r`.
+    fn decay_end(&self, s: f64, drop: f64) -> f64 {
+        let r = s.max(0.0);
+        (r * r + 2.0 * drop).sqrt()
+    }
+
     fn support(&self) -> (f64, f64) {
         (f64::NEG_INFINITY, f64::INFINITY)
     }
