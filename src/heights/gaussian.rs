@@ -35,6 +35,11 @@ impl HeightDistribution for Gaussian {
         normal::pdf(s)
     }
 
+    /// [`normal::pdf_batch`]: within 4e-16 of `pdf`, in vector registers.
+    fn pdf_batch(&self, s: &[f64], out: &mut [f64]) {
+        normal::pdf_batch(s, out);
+    }
+
     /// `-s^2/2 - ln sqrt(2 pi)`.
     fn log_pdf(&self, s: f64) -> f64 {
         -0.5 * s * s - LN_SQRT_2PI

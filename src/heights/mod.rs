@@ -32,6 +32,16 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     /// Probability density `phi(s)`.
     fn pdf(&self, s: f64) -> f64;
 
+    /// [`pdf`](HeightDistribution::pdf) of every `s[i]` into `out[i]` (the
+    /// shorter slice bounds the work): a quadrature panel's nodes in one
+    /// call. Default: one `pdf` after another; the Gaussian's is written
+    /// for vector registers.
+    fn pdf_batch(&self, s: &[f64], out: &mut [f64]) {
+        for (o, &x) in out.iter_mut().zip(s) {
+            *o = self.pdf(x);
+        }
+    }
+
     /// `ln phi(s)`, finite where `phi(s)` underflows (default: `ln` of
     /// [`pdf`](HeightDistribution::pdf), `-inf` there).
     fn log_pdf(&self, s: f64) -> f64 {
