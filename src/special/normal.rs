@@ -48,7 +48,7 @@ pub fn pdf(h: f64) -> f64 {
 /// [`pdf`] of every `h[i]` into `out[i]` (the shorter slice bounds the
 /// work), written without branches so the compiler keeps the lanes in
 /// vector registers: `exp` by Cody–Waite reduction and a degree-13 Taylor
-/// polynomial ([`exp_lane`]), the rounding error of `h^2` restored as in
+/// polynomial (`exp_lane`), the rounding error of `h^2` restored as in
 /// [`exp_minus_half_sq`]. Within 4e-16 relative of [`pdf`] where that is
 /// a normal number (unit test); 0 past `|h| ~ 38.7`, NaN for NaN.
 pub fn pdf_batch(h: &[f64], out: &mut [f64]) {
