@@ -39,6 +39,16 @@ impl PerAsperity for SpotConductance {
             g
         }
     }
+
+    /// [`SpotResistance::conductance_batch`], squared when asked.
+    fn value_batch(&self, _load: &[f64], radius: &[f64], out: &mut [f64]) {
+        self.spot.conductance_batch(radius, out);
+        if self.squared {
+            for g in out.iter_mut() {
+                *g *= *g;
+            }
+        }
+    }
 }
 
 /// The observables a resistance needs, and how to turn totals into one.

@@ -148,3 +148,69 @@ fn fixed_rule_converges_as_panels_grow() {
     }
     assert!(last < 1e-10, "{last}");
 }
+
+/// A per-asperity observable that forces quadrature (`pi a^2` again).
+#[derive(Debug)]
+struct AreaAgain;
+
+impl crate::loading::PerAsperity for AreaAgain {
+    fn name(&self) -> &str {
+        "area_again"
+    }
+    fn value(&self, s: &crate::law::ContactState) -> f64 {
+        s.area()
+    }
+}
+
+/// The root rule (`Method::Auto` with an extra observable, Hertz smooth in
+/// `sqrt(delta)`): on Gaussian and exponential heights, across and below
+/// the bulk, every total within its tolerance of the closed forms, with
+/// error estimates that cover the deviation; fewer evaluations at looser
+/// tolerances no more than at tighter ones.
+#[test]
+fn root_rule_meets_the_tolerance_against_closed_forms() {
+    use crate::heights::{Gaussian, HeightDistribution};
+    use crate::loading::Observable;
+    let s = RoughSurface::gold_microswitch();
+    let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
+    let extra = Observables::ALL
+        .with(Observable::Custom(Arc::new(AreaAgain)))
+        .unwrap();
+    let dists: [Arc<dyn HeightDistribution>; 2] =
+        [Arc::new(Gaussian::new()), Arc::new(Exponential::new())];
+    for dist in dists {
+        let m = GwModel::new(s, dist.clone(), hertz.clone()).unwrap();
+        let mut last = 0;
+        for tol in [1e-3, 1e-6, 1e-8, 1e-11] {
+            let acc = Accuracy::new(tol).unwrap();
+            let mut evaluations = 0;
+            for h in [-3.0, -0.7, 0.0, 0.5, 2.0, 6.0] {
+                let d = h * s.sigma;
+                let m = m.clone().with_accuracy(acc);
+                let exact = m.state(d, History::Approach, &Observables::ALL).unwrap();
+                assert_eq!(exact.method, MethodUsed::ClosedForm);
+                let root = m.state(d, History::Approach, &extra).unwrap();
+                assert_eq!(root.method, MethodUsed::Quadrature);
+                evaluations += root.evaluations;
+                let pairs = [
+                    (root.load(), exact.load(), root.totals.error(0)),
+                    (root.area(), exact.area(), root.totals.error(1)),
+                    (root.count(), exact.count(), root.totals.error(2)),
+                    (root.totals.get(3), exact.area(), root.totals.error(3)),
+                ];
+                for (a, b, e) in pairs {
+                    let (a, b, e) = (a.unwrap(), b.unwrap(), e.unwrap());
+                    let dev = (a - b).abs();
+                    assert!(
+                        dev <= tol * b.abs() + 1e-13 * b.abs(),
+                        "{} tol {tol} h {h}: {a} vs {b}",
+                        dist.name()
+                    );
+                    assert!(dev <= e + 1e-13 * b.abs(), "estimate {e} < {dev}");
+                }
+            }
+            assert!(evaluations >= last, "{}: {evaluations}", dist.name());
+            last = evaluations;
+        }
+    }
+}

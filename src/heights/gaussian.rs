@@ -35,6 +35,11 @@ impl HeightDistribution for Gaussian {
         normal::pdf(s)
     }
 
+    /// [`normal::pdf_batch`]: within 4e-16 of `pdf`, in vector registers.
+    fn pdf_batch(&self, s: &[f64], out: &mut [f64]) {
+        normal::pdf_batch(s, out);
+    }
+
     /// `-s^2/2 - ln sqrt(2 pi)`.
     fn log_pdf(&self, s: f64) -> f64 {
         -0.5 * s * s - LN_SQRT_2PI
@@ -48,6 +53,13 @@ impl HeightDistribution for Gaussian {
 
     fn tail(&self, s: f64) -> f64 {
         normal::tail(s)
+    }
+
+    /// `sqrt(r^2 + 2 drop)`, `r = max(s, 0)`: where `-s^2/2` has fallen by
+    /// `drop` from its value at `r`.
+    fn decay_end(&self, s: f64, drop: f64) -> f64 {
+        let r = s.max(0.0);
+        (r * r + 2.0 * drop).sqrt()
     }
 
     fn support(&self) -> (f64, f64) {

@@ -32,6 +32,16 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     /// Probability density `phi(s)`.
     fn pdf(&self, s: f64) -> f64;
 
+    /// [`pdf`](HeightDistribution::pdf) of every `s[i]` into `out[i]` (the
+    /// shorter slice bounds the work): a quadrature panel's nodes in one
+    /// call. Default: one `pdf` after another; the Gaussian's is written
+    /// for vector registers.
+    fn pdf_batch(&self, s: &[f64], out: &mut [f64]) {
+        for (o, &x) in out.iter_mut().zip(s) {
+            *o = self.pdf(x);
+        }
+    }
+
     /// `ln phi(s)`, finite where `phi(s)` underflows (default: `ln` of
     /// [`pdf`](HeightDistribution::pdf), `-inf` there).
     fn log_pdf(&self, s: f64) -> f64 {
@@ -43,6 +53,28 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     /// far-tail integrals with it.
     fn pdf_ratio(&self, s: f64, r: f64) -> f64 {
         (self.log_pdf(s) - self.log_pdf(r)).exp()
+    }
+
+    /// Height (at most the support's upper end) above `s` where `ln phi`
+    /// has fallen by `drop` below its value at `max(s, 0)` (the densities
+    /// are standardised: the bulk is near 0), so that the density beyond
+    /// carries a fraction of about `exp(-drop)` of the integrals from `s`
+    /// up. Default: steps doubling from `1/(1 + max(s, 0))` until
+    /// [`log_pdf`](HeightDistribution::log_pdf) has fallen that far.
+    fn decay_end(&self, s: f64, drop: f64) -> f64 {
+        let (_, hi) = self.support();
+        let r = s.max(0.0);
+        let target = self.log_pdf(r) - drop;
+        let mut step = 1.0 / (1.0 + r);
+        let mut top = r + step;
+        for _ in 0..64 {
+            if top >= hi || !(self.log_pdf(top) > target) {
+                break;
+            }
+            step *= 2.0;
+            top = r + step;
+        }
+        top.min(hi)
     }
 
     /// Tail probability `P(S > s) = F_0(s)`, accurate in relative terms far

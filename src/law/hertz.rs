@@ -115,6 +115,11 @@ impl AsperityLaw for Hertz {
         true
     }
 
+    /// `P = (4/3) E* sqrt(R) t^3`, `a = sqrt(R) t`: polynomials in `t`.
+    fn smooth_in_root(&self) -> bool {
+        true
+    }
+
     fn attach_interference(&self) -> f64 {
         0.0
     }

@@ -269,6 +269,18 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         false
     }
 
+    /// Whether the approach state is, between [`breakpoints`](AsperityLaw::breakpoints),
+    /// a smooth function of `t = sqrt(delta - cutoff)` (m^(1/2)), with the
+    /// contact starting at the [cutoff](AsperityLaw::cutoff_interference):
+    /// Hertz (`P ~ t^3`, `a ~ t`) and the elastic-plastic fits (Hertz up to
+    /// the first breakpoint, powers of `delta` beyond). Integrators then
+    /// integrate in `t` instead of the height, where the contact onset's
+    /// square-root singularity is gone and a few fixed high-order panels
+    /// meet the tolerance (`GwModel`). Default `false` (always safe).
+    fn smooth_in_root(&self) -> bool {
+        false
+    }
+
     /// Whether [`state_after`](AsperityLaw::state_after) depends on the
     /// value of `delta_max` beyond crossing the attach interference (plastic
     /// laws: the permanent flattening). Path-following sums

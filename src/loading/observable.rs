@@ -31,6 +31,16 @@ pub trait PerAsperity: Send + Sync + fmt::Debug {
     fn name(&self) -> &str;
     /// The asperity's contribution, from its state (SI units of the total).
     fn value(&self, state: &ContactState) -> f64;
+
+    /// [`value`](PerAsperity::value) of the states `(load[i], radius[i])`
+    /// into `out[i]` (the shortest slice bounds the work), bit for bit: a
+    /// quadrature panel's nodes in one call. Default: one `value` after
+    /// another; implement it with a loop the compiler vectorises.
+    fn value_batch(&self, load: &[f64], radius: &[f64], out: &mut [f64]) {
+        for ((o, &load), &radius) in out.iter_mut().zip(load).zip(radius) {
+            *o = self.value(&ContactState { load, radius });
+        }
+    }
 }
 
 /// One observable.
@@ -179,6 +189,54 @@ impl Observables {
     /// radius: [`AsperityLaw::load_after`](crate::law::AsperityLaw::load_after)).
     pub fn load_only(&self) -> bool {
         self.load && !self.area && !self.count && self.extras.is_empty()
+    }
+
+    /// [`evaluate`](Observables::evaluate) of the states `(load[k],
+    /// radius[k])` times `weight[k]` into `out[k]`, bit for bit the same
+    /// products: a quadrature panel in one call, each observable over all
+    /// nodes at once ([`PerAsperity::value_batch`]).
+    pub fn evaluate_batch<const N: usize>(
+        &self,
+        load: &[f64; N],
+        radius: &[f64; N],
+        weight: &[f64; N],
+        out: &mut [[f64; SLOTS]; N],
+    ) {
+        for k in 0..N {
+            let s = ContactState {
+                load: load[k],
+                radius: radius[k],
+            };
+            let w = weight[k];
+            let mut v = [0.0; SLOTS];
+            if self.load {
+                v[0] = s.load * w;
+            }
+            if self.area {
+                v[1] = s.area() * w;
+            }
+            if self.count {
+                v[2] = f64::from(u8::from(s.radius > 0.0)) * w;
+            }
+            out[k] = v;
+        }
+        let mut extra = [0.0; N];
+        for (j, e) in self.extras.iter().enumerate() {
+            match e {
+                Observable::Custom(c) => c.value_batch(load, radius, &mut extra),
+                other => {
+                    for k in 0..N {
+                        extra[k] = other.value(&ContactState {
+                            load: load[k],
+                            radius: radius[k],
+                        });
+                    }
+                }
+            }
+            for k in 0..N {
+                out[k][3 + j] = extra[k] * weight[k];
+            }
+        }
     }
 
     /// Every slot's value for one asperity; unused slots are 0.

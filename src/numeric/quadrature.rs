@@ -122,18 +122,25 @@ pub fn kronrod21_n<const N: usize, F: FnMut(f64) -> [f64; N]>(
         fv[j] = f(c - dx);
         fv[20 - j] = f(c + dx);
     }
-    kronrod21_sums(&fv, h)
+    kronrod21_sums(&fv, h, &[true; N])
 }
 
 /// The K21 sums of one panel of half-width `h` from its values `fv` at
 /// the ascending abscissae ([`kronrod21_nodes`]: `fv[j]`, `fv[20 - j]` at
 /// `c -+ h XGK[j]`, `fv[10]` at the centre).
 #[inline]
-fn kronrod21_sums<const N: usize>(fv: &[[f64; N]; 21], h: f64) -> ([f64; N], [f64; N], [f64; N]) {
+fn kronrod21_sums<const N: usize>(
+    fv: &[[f64; N]; 21],
+    h: f64,
+    present: &[bool; N],
+) -> ([f64; N], [f64; N], [f64; N]) {
     let mut value = [0.0; N];
     let mut error = [0.0; N];
     let mut magnitude = [0.0; N];
     for i in 0..N {
+        if !present[i] {
+            continue;
+        }
         let fc = fv[10][i];
         let mut resk = WGK[10] * fc;
         let mut resg = 0.0;
@@ -166,7 +173,7 @@ fn kronrod21_sums<const N: usize>(fv: &[[f64; N]; 21], h: f64) -> ([f64; N], [f6
             } else if floored && resasc * x <= floor {
                 floor
             } else {
-                resasc * x.powf(1.5).min(1.0)
+                resasc * (x * x.sqrt()).min(1.0)
             };
         }
         if floored {
@@ -207,10 +214,47 @@ pub fn kronrod21_batch<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N]; 21])
     a: f64,
     b: f64,
 ) -> ([f64; N], [f64; N], [f64; N]) {
+    kronrod21_batch_masked(f, a, b, &[true; N])
+}
+
+/// [`kronrod21_batch`] summing only the components marked `present` (the
+/// others are 0): integrands with empty slots skip their sums.
+#[inline]
+pub fn kronrod21_batch_masked<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N]; 21])>(
+    f: &mut F,
+    a: f64,
+    b: f64,
+    present: &[bool; N],
+) -> ([f64; N], [f64; N], [f64; N]) {
     let x = kronrod21_nodes(a, b);
     let mut fv = [[0.0; N]; 21];
     f(&x, &mut fv);
-    kronrod21_sums(&fv, 0.5 * (b - a))
+    kronrod21_sums(&fv, 0.5 * (b - a), present)
+}
+
+/// One K21 panel on each interval of `points` (ascending; empty intervals
+/// skipped), only the `present` components summed: per component the
+/// total (value, error estimate, `int |f|`) and the evaluations. The
+/// first pass of an adaptive integration that usually needs no second.
+pub fn kronrod21_pieces<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N]; 21])>(
+    f: &mut F,
+    points: &[f64],
+    present: &[bool; N],
+) -> ([f64; N], [f64; N], [f64; N], usize) {
+    let (mut value, mut error, mut magnitude) = ([0.0; N], [0.0; N], [0.0; N]);
+    let mut evaluations = 0;
+    for w in points.windows(2) {
+        if w[1] > w[0] {
+            let (v, e, m) = kronrod21_batch_masked(f, w[0], w[1], present);
+            evaluations += 21;
+            for i in 0..N {
+                value[i] += v[i];
+                error[i] += e[i];
+                magnitude[i] += m[i];
+            }
+        }
+    }
+    (value, error, magnitude, evaluations)
 }
 
 #[derive(Debug, Clone, Copy)]

@@ -212,6 +212,12 @@ macro_rules! plastic_asperity_law {
                 $crate::law::plastic::unloading::contact_loss_peaks(self, recovery)
             }
 
+            /// Hertz below the first breakpoint, powers of `delta` (smooth
+            /// in `sqrt(delta)` away from 0) between the others.
+            fn smooth_in_root(&self) -> bool {
+                true
+            }
+
             /// The flattening is permanent: unloading depends on `delta_max`.
             fn remembers_maximum(&self) -> bool {
                 true

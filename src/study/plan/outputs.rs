@@ -36,14 +36,17 @@ pub(super) fn resistance(
 }
 
 /// The integration accuracy of `model`: the budget's tolerance, closed
-/// forms where the law and the distribution have them (everything on:
-/// quadrature everywhere).
+/// forms where the law and the distribution have them, and
+/// [`Method::Auto`] too for laws smooth in the root of their interference
+/// (Kogut–Etsion, ...: their approach totals by the cheaper root rule of
+/// [`GwModel`]); everything on: adaptive quadrature in the height
+/// everywhere.
 ///
 /// # Errors
 /// [`Error::OutOfRange`](crate::Error::OutOfRange) naming `accuracy.rtol`.
 pub fn accuracy_of(model: &GwModel, budget: &Budget, mode: PlanMode) -> Result<Accuracy> {
     let closed = model.has_closed_form(&Observables::ALL);
-    let method = if closed && mode == PlanMode::Planned {
+    let method = if (closed || model.law().smooth_in_root()) && mode == PlanMode::Planned {
         Method::Auto
     } else {
         Method::Quadrature
@@ -76,7 +79,7 @@ pub(super) fn outputs(
     let distribution = model.distribution();
     let evaluation = if distribution.sample_points().is_some() && !closed {
         Evaluation::SampleSum
-    } else if method == Method::Auto {
+    } else if method == Method::Auto && closed {
         Evaluation::ClosedForm
     } else {
         Evaluation::Quadrature
