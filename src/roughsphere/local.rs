@@ -13,11 +13,12 @@
 //!
 //! On retraction a summit remembers its largest interference, so the local
 //! pressure at a radius depends on the closest gap `H_min` reached there
-//! ([`History::Retract`] with `closest = sigma H_min`): one two-dimensional
-//! table `p(H, H_min)` ([`RetractTable`]) over the closest gaps of a
-//! retraction, built when it starts ([`LocalLaw::prepare_retraction`]) and
-//! read by every node ([`LocalLaw::after`]); laws without hysteresis reuse
-//! the approach law.
+//! ([`History::Retract`] with `closest = sigma H_min`). Laws that remember
+//! their maximum interference (plastic) use one two-dimensional table
+//! `p(H, H_min)` ([`RetractTable`]) over the closest gaps of a retraction,
+//! built when it starts ([`LocalLaw::prepare_retraction`]) and read by
+//! every node ([`LocalLaw::after`]); other laws with hysteresis (JKR) one
+//! table per node; laws without hysteresis reuse the approach law.
 
 use super::retract_table::{RetractTable, Weights};
 use super::table::Table;

@@ -26,8 +26,9 @@
 //! model's own state there, and a panel whose largest difference exceeds
 //! `tol (|p| + scale)` is bisected. The largest measured ratio is kept
 //! ([`RetractTable::error`]). The cost is a few dozen tables in `t`,
-//! whatever the number of mesh nodes (one table per node before: minutes
-//! with Kogut–Etsion summits on a rough sphere).
+//! whatever the number of mesh nodes (one table per node before); with
+//! Kogut–Etsion summits and adhesion each table in `t` still needs about
+//! 15 000 GW states (docs/performance.md).
 
 use super::table::{Table, DEG};
 use crate::error::{Error, Result};
