@@ -305,6 +305,13 @@ impl Core {
     /// The local law's tabulation failures.
     pub fn retraction(&self, deepest: Arc<Solved>) -> Result<Retraction> {
         use rayon::prelude::*;
+        // One table over the closest gaps of every node of every level.
+        let lowest = deepest
+            .levels
+            .iter()
+            .flat_map(|l| l.sol.h.iter().copied())
+            .fold(f64::INFINITY, f64::min);
+        self.law.prepare_retraction(lowest)?;
         let mut h_min = Vec::new();
         let mut laws = Vec::new();
         for l in &deepest.levels {

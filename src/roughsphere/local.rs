@@ -13,15 +13,19 @@
 //!
 //! On retraction a summit remembers its largest interference, so the local
 //! pressure at a radius depends on the closest gap `H_min` reached there
-//! ([`History::Retract`] with `closest = sigma H_min`): one table per node,
-//! built when the retraction starts ([`LocalLaw::after`]); laws without
-//! hysteresis reuse the approach law.
+//! ([`History::Retract`] with `closest = sigma H_min`). Laws that remember
+//! their maximum interference (plastic) use one two-dimensional table
+//! `p(H, H_min)` ([`RetractTable`]) over the closest gaps of a retraction,
+//! built when it starts ([`LocalLaw::prepare_retraction`]) and read by
+//! every node ([`LocalLaw::after`]); other laws with hysteresis (JKR) one
+//! table per node; laws without hysteresis reuse the approach law.
 
+use super::retract_table::{RetractTable, Weights};
 use super::table::Table;
 use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel};
 use crate::loading::{History, LoadingModel, Observables};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// Tolerance of the tables relative to the solver's: 1 % of it (the local
 /// law's error then adds at most 1 % to the load's), within
@@ -32,6 +36,14 @@ const TABLE_TOL_RANGE: (f64, f64) = (1e-11, 1e-8);
 /// The model's quadrature is asked this much better than the tables, so
 /// that panels are not split chasing its noise.
 const QUAD_MARGIN: f64 = 0.01;
+/// Absolute floor of the retraction table's tolerance, as a fraction of
+/// the pressure scale: `tol (|p| + RETRACT_FLOOR scale)` (the solver's
+/// load tolerance is relative to `int |p|`; adhesive retraction pressures
+/// cross zero, where a purely relative demand would chase quadrature noise).
+const RETRACT_FLOOR: f64 = 1e-2;
+/// The model's quadrature on retraction is asked this fraction of the
+/// table's tolerance.
+const RETRACT_QUAD: f64 = 1e-4;
 /// Relative tolerance of the law's own Chebyshev tables used while
 /// tabulating the local pressure.
 const LAW_TABLE_TOL: f64 = 1e-12;
@@ -53,6 +65,8 @@ enum Form {
         shift: f64,
     },
     Table(Arc<Table>),
+    /// A radius's slice of the retraction table.
+    Retract(Weights),
     /// No pressure at any gap (a node that never came close).
     Zero,
 }
@@ -84,6 +98,8 @@ pub(crate) struct LocalLaw {
     reversible: bool,
     /// Relative tolerance of the tables.
     table_tol: f64,
+    /// The retraction table (laws with history), shared by clones.
+    retract: Arc<Mutex<Option<Arc<RetractTable>>>>,
 }
 
 impl NodeLaw {
@@ -140,6 +156,7 @@ impl NodeLaw {
                     t.eval(h)
                 }
             }
+            Form::Retract(w) => w.eval(h),
             Form::Zero => (0.0, 0.0),
         }
     }
@@ -271,6 +288,7 @@ impl LocalLaw {
             scale,
             reversible,
             table_tol,
+            retract: Arc::new(Mutex::new(None)),
         })
     }
 
@@ -294,10 +312,105 @@ impl LocalLaw {
         &self.model
     }
 
-    /// The law of a node whose closest gap was `h_min`, on retraction.
+    /// Absolute gap beyond which no summit holds on during a retraction
+    /// (the approach law's top plus the retraction's reach below contact,
+    /// the cutoff, e.g. JKR's detach interference).
+    fn retract_top(&self) -> f64 {
+        let sigma = self.sigma;
+        let reach = (-self.model.law().cutoff_interference() / sigma).clamp(0.0, 40.0);
+        (self.top + reach + 0.5).min(self.model.interaction_onset() / sigma + reach)
+    }
+
+    /// The retraction table covering closest gaps from `lowest` up to the
+    /// top (built, or rebuilt lower, when it does not yet): one table
+    /// `p(H, H_min)` for every node of every mesh of a retraction.
     ///
     /// # Errors
-    /// The model's quadrature failures.
+    /// The model's quadrature failures; [`Error::NoConvergence`] when the
+    /// table cannot meet its tolerance.
+    pub fn prepare_retraction(&self, lowest: f64) -> Result<Option<Arc<RetractTable>>> {
+        if self.reversible || !self.model.law().remembers_maximum() || !(lowest < self.top) {
+            return Ok(None);
+        }
+        let mut slot = self
+            .retract
+            .lock()
+            .map_err(|_| Error::invalid("law", "the retraction table's lock was poisoned"))?;
+        if let Some(t) = slot.as_ref() {
+            if t.range().0 <= lowest {
+                return Ok(Some(t.clone()));
+            }
+        }
+        // A margin below the lowest node: radii between nodes interpolate
+        // their closest gap.
+        let lo = match slot.as_ref() {
+            Some(t) => (lowest - 0.25).min(t.range().0),
+            None => lowest - 0.25,
+        };
+        let table = Arc::new(self.build_retraction(lo)?);
+        *slot = Some(table.clone());
+        Ok(Some(table))
+    }
+
+    /// Builds the retraction table for closest gaps in `[lo, top]`.
+    fn build_retraction(&self, lo: f64) -> Result<RetractTable> {
+        let sigma = self.sigma;
+        let per_area = 1.0 / (self.model.surface().nominal_area * self.unit);
+        let law = self.model.law();
+        // Kinks: where a branch breakpoint's summit height `H + b/sigma`
+        // meets a history threshold's `h_min + c/sigma`, at fixed
+        // `t = H - h_min = (c - b)/sigma`.
+        let mut bs = law.breakpoints(crate::law::Branch::Retract);
+        bs.extend(law.breakpoints(crate::law::Branch::Approach));
+        let mut cs = law.history_breakpoints();
+        cs.push(0.0);
+        let mut splits: Vec<f64> = bs
+            .iter()
+            .flat_map(|b| cs.iter().map(move |c| (c - b) / sigma))
+            .collect();
+        // ... and where the summits of each threshold `c` let go: their
+        // detachment (or contact loss) after `c` depends on `c` (e.g. the
+        // flattened shape of a plastic summit), found from the law itself.
+        splits.extend(cs.iter().map(|&c| (c - detachment_after(law, c)) / sigma));
+        let t_max = (self.retract_top() - lo).max(1.0);
+        // The model's quadrature well below the tables' tolerance floor
+        // (its error is relative to the integral of |force| over heights,
+        // about the pressure scale; a floor it cannot resolve would make
+        // the tables chase its noise).
+        let accurate = self
+            .model
+            .clone()
+            .with_accuracy(Accuracy::new((RETRACT_QUAD * self.table_tol).max(1e-13))?);
+        let model = &accurate;
+        let slice = move |h_min: f64, ts: &[f64]| -> Result<Vec<f64>> {
+            let back = History::Retract {
+                closest: sigma * h_min,
+            };
+            ts.iter()
+                .map(|&t| {
+                    let s = model.state(sigma * (h_min + t), back, &Observables::LOAD)?;
+                    Ok(s.load().unwrap_or(0.0) * per_area)
+                })
+                .collect()
+        };
+        RetractTable::build(
+            lo,
+            self.top,
+            t_max,
+            &splits,
+            self.table_tol,
+            RETRACT_FLOOR * self.scale,
+            &slice,
+        )
+    }
+
+    /// The law of a node whose closest gap was `h_min`, on retraction: its
+    /// slice of the retraction table (built by
+    /// [`prepare_retraction`](Self::prepare_retraction), or here when it
+    /// does not reach `h_min`).
+    ///
+    /// # Errors
+    /// As [`prepare_retraction`](Self::prepare_retraction).
     pub fn after(&self, h_min: f64) -> Result<NodeLaw> {
         if self.reversible {
             return Ok(self.approach.clone());
@@ -308,17 +421,29 @@ impl LocalLaw {
                 below: h_min,
             });
         }
+        if !self.model.law().remembers_maximum() {
+            return self.after_per_node(h_min);
+        }
+        let table = self
+            .prepare_retraction(h_min)?
+            .expect("a law with history below the top");
+        Ok(NodeLaw {
+            form: Form::Retract(table.weights(h_min)),
+            below: h_min,
+        })
+    }
+
+    /// The table of one node (laws whose retraction depends on `h_min`
+    /// only through whether a summit touched, e.g. JKR: cheap tables, and
+    /// one per node costs less than the two-dimensional table).
+    fn after_per_node(&self, h_min: f64) -> Result<NodeLaw> {
         let sigma = self.sigma;
         let per_area = 1.0 / (self.model.surface().nominal_area * self.unit);
         let back = History::Retract {
             closest: sigma * h_min,
         };
         let law = self.model.law();
-        // Beyond the approach law's top plus the retraction's reach below
-        // contact (the cutoff, e.g. JKR's detach interference) no summit
-        // holds on.
-        let reach = (-law.cutoff_interference() / sigma).clamp(0.0, 40.0);
-        let hi = (self.top + reach + 0.5).min(self.model.interaction_onset() / sigma + reach);
+        let hi = self.retract_top();
         // Kinks: where a branch breakpoint's summit height `H + b/sigma`
         // meets a history threshold's `h_min + c/sigma`.
         let mut bs = law.breakpoints(crate::law::Branch::Retract);
@@ -375,6 +500,30 @@ impl NodeLaw {
             NodeLaw::eval_form(&self.form, h)
         }
     }
+}
+
+/// The interference (m) below which a summit that reached `delta_max`
+/// (m) has let go on retraction, by bisection between the law's cutoff
+/// and `delta_max` (60 halvings; `delta_max` itself when it is free there).
+fn detachment_after(law: &dyn crate::law::AsperityLaw, delta_max: f64) -> f64 {
+    let attached = |d: f64| {
+        let s = law.state_after(d, delta_max);
+        s.radius > 0.0 || s.load != 0.0
+    };
+    let mut lo = law.cutoff_interference().min(delta_max);
+    let mut hi = delta_max;
+    if !attached(hi) || attached(lo) {
+        return lo;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if attached(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
 }
 
 /// Smallest gap above which `|p| <= NEGLIGIBLE * scale` (scanned down from

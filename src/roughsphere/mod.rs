@@ -57,6 +57,7 @@ mod newton;
 mod observe;
 mod problem;
 mod report;
+mod retract_table;
 mod solve;
 mod table;
 pub mod units;
