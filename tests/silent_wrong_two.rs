@@ -100,6 +100,21 @@ fn an_absurd_yield_strength_is_blamed_on_itself() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("error: materials.yield_strength:"), "{err}");
     assert!(err.contains("1e7 .. 1e10 Pa"), "{err}");
+    // Below any solid's (1e-300 Pa on the default study left a listed load
+    // unreachable, blamed on program.loads): refused up front, with the range.
+    for (key, line) in [
+        ("materials.yield_strength", "yield_strength = 1e-300"),
+        ("materials.yield_strength", "yield_strength = 1e300"),
+    ] {
+        let (code, err) = run_scene(
+            &dir,
+            "ys-range.toml",
+            &edited("rf-mems-switch.toml", &[("yield_strength", line)]),
+        );
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains(&format!("error: {key} = ")), "{err}");
+        assert!(err.contains("[1000, 1e20]"), "{err}");
+    }
 }
 
 /// Item 13: `montecarlo-gold.toml` at `rtol = 0.1` (inside the documented

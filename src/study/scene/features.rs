@@ -38,6 +38,11 @@ pub enum ProgramTarget {
     Loads(Vec<f64>),
 }
 
+/// Allowed yield strengths and hardnesses in scenes (Pa): from the softest
+/// gels (~1e3 Pa) to far beyond diamond (~1e11 Pa), so a vanishing
+/// plasticity (1e16 Pa) stays expressible.
+pub const YIELD_STRENGTH_RANGE: (f64, f64) = (1e3, 1e20);
+
 impl LawSpec {
     /// The profile keys, as the core's [`ProfileParams`] (`law.profile_r`
     /// and `law.profile_f` are its `r` and `f`).
@@ -277,7 +282,8 @@ impl Scene {
         )
     }
 
-    /// The plastic data of the yielding body, if a yield strength is given.
+    /// The plastic data of the yielding body, if a yield strength is given
+    /// (yield strength and hardness within [`YIELD_STRENGTH_RANGE`]).
     /// Its Poisson ratio is the softer body's (the lower Young's modulus;
     /// body 1 on a tie).
     ///
@@ -286,6 +292,19 @@ impl Scene {
     /// or `materials.hardness`; a plastic law without a yield strength.
     pub fn plasticity(&self) -> Result<Option<Plasticity>> {
         let m = &self.materials;
+        // Outside it no solid yields (soft gels near 1e3 Pa, diamond near
+        // 1e11): the fits' plasticity index leaves every meaning, and the
+        // symptoms (loads never reached, areas beyond the nominal one)
+        // would name other keys.
+        for (key, value) in [
+            ("materials.yield_strength", m.yield_strength),
+            ("materials.hardness", m.hardness),
+        ] {
+            if let Some(v) = value {
+                crate::error::Allowed::closed(YIELD_STRENGTH_RANGE.0, YIELD_STRENGTH_RANGE.1)
+                    .check(key, v)?;
+            }
+        }
         let nu = if m.e2 < m.e1 { m.nu2 } else { m.nu1 };
         Plasticity::from_optional(
             self.law.kind.name(),

@@ -219,11 +219,12 @@ pub struct MaterialsSpec {
     /// Yield strength of the body that yields (Pa), > 0; required by the
     /// elastic-plastic laws, optional otherwise (it feeds the plasticity
     /// diagnostics). Its Poisson ratio is taken as that of the softer body
-    /// (the lower Young's modulus; body 1 on a tie).
+    /// (the lower Young's modulus; body 1 on a tie). Allowed `[1e3, 1e20]`
+    /// Pa.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub yield_strength: Option<f64>,
-    /// Hardness of the body that yields (Pa), >= `yield_strength`; default
-    /// `2.8 x yield_strength` (Tabor).
+    /// Hardness of the body that yields (Pa), >= `yield_strength`, at most
+    /// 1e20 Pa; default `2.8 x yield_strength` (Tabor).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hardness: Option<f64>,
 }
