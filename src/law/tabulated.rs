@@ -38,6 +38,11 @@
 //! is far larger than `H_cut z0`. [`RANGE_GAP`] only places the default
 //! start of a loading program ([`AsperityLaw::interaction_range`]).
 //!
+//! The retraction curve (the continuation, the attached nodes down to the
+//! jump-out, the detached branch below, the far field) is checked when the
+//! law is built for one minimum ([`AsperityLaw::retraction_minimum`]): each
+//! PCHIP piece is monotone between its nodes, so the node values decide.
+//!
 //! Above the table's last interference (the calibration reaches
 //! `Pbar >= 100`, [`crate::sphere::calibrate::TABLE_MIN_LOAD_BAR`]) a
 //! Hertz continuation `Pbar = P_last + Dbar^(3/2) - Dbar_last^(3/2)`,
@@ -332,8 +337,8 @@ impl AsperityLaw for Tabulated {
     }
 
     /// The table's retraction is the same for every `delta_max` reaching
-    /// the jump-in (no memory); unimodal when
-    /// [`Tabulated::unimodal_retraction`] says so.
+    /// the jump-in (no memory); unimodal when the table's nodes say so
+    /// (checked when the law is built: see the module notes).
     /// A summit that never reached the jump-in retracts along the detached
     /// branch, whose load rises as the interference falls: its minimum is
     /// at (or above) `delta_max` (`+inf`: the upper end of every window).

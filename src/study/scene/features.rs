@@ -41,7 +41,7 @@ pub enum ProgramTarget {
 /// Allowed yield strengths and hardnesses in scenes (Pa): from the softest
 /// gels (~1e3 Pa) to far beyond diamond (~1e11 Pa), so a vanishing
 /// plasticity (1e16 Pa) stays expressible.
-pub const YIELD_STRENGTH_RANGE: (f64, f64) = (1e3, 1e20);
+pub(crate) const YIELD_STRENGTH_RANGE: (f64, f64) = (1e3, 1e20);
 
 impl LawSpec {
     /// The profile keys, as the core's [`ProfileParams`] (`law.profile_r`
@@ -283,7 +283,7 @@ impl Scene {
     }
 
     /// The plastic data of the yielding body, if a yield strength is given
-    /// (yield strength and hardness within [`YIELD_STRENGTH_RANGE`]).
+    /// (yield strength and hardness within `[1e3, 1e20]` Pa).
     /// Its Poisson ratio is the softer body's (the lower Young's modulus;
     /// body 1 on a tie).
     ///
