@@ -194,10 +194,11 @@ fn memory_is_bounded_with_the_estimate_in_the_message() {
 
 #[test]
 fn adhesive_sphere_follows_jkr_near_pull_off() {
-    // R = 1, E* = 1, w such that a0 = 0.2 (51 pixels), Maugis lambda = 3.
-    // The converged check (1024^2, lambda = 5, pull-off within 1 %) is the
-    // example `bem_jkr`; here 256^2 holds P(a) to 5 % of the pull-off force
-    // (4 % measured: the cohesive zone is 2 pixels).
+    // R = 1, E* = 1, w such that a0 = 0.2 (51 pixels), Maugis lambda = 2.5
+    // (K = 4E*/3). The pull-off against JKR within 2 % is
+    // `adhesive_sphere_pull_off_within_two_percent_of_jkr`; here 256^2 holds
+    // the force at the measured radius, P(a), to 5 % of the pull-off force
+    // (4 % measured, mostly the finite range: 512^2 gives the same).
     let n = 256;
     let dx = 1.0 / n as f64;
     let h: Vec<f64> = (0..n * n)
@@ -235,4 +236,75 @@ fn adhesive_sphere_follows_jkr_near_pull_off() {
         );
         warm = Some(s);
     }
+}
+
+/// Smallest force (most tensile mean pressure; the load-control pull-off)
+/// of the R = 1 sphere in a periodic unit cell, `n^2` pixels, E* = 1,
+/// exponential adhesion `w exp(-g/rho)`, stepped in mean gap by `step`
+/// from `zero-load gap + start` (`count` states, warm-started), refined by a
+/// parabola through the smallest sample and its neighbours.
+fn sphere_pull_off(n: usize, w: f64, rho: f64, start: f64, step: f64, count: usize) -> f64 {
+    let dx = 1.0 / n as f64;
+    let h: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let (i, j) = (
+                (k / n) as f64 - n as f64 / 2.0,
+                (k % n) as f64 - n as f64 / 2.0,
+            );
+            -(i * i + j * j) * dx * dx / 2.0
+        })
+        .collect();
+    let map = HeightMap::new(n, n, h).unwrap();
+    let opts = Options {
+        tolerance: 1e-8,
+        ..Default::default()
+    };
+    let prob = Problem::new(&map, dx, 1.0, true, &opts)
+        .unwrap()
+        .with_adhesion(w, rho)
+        .unwrap();
+    let zero = prob.zero_load_gap();
+    let mut warm = None;
+    let mut p = Vec::with_capacity(count);
+    for k in 0..count {
+        let s = prob
+            .solve_gap(zero + start + step * k as f64, &opts, warm.as_ref())
+            .unwrap();
+        p.push(s.mean_pressure);
+        warm = Some(s);
+    }
+    let k = (0..count).min_by(|&i, &j| p[i].total_cmp(&p[j])).unwrap();
+    assert!(
+        k > 0 && k + 1 < count,
+        "pull-off not bracketed (rho {rho}): {p:?}"
+    );
+    let (a, b, c) = (p[k - 1], p[k], p[k + 1]);
+    b - (c - a) * (c - a) / (8.0 * (a - 2.0 * b + c))
+}
+
+#[test]
+fn adhesive_sphere_pull_off_within_two_percent_of_jkr() {
+    // R = 1, E* = 1, w = 5.66e-4 (JKR a0 = 0.2, pull-off 1.5 pi w R at
+    // a = 0.126), 512^2. The JKR limit is rho -> 0: the exponential law's
+    // pull-off exceeds JKR's by an amount first order in rho (measured at
+    // 512^2: +4.76 %, +3.04 %, +1.93 % at rho = 3.11e-3, 2.2e-3, 1.55e-3,
+    // differences in ratio 1.44 for rho in ratio 1.42; the mesh is not the
+    // cause: 256^2 gives +4.86 %, +3.26 % at the first two). At rho =
+    // 1.55e-3 (Maugis lambda = 2 (w/rho)(R/(pi w K^2))^(1/3) = 5.0,
+    // K = 4E*/3) the pull-off is within 2 % of JKR; the first-order
+    // extrapolation rho -> 0 of the last two lands within 2 % too
+    // (-0.7 % measured; Maugis-Dugdale at lambda = 5 is +0.42 %). Measured:
+    // 1.0304 and 1.0193, so the direct bound has a margin of 0.07 %; the
+    // lattice pins the contact line below rho ~ 0.8 dx, so a smaller rho
+    // needs a finer mesh (docs/performance.md).
+    let w = 5.66e-4;
+    let jkr = -1.5 * PI * w;
+    let coarse = sphere_pull_off(512, w, 2.2e-3, 0.0015, 0.00025, 5) / jkr;
+    let fine = sphere_pull_off(512, w, 1.55e-3, 0.0015, 0.00025, 5) / jkr;
+    println!("pull-off / JKR: rho 2.2e-3 {coarse}, rho 1.55e-3 {fine}");
+    assert!(fine > 1.0 && fine < 1.02, "{fine}");
+    assert!(coarse > fine + 0.005, "{coarse} {fine}");
+    let r = 2.2 / 1.55;
+    let limit = fine - (coarse - fine) / (r - 1.0);
+    assert!((limit - 1.0).abs() < 0.02, "{limit}");
 }

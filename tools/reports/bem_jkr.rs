@@ -11,7 +11,7 @@
 //! cargo run --release --example bem_jkr -- N RHO W G0 DG COUNT
 //! cargo run --release --example bem_jkr -- 1024 1.868e-3 5.66e-4 -0.004 0.0008 8
 //! ```
-//! (`a0 = 0.2`, Maugis `lambda = 2 (w/rho) (R/(pi w E*^2))^(1/3) = 5`.)
+//! (`a0 = 0.2`, Maugis `lambda = 2 (w/rho) (R/(pi w K^2))^(1/3) = 4.1`, `K = 4E*/3`.)
 use asperity::bem::{Options, Problem};
 use asperity::surface::HeightMap;
 

@@ -31,12 +31,16 @@ fn main() {
     };
     let prob = Problem::new(&map, dx, 1e9, true, &opts).unwrap();
     let t = cpu_s();
-    let mut it = 0;
+    let mut last = None;
     for _ in 0..reps {
-        it = prob.solve_pressure(1e7, &opts, None).unwrap().iterations;
+        last = Some(prob.solve_pressure(1e7, &opts, None).unwrap());
     }
+    let cpu = (cpu_s() - t) / reps as f64;
+    let s = last.expect("reps >= 1");
     println!(
-        "tol {tol:e}: {it} iterations, {:.4} s CPU per solve",
-        (cpu_s() - t) / reps as f64
+        "tol {tol:e}: A/A0 {:.10} mean gap {:.12e} m, {} iterations, {cpu:.4} s CPU per solve",
+        s.area_fraction(),
+        s.mean_gap,
+        s.iterations
     );
 }
