@@ -2,7 +2,9 @@
 //! beside the target (`.NAME.tmpPID`), which is renamed over the target
 //! only when completely written, and removed when anything fails. A full
 //! disk or a killed run leaves the previous file (or none), never a
-//! truncated `curve.csv` or a stray `*.tmp`.
+//! truncated `curve.csv` or a stray `*.tmp`. A target that exists and is
+//! not a regular file (a named pipe, `/dev/stdout`) is written directly:
+//! renaming over it would replace the pipe its reader waits on.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -33,6 +35,12 @@ pub fn write_with(
     path: &Path,
     fill: impl FnOnce(&mut std::fs::File) -> std::io::Result<()>,
 ) -> std::io::Result<()> {
+    let special = std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir());
+    if special {
+        let mut f = std::fs::OpenOptions::new().write(true).open(path)?;
+        fill(&mut f)?;
+        return f.flush();
+    }
     let tmp = temporary(path);
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
@@ -65,6 +73,28 @@ mod tests {
             .collect();
         v.sort();
         v
+    }
+
+    /// A named pipe is written through, not replaced: its reader gets the
+    /// contents and the pipe stays a pipe.
+    #[cfg(unix)]
+    #[test]
+    fn a_named_pipe_is_written_through() {
+        use std::os::unix::fs::FileTypeExt;
+        let d = dir("fifo");
+        let p = d.join("pipe");
+        let made = std::process::Command::new("mkfifo").arg(&p).status();
+        if !made.is_ok_and(|s| s.success()) {
+            return; // no mkfifo here: nothing to check
+        }
+        let reader = {
+            let p = p.clone();
+            std::thread::spawn(move || std::fs::read_to_string(p).unwrap())
+        };
+        write(&p, "through\n").unwrap();
+        assert_eq!(reader.join().unwrap(), "through\n");
+        assert!(std::fs::metadata(&p).unwrap().file_type().is_fifo());
+        assert_eq!(entries(&d), vec!["pipe".to_string()]);
     }
 
     /// A write that fails half-way (as on a full disk) keeps the previous
