@@ -333,7 +333,7 @@ impl AsperityLaw for Tabulated {
 
     /// The table's retraction is the same for every `delta_max` reaching
     /// the jump-in (no memory); unimodal when
-    /// [`Tabulated::unimodal_retraction`] says so.
+    /// `Tabulated::unimodal_retraction` (private) says so.
     /// A summit that never reached the jump-in retracts along the detached
     /// branch, whose load rises as the interference falls: its minimum is
     /// at (or above) `delta_max` (`+inf`: the upper end of every window).

@@ -205,7 +205,7 @@ impl AsperityLaw for AdhesivePlastic {
     /// by `recovery` (m): the roots of `delta_max - detach_after(delta_max)
     /// = recovery` ([`AdhesivePlastic::detach_after`]: JKR's jump-out on the
     /// flattened shape). Each piece between the loading law's breakpoints
-    /// (where the span may jump) is scanned on [`SPAN_SCAN`] subintervals
+    /// (where the span may jump) is scanned on `SPAN_SCAN` (8) subintervals
     /// for sign changes, each root bisected to a few ulp. Without these the
     /// GW quadrature of a retraction state had to find each jump of the
     /// integrand (load `-(5/6) pi w R_u` to 0) by bisection.

@@ -18,7 +18,7 @@ use super::{MonteCarlo, CHUNK};
 #[derive(Debug, Clone, PartialEq)]
 pub struct RetractionBounds {
     /// Load (N) at each separation (summed per summit, in another order
-    /// than [`MonteCarlo::states`]: equal to it within roundoff).
+    /// than the `MonteCarlo` states: equal to it within roundoff).
     pub loads: Vec<f64>,
     /// Lower bound (N) of the load between separations `k` and `k + 1`.
     pub lower: Vec<f64>,
