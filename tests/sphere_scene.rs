@@ -192,6 +192,64 @@ fn switch_bump_example_reports_resistance_and_stiction() {
     assert!(seconds < 60.0, "{seconds} s");
 }
 
+/// The switch bump with Kogut–Etsion summits and JKR adhesion on the
+/// flattened shape (`examples/scenes/switch-bump-plastic.toml`): a finite
+/// tensile pull-off, the stiction margin its sum with the spring's force,
+/// the resistance the sphere's, and the approach loads the library
+/// sphere's with the same law.
+#[test]
+fn plastic_switch_bump_example_pulls_off_and_reports_stiction() {
+    let example = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/examples/scenes/switch-bump-plastic.toml"
+    );
+    let dir = tmp("bump-plastic");
+    let (code, out, err) = asperity(&["run", example, "--json"], &dir);
+    assert_eq!(code, 0, "{err}");
+    let s: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(s["law"], "kogut-etsion", "{}", s["law"]);
+    // tensile and finite, and smaller than the force pressed with (20 uN)
+    let pull = s["pull_off_load"].as_f64().unwrap();
+    assert!(pull < 0.0 && pull > -20e-6, "{pull:e}");
+    let st = &s["stiction"];
+    assert_eq!(st["pull_off_N"].as_f64().unwrap(), pull);
+    let spring = st["restoring_force_N"].as_f64().unwrap();
+    assert!((spring - 20e-6).abs() <= 1e-15, "{spring:e}");
+    let margin = st["margin_N"].as_f64().unwrap();
+    assert!(
+        (margin - (spring + pull)).abs() <= 1e-12 * spring,
+        "{margin:e}"
+    );
+    assert_eq!(st["sticks"].as_bool().unwrap(), margin < 0.0);
+    let r = s["resistance_ohm"].as_f64().unwrap();
+    let rs = s["rough_sphere"]["resistance"]["resistance"]["value"]
+        .as_f64()
+        .unwrap();
+    assert!(r > 0.0 && r.is_finite(), "{r}");
+    assert!((r - rs).abs() <= 1e-6 * r, "{r} {rs}");
+    // the loads at the solved separations are the library sphere's
+    let ke = asperity::law::plastic::build(
+        asperity::material::plastic::Variant::KogutEtsion,
+        50e-9,
+        estar(),
+        asperity::material::plastic::Plasticity::gold(),
+    )
+    .unwrap();
+    let law = asperity::law::plastic::AdhesivePlastic::new(ke.as_loading(), 0.5).unwrap();
+    let sphere = direct(Arc::new(law), 5e-6, 5e14, 50e-9, 2e-9);
+    for (sep, load) in states(&s) {
+        let want = sphere
+            .state(sep, History::Approach, &Observables::LOAD)
+            .unwrap()
+            .load()
+            .unwrap();
+        assert!(
+            (load - want).abs() <= 1e-9 * want.abs(),
+            "s = {sep:e}: {load:e} vs {want:e}"
+        );
+    }
+}
+
 /// `--plan` states the sphere decision and why no pull-off spread.
 #[test]
 fn plan_prints_the_sphere_decision() {

@@ -371,7 +371,19 @@ impl LocalLaw {
         // ... and where the summits of each threshold `c` let go: their
         // detachment (or contact loss) after `c` depends on `c` (e.g. the
         // flattened shape of a plastic summit), found from the law itself.
-        splits.extend(cs.iter().map(|&c| (c - detachment_after(law, c)) / sigma));
+        // The span `c - detach(c)` may jump at a threshold (the
+        // Kogut–Etsion fits do): both sides.
+        for &c in &cs {
+            for side in [
+                c,
+                c + 1e-9 * c.abs().max(sigma),
+                c - 1e-9 * c.abs().max(sigma),
+            ] {
+                if side >= 0.0 {
+                    splits.push((side - detachment_after(law, side)) / sigma);
+                }
+            }
+        }
         let t_max = (self.retract_top() - lo).max(1.0);
         // The model's quadrature well below the tables' tolerance floor
         // (its error is relative to the integral of |force| over heights,

@@ -165,6 +165,10 @@ impl AdhesivePlastic {
     }
 }
 
+/// Subintervals of each loading piece scanned for the roots of
+/// [`AsperityLaw::contact_loss_peaks`] (the span need not be monotone).
+const SPAN_SCAN: usize = 8;
+
 impl AsperityLaw for AdhesivePlastic {
     fn name(&self) -> &'static str {
         match self.loading.variant() {
@@ -195,6 +199,74 @@ impl AsperityLaw for AdhesivePlastic {
 
     fn history_breakpoints(&self) -> Vec<f64> {
         self.loading.breakpoint_interferences()
+    }
+
+    /// The peaks `delta_max` whose summits let go after the flat retracted
+    /// by `recovery` (m): the roots of `delta_max - detach_after(delta_max)
+    /// = recovery` ([`AdhesivePlastic::detach_after`]: JKR's jump-out on the
+    /// flattened shape). Each piece between the loading law's breakpoints
+    /// (where the span may jump) is scanned on `SPAN_SCAN` (8) subintervals
+    /// for sign changes, each root bisected to a few ulp. Without these the
+    /// GW quadrature of a retraction state had to find each jump of the
+    /// integrand (load `-(5/6) pi w R_u` to 0) by bisection.
+    fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
+        let mut roots = Vec::new();
+        if !(recovery.is_finite() && recovery > 0.0) {
+            return roots;
+        }
+        let span = |dm: f64| dm - self.detach_after(dm);
+        let mut ends: Vec<f64> = self
+            .loading
+            .breakpoint_interferences()
+            .into_iter()
+            .filter(|&b| b >= 0.0)
+            .collect();
+        ends.push(0.0);
+        ends.sort_by(f64::total_cmp);
+        ends.dedup();
+        // The open-ended last piece: grown until its span reaches `recovery`.
+        let last = *ends.last().unwrap_or(&0.0);
+        let mut hi = 2.0 * last.max(recovery).max(self.loading.critical_interference());
+        for _ in 0..200 {
+            if span(hi) >= recovery {
+                break;
+            }
+            hi *= 2.0;
+        }
+        ends.push(hi);
+        let below = |x: f64| span(x) < recovery;
+        for w in ends.windows(2) {
+            // (just inside the piece: the span may jump at its ends)
+            let (a, b) = (w[0], w[1]);
+            let inside = |k: usize| {
+                let x = a + (b - a) * k as f64 / SPAN_SCAN as f64;
+                match k {
+                    0 => a + 1e-12 * (b - a),
+                    _ if k == SPAN_SCAN => b - 1e-12 * (b - a),
+                    _ => x,
+                }
+            };
+            for k in 0..SPAN_SCAN {
+                let (mut lo, mut hi) = (inside(k), inside(k + 1));
+                if below(lo) == below(hi) {
+                    continue;
+                }
+                let rising = below(lo);
+                for _ in 0..200 {
+                    let mid = 0.5 * (lo + hi);
+                    if !(mid > lo && mid < hi) {
+                        break;
+                    }
+                    if below(mid) == rising {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                roots.push(hi);
+            }
+        }
+        roots
     }
 
     /// The flattening (and so the JKR shape) depends on `delta_max`.

@@ -175,3 +175,39 @@ fn contact_loss_peaks_are_where_the_unloading_curves_end() {
         }
     }
 }
+
+/// `AdhesivePlastic::contact_loss_peaks`: every root is where a summit
+/// with that peak lets go after `recovery` (its detachment span equals
+/// `recovery`, and `state_after` is attached just above the root and free
+/// just below), for every variant and recoveries from elastic to 300
+/// critical interferences; none for recoveries below the elastic span or
+/// not finite.
+#[test]
+fn adhesive_contact_loss_peaks_are_where_summits_let_go() {
+    for law in laws() {
+        let adh = AdhesivePlastic::new(law.clone().as_loading(), 0.5).unwrap();
+        let span = |dm: f64| dm - adh.detach_after(dm);
+        assert!(adh.contact_loss_peaks(f64::NAN).is_empty());
+        assert!(adh.contact_loss_peaks(0.5 * span(0.0)).is_empty());
+        for k in [0.5, 3.0, 30.0, 300.0] {
+            let dm = k * law.critical_interference();
+            let recovery = span(dm);
+            let got = adh.contact_loss_peaks(recovery);
+            assert!(
+                got.iter().any(|&g| (g / dm - 1.0).abs() < 1e-9),
+                "{:?} {k}: {got:?} vs {dm}",
+                law.variant()
+            );
+            for &g in &got {
+                let s = span(g);
+                assert!(
+                    (s / recovery - 1.0).abs() < 1e-9,
+                    "{:?} {k}: span {s} at {g}",
+                    law.variant()
+                );
+                let at = |peak: f64| adh.state_after(peak - recovery, peak).in_contact();
+                assert!(at(g * (1.0 + 1e-6)) != at(g * (1.0 - 1e-6)), "{g}");
+            }
+        }
+    }
+}
