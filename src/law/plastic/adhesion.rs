@@ -210,11 +210,9 @@ impl AsperityLaw for AdhesivePlastic {
     /// GW quadrature of a retraction state had to find each jump of the
     /// integrand (load `-(5/6) pi w R_u` to 0) by bisection.
     fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
-        let mut roots = Vec::new();
         if !(recovery.is_finite() && recovery > 0.0) {
-            return roots;
+            return Vec::new();
         }
-        let span = |dm: f64| dm - self.detach_after(dm);
         let mut ends: Vec<f64> = self
             .loading
             .breakpoint_interferences()
@@ -222,51 +220,15 @@ impl AsperityLaw for AdhesivePlastic {
             .filter(|&b| b >= 0.0)
             .collect();
         ends.push(0.0);
-        ends.sort_by(f64::total_cmp);
-        ends.dedup();
-        // The open-ended last piece: grown until its span reaches `recovery`.
-        let last = *ends.last().unwrap_or(&0.0);
-        let mut hi = 2.0 * last.max(recovery).max(self.loading.critical_interference());
-        for _ in 0..200 {
-            if span(hi) >= recovery {
-                break;
-            }
-            hi *= 2.0;
-        }
-        ends.push(hi);
-        let below = |x: f64| span(x) < recovery;
-        for w in ends.windows(2) {
-            // (just inside the piece: the span may jump at its ends)
-            let (a, b) = (w[0], w[1]);
-            let inside = |k: usize| {
-                let x = a + (b - a) * k as f64 / SPAN_SCAN as f64;
-                match k {
-                    0 => a + 1e-12 * (b - a),
-                    _ if k == SPAN_SCAN => b - 1e-12 * (b - a),
-                    _ => x,
-                }
-            };
-            for k in 0..SPAN_SCAN {
-                let (mut lo, mut hi) = (inside(k), inside(k + 1));
-                if below(lo) == below(hi) {
-                    continue;
-                }
-                let rising = below(lo);
-                for _ in 0..200 {
-                    let mid = 0.5 * (lo + hi);
-                    if !(mid > lo && mid < hi) {
-                        break;
-                    }
-                    if below(mid) == rising {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                roots.push(hi);
-            }
-        }
-        roots
+        // (just inside each piece: the span may jump at its ends)
+        super::unloading::span_crossings(
+            |dm| dm - self.detach_after(dm),
+            recovery,
+            ends,
+            self.loading.critical_interference(),
+            SPAN_SCAN,
+            1e-12,
+        )
     }
 
     /// The flattening (and so the JKR shape) depends on `delta_max`.

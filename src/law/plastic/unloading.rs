@@ -120,9 +120,8 @@ pub fn contact_loss_peaks<L: PlasticLoading + ?Sized>(law: &L, recovery: f64) ->
     let e = law.asperity().contact_modulus;
     let span = |dm: f64| Unloading::from_peak(dm, law.loading(dm), e).span;
     let lim = law.elastic_limit();
-    let mut roots = Vec::new();
     if !(recovery.is_finite() && recovery > 0.0 && lim > 0.0) {
-        return roots;
+        return Vec::new();
     }
     let mut ends = vec![lim];
     ends.extend(
@@ -130,11 +129,27 @@ pub fn contact_loss_peaks<L: PlasticLoading + ?Sized>(law: &L, recovery: f64) ->
             .into_iter()
             .filter(|&b| b > lim),
     );
+    span_crossings(span, recovery, ends, 0.0, 1, 0.0)
+}
+
+/// The roots of `span(x) = recovery` (ascending) between consecutive
+/// `ends` and in the open-ended piece beyond the last (its end grown by
+/// doubling from `2 max(last, recovery, floor)` until the span reaches
+/// `recovery`). `span` may jump at the ends, so each piece is searched on
+/// its own: on `scan` subintervals, the piece's ends taken `inset` of its
+/// width inside, each sign change bisected to a few ulp.
+pub(crate) fn span_crossings(
+    span: impl Fn(f64) -> f64,
+    recovery: f64,
+    mut ends: Vec<f64>,
+    floor: f64,
+    scan: usize,
+    inset: f64,
+) -> Vec<f64> {
     ends.sort_by(f64::total_cmp);
     ends.dedup();
-    // The open-ended last piece: grown until its span reaches `recovery`.
-    let last = *ends.last().unwrap_or(&lim);
-    let mut hi = 2.0 * last.max(recovery);
+    let last = *ends.last().unwrap_or(&0.0);
+    let mut hi = 2.0 * last.max(recovery).max(floor);
     for _ in 0..200 {
         if span(hi) >= recovery {
             break;
@@ -142,25 +157,34 @@ pub fn contact_loss_peaks<L: PlasticLoading + ?Sized>(law: &L, recovery: f64) ->
         hi *= 2.0;
     }
     ends.push(hi);
+    let below = |x: f64| span(x) < recovery;
+    let mut roots = Vec::new();
     for w in ends.windows(2) {
-        let (mut lo, mut hi) = (w[0], w[1]);
-        let below = |x: f64| span(x) < recovery;
-        if below(lo) == below(hi) {
-            continue;
-        }
-        let rising = below(lo);
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if !(mid > lo && mid < hi) {
-                break;
+        let (a, b) = (w[0], w[1]);
+        let at = |k: usize| match k {
+            0 => a + inset * (b - a),
+            _ if k == scan => b - inset * (b - a),
+            _ => a + (b - a) * k as f64 / scan as f64,
+        };
+        for k in 0..scan {
+            let (mut lo, mut hi) = (at(k), at(k + 1));
+            if below(lo) == below(hi) {
+                continue;
             }
-            if below(mid) == rising {
-                lo = mid;
-            } else {
-                hi = mid;
+            let rising = below(lo);
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if !(mid > lo && mid < hi) {
+                    break;
+                }
+                if below(mid) == rising {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
             }
+            roots.push(hi);
         }
-        roots.push(hi);
     }
     roots
 }
