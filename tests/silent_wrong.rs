@@ -2,37 +2,10 @@
 //! was wrong or meaningless without a word; now the value is right, or it
 //! comes with a warning, or the input is refused (exit 2) naming the flag or
 //! field and its range.
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_asperity"))
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("asperity-silent-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn example(name: &str) -> String {
-    let root = env!("CARGO_MANIFEST_DIR");
-    std::fs::read_to_string(format!("{root}/examples/scenes/{name}")).unwrap()
-}
-
-fn run(args: &[&str], dir: &Path) -> (i32, String, String) {
-    let o = bin().args(args).current_dir(dir).output().unwrap();
-    (
-        o.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
-}
-
-fn json(path: &Path) -> serde_json::Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
-}
+#[path = "common/cli.rs"]
+mod cli;
+use cli::{bin, example, json, run, tmp};
+use std::path::Path;
 
 /// Item 1: every listed load is met to the scene's `rtol` (before: 2.48e-6,
 /// 1.17e-5, 9.76e-5 N for soft-jkr, -4.07e-7 N for conical-summits' 1e-6 N,

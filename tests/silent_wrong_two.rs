@@ -2,37 +2,10 @@
 //! that name the key the user wrote, plastic fits beyond their range,
 //! extreme shaped profiles, the calibration cache, leftovers and strict
 //! files. Each case failed on the code before its fix.
+#[path = "common/cli.rs"]
+mod cli;
+use cli::{bin, example, json, run, tmp};
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_asperity"))
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("asperity-silent2-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn example(name: &str) -> String {
-    let root = env!("CARGO_MANIFEST_DIR");
-    std::fs::read_to_string(format!("{root}/examples/scenes/{name}")).unwrap()
-}
-
-fn run(args: &[&str], dir: &Path) -> (i32, String, String) {
-    let o = bin().args(args).current_dir(dir).output().unwrap();
-    (
-        o.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
-}
-
-fn json(path: &Path) -> serde_json::Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
-}
 
 /// A scene from an example with each line starting with `key` replaced by
 /// `line` (the key must be there).
