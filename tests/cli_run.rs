@@ -326,3 +326,35 @@ fn montecarlo_outputs_are_honest() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The resolution warning counts points, not intervals: a program whose
+/// every point lies where summits are in range has `points` of them (10
+/// is enough: no warning), and one with too few says so by
+/// `program.points` instead of claiming that some lie out of range.
+#[test]
+fn resolution_warning_counts_points_in_range() {
+    let dir = tmp("resolution-count");
+    let dmt = std::fs::read_to_string(scene_path("dmt-stiff.toml")).unwrap();
+    for (points, expect) in [(10, None), (5, Some("5 points per leg (program.points)"))] {
+        let scene = dmt.replacen("points = 100", &format!("points = {points}"), 1);
+        std::fs::write(dir.join("p.toml"), scene).unwrap();
+        let (code, out, err) = asperity(&["run", "p.toml", "--json"], &dir);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let res: Vec<&str> = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|w| w.as_str())
+            .filter(|w| w.starts_with("resolution"))
+            .collect();
+        match expect {
+            None => assert!(res.is_empty(), "{points}: {res:?}"),
+            Some(needle) => assert!(
+                res.len() == 1 && res[0].contains(needle) && !res[0].contains("only"),
+                "{points}: {res:?}"
+            ),
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -16,7 +16,7 @@
 //! itself is mutated from its original value), and the calibrated scene and
 //! the plastic switch bump are only planned (`Plan::preview`: the sphere
 //! solver for every mutated Tabor parameter would take seconds each, the
-//! plastic bump's retraction about a minute).
+//! plastic bump's retraction about half a minute).
 
 use asperity::study::{curve_csv, montecarlo_csv, Plan, PlanMode, Scene, Summary};
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -365,7 +365,7 @@ fn every_field_of_every_example_scene_survives_every_mutation() {
                 o.insert("pull_off_population".into(), Value::Boolean(false));
             }
         }
-        // (a rough sphere with plastic summits retracts in about a minute)
+        // (a rough sphere with plastic summits retracts in about half a minute)
         let preview_only = text.contains("\"calibrated\"")
             || (text.contains("[sphere]") && text.contains("kind = \"kogut-etsion\""));
         for (table, key) in fields(&base)

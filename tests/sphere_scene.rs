@@ -196,7 +196,12 @@ fn switch_bump_example_reports_resistance_and_stiction() {
 /// flattened shape (`examples/scenes/switch-bump-plastic.toml`): a finite
 /// tensile pull-off, the stiction margin its sum with the spring's force,
 /// the resistance the sphere's, and the approach loads the library
-/// sphere's with the same law.
+/// sphere's with the same law. Run with 3 points per leg instead of the
+/// example's 10 (the retraction tables, not the points, set the cost):
+/// there the search for the central separation of a remote one once
+/// failed ("no convergence after 80 iterations", residual 8e-10 sigma)
+/// because it asked for 1e-10 sigma, below the mesh error of the central
+/// deflection.
 #[test]
 fn plastic_switch_bump_example_pulls_off_and_reports_stiction() {
     let example = concat!(
@@ -204,7 +209,13 @@ fn plastic_switch_bump_example_pulls_off_and_reports_stiction() {
         "/examples/scenes/switch-bump-plastic.toml"
     );
     let dir = tmp("bump-plastic");
-    let (code, out, err) = asperity(&["run", example, "--json"], &dir);
+    let scene =
+        std::fs::read_to_string(example)
+            .unwrap()
+            .replacen("points = 10 ", "points = 3 ", 1);
+    assert!(scene.contains("points = 3 "));
+    std::fs::write(dir.join("bump3.toml"), scene).unwrap();
+    let (code, out, err) = asperity(&["run", "bump3.toml", "--json"], &dir);
     assert_eq!(code, 0, "{err}");
     let s: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(s["law"], "kogut-etsion", "{}", s["law"]);

@@ -160,6 +160,12 @@ impl fmt::Display for Finding {
                 "the real contact area would be {fraction:.3e} x the nominal area (impossible; GW \
                  needs a small fraction)"
             ),
+            Finding::Resolution { inside, points, .. } if inside >= points as f64 => write!(
+                f,
+                "resolution: {points} points per leg (program.points), all where summits are in \
+                 range, are fewer than {MIN_POINTS_IN_RANGE}: the curve, pull-off and hysteresis \
+                 energy are not resolved"
+            ),
             Finding::Resolution {
                 inside,
                 points,
@@ -231,7 +237,8 @@ impl GwModel {
         let onset = self.interaction_onset();
         let span = p.start - p.closest;
         if span > 0.0 && onset.is_finite() && onset > p.closest {
-            let inside = (onset.min(p.start) - p.closest) / span * (p.points as f64 - 1.0);
+            // points in range: the closest one and the intervals' share
+            let inside = (onset.min(p.start) - p.closest) / span * (p.points as f64 - 1.0) + 1.0;
             if inside < MIN_POINTS_IN_RANGE {
                 out.push(Finding::Resolution {
                     inside,

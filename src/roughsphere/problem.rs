@@ -194,10 +194,14 @@ impl RoughSphere {
         Ok(s)
     }
 
-    /// Tolerance of the remote-separation search (units `sigma`).
+    /// Tolerance of the remote-separation search (units `sigma`): `1e-10`
+    /// relative, or the remote separation's own error estimate where that
+    /// is larger (the solver's mesh error in the central deflection: below
+    /// it the remote separation is not a monotone function of the central
+    /// one and a bracket cannot close further).
     fn remote_tolerance(&self, target: f64, s: &Solved) -> f64 {
-        let u0 = self.core.central_deflection(s).value.abs();
-        1e-10 * (1.0 + target.abs() + u0)
+        let u0 = self.core.central_deflection(s);
+        (1e-10 * (1.0 + target.abs() + u0.value.abs())).max(u0.error.abs())
     }
 
     /// The approach state at remote separation `target` (units `sigma`):
