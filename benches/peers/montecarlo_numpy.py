@@ -18,6 +18,17 @@ Laws:
   `InterpolatedLaw`): np.searchsorted for the panel, Clenshaw for the
   load and a^2, sqrt for a. PANELS panels over the population's range
   (pass the count the Rust table has: printed by the Rust bench).
+- interp: np.interp of the load and of a^2 on a linear table with as many
+  nodes as the Chebyshev table holds coefficients (PANELS x (DEG + 1)),
+  sqrt for a: the cheapest tabulated law a numpy user would write (far
+  less accurate than the Chebyshev panels at the same node count: linear
+  interpolation errs by h^2 f''/8 per node spacing h).
+- interp, matched: the same with the node count doubled until the linear
+  table of the JKR load (a smooth stand-in of the same scales over the
+  population's interferences, all in contact) is within TABLE_TOL of its
+  largest value at 200,000 random points, TABLE_TOL = 1e-9 being the
+  tolerance of asperity's tabulated Maugis-Dugdale law at the default
+  accuracy (0.1 x 1e-8, `montecarlo::TABLE_TOLERANCE_FRACTION`).
 
 Run: python3 benches/peers/montecarlo_numpy.py [PANELS]
 (needs numpy; e.g. python3 -m venv /tmp/venv && /tmp/venv/bin/pip install numpy).
@@ -118,6 +129,37 @@ def tabulated(x, table):
     return load, radius
 
 
+def make_linear(lo, hi, nodes):
+    xs = np.linspace(lo, hi, nodes)
+    # A smooth stand-in (the timing does not depend on the values).
+    return xs, 1e-7 * np.sin(xs / hi * 3.0), 1e-16 * (1.0 + xs / hi)
+
+
+def interp(x, linear):
+    xs, load, a2 = linear
+    return np.interp(x, xs, load), np.sqrt(np.maximum(np.interp(x, xs, a2), 0.0))
+
+
+TABLE_TOL = 1e-9
+
+
+def matched_linear(lo, hi, start):
+    """A linear table of the JKR load and a^2 on [lo, hi] whose
+    interpolation error is at most TABLE_TOL of the largest |load|."""
+    rng = np.random.default_rng(2)
+    xt = rng.uniform(lo, hi, 200_000)
+    lt, at = jkr(xt)
+    scale = np.abs(lt).max()
+    n = start
+    while True:
+        xs = np.linspace(lo, hi, n)
+        lx, ax = jkr(xs)
+        err = np.abs(np.interp(xt, xs, lx) - lt).max() / scale
+        if err <= TABLE_TOL or n > 1 << 26:
+            return (xs, lx, ax * ax), n, err
+        n *= 2
+
+
 def best_ns(f, z, d):
     best = float("inf")
     for _ in range(REPEATS):
@@ -133,11 +175,15 @@ def main():
     z = heights(N)
     d = -SIGMA
     table = make_table(0.0, float(z[-1] - d), panels)
+    linear = make_linear(0.0, float(z[-1] - d), panels * (DEG + 1))
+    matched, n_matched, err = matched_linear(0.0, float(z[-1] - d), panels * (DEG + 1))
     print(f"numpy {np.__version__}, N = {N}, best of {REPEATS}, one thread")
     for name, f in [
         ("hertz", hertz),
         ("jkr", jkr),
         (f"tabulated-md ({panels} panels)", lambda x: tabulated(x, table)),
+        (f"interp ({panels * (DEG + 1)} nodes)", lambda x: interp(x, linear)),
+        (f"interp ({n_matched} nodes, err {err:.1e})", lambda x: interp(x, matched)),
     ]:
         print(f"{name:32s} {best_ns(f, z, d):8.2f} ns/summit")
 
