@@ -29,6 +29,7 @@ mod moments;
 mod nayak;
 pub mod npy;
 mod plane;
+mod scan;
 mod summits;
 pub mod synthetic;
 pub mod text;
