@@ -25,7 +25,7 @@ use rayon::prelude::*;
 const BLOCK_ROWS: usize = 64;
 
 /// Interleaved accumulators per sum within a row.
-const LANES: usize = 4;
+const LANES: usize = 8;
 
 /// The five difference sums: `[z^2, x first, y first, x second, y second]`.
 pub(crate) type DiffSums = [f64; 5];

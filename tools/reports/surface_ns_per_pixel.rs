@@ -11,7 +11,8 @@
 //! per-call figures is printed. With a third argument the map is written
 //! there as `.npy` (what `benches/peers/surface_numpy.py` reads). Prints
 //! one JSON object: the timing and the answer (plane, moments, summit
-//! count and statistics) for the numpy peer to check.
+//! count, the sum of the summits' flat indices `row * side + col` and
+//! their statistics) for the numpy peer to check.
 use asperity::surface::synthetic::GaussianSurface;
 use asperity::surface::{npy, Topography};
 use std::hint::black_box;
@@ -60,7 +61,7 @@ fn main() {
         "{{\"side\": {side}, \"threads\": {threads}, \"repeats\": {repeats}, \
          \"cpu_ms_median\": {:.3}, \"cpu_ms_min\": {:.3}, \"ns_per_pixel\": {:.3}, \
          \"c0\": {:e}, \"slope_x\": {:e}, \"slope_y\": {:e}, \
-         \"m0\": {:e}, \"m2\": {:e}, \"m4\": {:e}, \"summits\": {}, \
+         \"m0\": {:e}, \"m2\": {:e}, \"m4\": {:e}, \"summits\": {}, \"summit_index_sum\": {}, \
          \"mean_curvature\": {:e}, \"mean_height\": {:e}, \"height_std\": {:e}}}",
         median * 1e-6,
         per_call[0] * 1e-6,
@@ -72,6 +73,10 @@ fn main() {
         c.moments.m2,
         c.moments.m4,
         c.stats.count,
+        c.summits
+            .iter()
+            .map(|s| s.row * side + s.col)
+            .sum::<usize>(),
         c.stats.mean_curvature_per_m.unwrap_or(f64::NAN),
         c.stats.mean_height_m.unwrap_or(f64::NAN),
         c.stats.height_std_m.unwrap_or(f64::NAN),
