@@ -6,9 +6,11 @@
 //! row buffers (the rows above, at and below the current one, `cols` values
 //! each) and fills them with residual heights as it goes, so no map-sized
 //! buffer is made. Within a row the sums run in [`LANES`] interleaved
-//! accumulators, and the 8-neighbour summit test is branch-free (the eight
-//! comparisons and-ed into a byte mask, then the set bytes read 8 at a
-//! time). The blocks are fixed by the map, not by the threads, and their
+//! accumulators, and the 8-neighbour summit test is branch-free: each
+//! row's 3-column maxima are made once and serve the rows above and below,
+//! a pixel is a summit when it is above `max(west, east, max3 above, max3
+//! below)` (the 8 strict comparisons in 4), the result goes into a byte
+//! mask and the set bytes are read back 8 at a time. The blocks are fixed by the map, not by the threads, and their
 //! sums are added in block order: the result is the same bit for bit on any
 //! number of threads.
 //!
