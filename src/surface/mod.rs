@@ -4,8 +4,10 @@
 //! comes from a reader (`npy` for NumPy `.npy`, `text` for whitespace- or
 //! comma-separated matrices); both parse from memory, never from a path, so
 //! the core opens no files. [`Topography`] binds the map to its pixel size and
-//! [`Topography::characterise`] removes the mean plane and measures, in one
-//! parallel pass per quantity over the rows:
+//! [`Topography::characterise`] fits the mean plane (one pass over the map)
+//! and then, in one fused pass over the residual rows (made block by block,
+//! no map-sized temporary; parallel over fixed row blocks, the same result
+//! on any number of threads), measures:
 //!
 //! - the profile moments `m0, m2, m4` by finite differences and Nayak's
 //!   bandwidth `alpha = m0 m4 / m2^2` ([`Moments`]);
@@ -29,6 +31,7 @@ mod moments;
 mod nayak;
 pub mod npy;
 mod plane;
+mod scan;
 mod summits;
 pub mod synthetic;
 pub mod text;

@@ -9,8 +9,8 @@
 //! differences along x, ...), or every pixel with wrapped neighbours for a
 //! periodic map. Nayak's bandwidth `alpha = m0 m4 / m2^2`.
 
+use super::scan::DiffSums;
 use crate::error::{positive, Error, Result};
-use rayon::prelude::*;
 
 /// Spectral moments of a surface: `m0` (m^2), `m2` (1), `m4` (1/m^2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -22,10 +22,6 @@ pub struct Moments {
     /// Mean square curvature of a profile (1/m^2).
     pub m4: f64,
 }
-
-/// Sums over one row: `z^2`, x and y first and second differences squared.
-#[derive(Default, Clone, Copy)]
-struct RowSums([f64; 5]);
 
 impl Moments {
     /// Moments given directly (e.g. of a known spectrum).
@@ -74,49 +70,24 @@ impl Moments {
 
     /// Measures the finite-difference moments of residual heights `z`
     /// (row-major, `rows, cols >= 3`, pixel size `dx` in m).
+    #[cfg(test)]
     pub(crate) fn measure(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Self {
-        let row = |i: usize| &z[i * cols..(i + 1) * cols];
-        let per_row: Vec<RowSums> = (0..rows)
-            .into_par_iter()
-            .map(|i| {
-                let mut s = RowSums::default();
-                let r = row(i);
-                s.0[0] = r.iter().map(|v| v * v).sum();
-                s.0[1] = x_first(r, periodic);
-                s.0[3] = x_second(r, periodic);
-                let next = if i + 1 < rows {
-                    Some(i + 1)
-                } else {
-                    periodic.then_some(0)
-                };
-                if let Some(n) = next {
-                    s.0[2] = row(n).iter().zip(r).map(|(a, b)| (a - b) * (a - b)).sum();
-                }
-                let prev = if i > 0 {
-                    Some(i - 1)
-                } else {
-                    periodic.then_some(rows - 1)
-                };
-                if let (Some(p), Some(n)) = (prev, next) {
-                    s.0[4] = row(n)
-                        .iter()
-                        .zip(r)
-                        .zip(row(p))
-                        .map(|((a, b), c)| {
-                            let d = a - 2.0 * b + c;
-                            d * d
-                        })
-                        .sum();
-                }
-                s
-            })
-            .collect();
-        let mut t = [0.0; 5];
-        for s in &per_row {
-            for (a, b) in t.iter_mut().zip(s.0) {
-                *a += b;
-            }
-        }
+        let scan = super::scan::scan(rows, cols, dx, periodic, |i, out| {
+            out.copy_from_slice(&z[i * cols..(i + 1) * cols])
+        });
+        Moments::from_sums(&scan.sums, rows, cols, dx, periodic)
+    }
+
+    /// The moments from the difference sums of a `rows x cols` map
+    /// (`[z^2, x first, y first, x second, y second]`, see `scan.rs`):
+    /// each sum divided by its number of differences.
+    pub(crate) fn from_sums(
+        t: &DiffSums,
+        rows: usize,
+        cols: usize,
+        dx: f64,
+        periodic: bool,
+    ) -> Self {
         let (r, c) = (rows as f64, cols as f64);
         let n = |a: f64, b: f64| if periodic { r * c } else { a * b };
         let m0 = t[0] / (r * c);
@@ -136,24 +107,6 @@ impl Moments {
             ))
         }
     }
-}
-
-/// Sum of squared forward differences along a row (wrapped if periodic).
-fn x_first(r: &[f64], periodic: bool) -> f64 {
-    let inner: f64 = r.windows(2).map(|w| (w[1] - w[0]) * (w[1] - w[0])).sum();
-    let wrap = r[0] - r[r.len() - 1];
-    inner + if periodic { wrap * wrap } else { 0.0 }
-}
-
-/// Sum of squared 3-point second differences along a row.
-fn x_second(r: &[f64], periodic: bool) -> f64 {
-    let d2 = |a: f64, b: f64, c: f64| (a - 2.0 * b + c) * (a - 2.0 * b + c);
-    let inner: f64 = r.windows(3).map(|w| d2(w[2], w[1], w[0])).sum();
-    if !periodic {
-        return inner;
-    }
-    let n = r.len();
-    inner + d2(r[1], r[0], r[n - 1]) + d2(r[0], r[n - 1], r[n - 2])
 }
 
 #[cfg(test)]

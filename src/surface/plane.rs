@@ -31,15 +31,11 @@ impl Plane {
     pub(crate) fn fit(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Plane {
         let jc = (cols as f64 - 1.0) / 2.0;
         let ic = (rows as f64 - 1.0) / 2.0;
-        // Per row: sum z and sum (j - jc) z, in row order (deterministic).
-        let sums: Vec<(f64, f64)> = z
-            .par_chunks(cols)
-            .map(|row| {
-                row.iter().enumerate().fold((0.0, 0.0), |(s, sx), (j, &v)| {
-                    (s + v, sx + (j as f64 - jc) * v)
-                })
-            })
-            .collect();
+        // Per row: sum z and sum (j - jc) z in LANES interleaved
+        // accumulators, rows added in row order (the same on any number of
+        // threads).
+        let xs: Vec<f64> = (0..cols).map(|j| j as f64 - jc).collect();
+        let sums: Vec<(f64, f64)> = z.par_chunks(cols).map(|row| row_sums(row, &xs)).collect();
         let n = (rows * cols) as f64;
         let (mut s, mut sx, mut sy) = (0.0, 0.0, 0.0);
         for (i, (rs, rsx)) in sums.iter().enumerate() {
@@ -74,17 +70,55 @@ impl Plane {
 
     /// The residual heights `z - plane`, row-major.
     pub(crate) fn residual(&self, z: &[f64], cols: usize) -> Vec<f64> {
+        let columns = self.columns(cols);
         let mut r = vec![0.0; z.len()];
         r.par_chunks_mut(cols)
             .zip(z.par_chunks(cols))
             .enumerate()
-            .for_each(|(i, (out, row))| {
-                for (j, (o, &v)) in out.iter_mut().zip(row).enumerate() {
-                    *o = v - self.at(i, j);
-                }
-            });
+            .for_each(|(i, (out, row))| self.residual_row(i, row, &columns, out));
         r
     }
+
+    /// The column part of the plane, `mean + slope_x_px (j - j_c)` for
+    /// `j < cols` (m): with [`Plane::residual_row`], the height of
+    /// [`Plane::at`] to the bit.
+    pub(crate) fn columns(&self, cols: usize) -> Vec<f64> {
+        (0..cols)
+            .map(|j| self.mean + self.per_px.0 * (j as f64 - self.centre.0))
+            .collect()
+    }
+
+    /// Row `i` of the residual heights, `row - plane`, into `out`;
+    /// `columns` from [`Plane::columns`].
+    pub(crate) fn residual_row(&self, i: usize, row: &[f64], columns: &[f64], out: &mut [f64]) {
+        let y = self.per_px.1 * (i as f64 - self.centre.1);
+        for ((o, &v), &c) in out.iter_mut().zip(row).zip(columns) {
+            *o = v - (c + y);
+        }
+    }
+}
+
+/// Interleaved accumulators of [`row_sums`].
+const LANES: usize = 4;
+
+/// `(sum z, sum x z)` over a row `z` with centred column positions `xs`
+/// (pixels), in [`LANES`] interleaved accumulators added in lane order.
+fn row_sums(z: &[f64], xs: &[f64]) -> (f64, f64) {
+    let (mut s, mut sx) = ([0.0; LANES], [0.0; LANES]);
+    let (zc, xc) = (z.chunks_exact(LANES), xs.chunks_exact(LANES));
+    let (zr, xr) = (zc.remainder(), xc.remainder());
+    for (zk, xk) in zc.zip(xc) {
+        for l in 0..LANES {
+            s[l] += zk[l];
+            sx[l] += xk[l] * zk[l];
+        }
+    }
+    let (mut t, mut tx) = (0.0, 0.0);
+    for (&v, &x) in zr.iter().zip(xr) {
+        t += v;
+        tx += x * v;
+    }
+    (t + s.iter().sum::<f64>(), tx + sx.iter().sum::<f64>())
 }
 
 #[cfg(test)]

@@ -8,8 +8,6 @@
 //! (the mean of the two principal curvatures; `1/kappa` is the summit
 //! radius of a paraboloid cap).
 
-use rayon::prelude::*;
-
 /// One measured summit.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Summit {
@@ -45,50 +43,12 @@ pub struct SummitStats {
 
 /// The summits of residual heights `z` (row-major, `rows, cols >= 3`),
 /// in row-major order.
+#[cfg(test)]
 pub(crate) fn find(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Vec<Summit> {
-    let range = if periodic { 0..rows } else { 1..rows - 1 };
-    let row = |i: usize| &z[i * cols..(i + 1) * cols];
-    let k = 1.0 / (2.0 * dx * dx);
-    let per_row: Vec<Vec<Summit>> = range
-        .into_par_iter()
-        .map(|i| {
-            let up = row(if i == 0 { rows - 1 } else { i - 1 });
-            let mid = row(i);
-            let down = row(if i + 1 == rows { 0 } else { i + 1 });
-            let mut out = Vec::new();
-            let mut test = |j: usize, l: usize, r: usize| {
-                let c = mid[j];
-                if c > mid[l]
-                    && c > mid[r]
-                    && c > up[j]
-                    && c > down[j]
-                    && c > up[l]
-                    && c > up[r]
-                    && c > down[l]
-                    && c > down[r]
-                {
-                    let lap = up[j] + down[j] + mid[l] + mid[r] - 4.0 * c;
-                    out.push(Summit {
-                        row: i,
-                        col: j,
-                        height_m: c,
-                        curvature_per_m: -lap * k,
-                    });
-                }
-            };
-            if periodic {
-                test(0, cols - 1, 1);
-            }
-            for j in 1..cols - 1 {
-                test(j, j - 1, j + 1);
-            }
-            if periodic {
-                test(cols - 1, cols - 2, 0);
-            }
-            out
-        })
-        .collect();
-    per_row.concat()
+    super::scan::scan(rows, cols, dx, periodic, |i, out| {
+        out.copy_from_slice(&z[i * cols..(i + 1) * cols])
+    })
+    .summits
 }
 
 impl SummitStats {
