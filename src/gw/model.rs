@@ -20,7 +20,11 @@
 //! is a sum of powers ([`AsperityLaw::power_form`]: Hertz, DMT) and the
 //! distribution has closed-form `F_n`; otherwise adaptive Gauss–Kronrod
 //! quadrature in `s`, split at every point where the integrand jumps, with
-//! an error estimate measured against `int |integrand|`.
+//! an error estimate measured against `int |integrand|`. Laws smooth in the
+//! root of their interference are integrated in `t = sqrt(s - s0)`: at
+//! tolerances of 1e-7 and looser by fixed Gauss–Legendre rules over many
+//! states at once, each state's estimate from its own nodes (`root_rule`),
+//! adaptively otherwise.
 
 use crate::error::{Allowed, Error, Result};
 use crate::gw::RoughSurface;
@@ -31,7 +35,10 @@ use crate::numeric::quadrature::{
     integrate_pieces_batch, kronrod21_batch, kronrod21_pieces, QuadOptions,
 };
 use rayon::prelude::*;
+use root_rule::{RootPlan, FIXED_RULE_MIN_RTOL, ROOT_BATCH};
 use std::sync::Arc;
+
+mod root_rule;
 
 /// How to integrate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -352,20 +359,7 @@ impl GwModel {
         let sigma = self.surface.sigma;
         let law = self.law.as_ref();
         let dist = self.distribution.as_ref();
-        let (sup_lo, sup_hi) = self.support;
-        // Below the cutoff every branch gives exactly zero: skip.
-        let s_lo = ((d + law.cutoff_interference()) / sigma).max(sup_lo);
-        // Far in the upper tail the density is factored out at `s_lo` (so
-        // neither it nor the integral underflows before the end of the
-        // result's own range) and the upper end is where the density has
-        // fallen by FAR_TAIL_DROP from there, not the fixed support.
-        let far = far_tail_reference(dist, s_lo);
-        let top = match far {
-            Some(_) => far_tail_end(dist, s_lo),
-            None => sup_hi,
-        };
-        // A rigid law is bounded by its own divergence (checked in `new`).
-        let s_hi = top.min((d + law.max_interference()) / sigma);
+        let (s_lo, s_hi, far) = self.height_range(d);
         let mask = obs.mask();
         if !(s_hi > s_lo) {
             return Ok(State {
@@ -376,6 +370,13 @@ impl GwModel {
             });
         }
         if far.is_none() && self.root_rule_applies(history) {
+            if self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL {
+                let plan = RootPlan { d, s_lo, s_hi };
+                let mut one = self.root_states(&[plan], obs);
+                return one
+                    .pop()
+                    .unwrap_or_else(|| self.quadrature_in_root(d, s_lo, s_hi, obs));
+            }
             return self.quadrature_in_root(d, s_lo, s_hi, obs);
         }
         let points = self.split_points(d, history, s_lo, s_hi);
@@ -444,6 +445,74 @@ impl GwModel {
         })
     }
 
+    /// The standardised heights `(s_lo, s_hi)` quadrature covers at
+    /// separation `d`, and `Some(s_lo)` when the density is factored out
+    /// there ([`far_tail_reference`]).
+    fn height_range(&self, d: f64) -> (f64, f64, Option<f64>) {
+        let sigma = self.surface.sigma;
+        let law = self.law.as_ref();
+        let dist = self.distribution.as_ref();
+        let (sup_lo, sup_hi) = self.support;
+        // Below the cutoff every branch gives exactly zero: skip.
+        let s_lo = ((d + law.cutoff_interference()) / sigma).max(sup_lo);
+        // Far in the upper tail the density is factored out at `s_lo` (so
+        // neither it nor the integral underflows before the end of the
+        // result's own range) and the upper end is where the density has
+        // fallen by FAR_TAIL_DROP from there, not the fixed support.
+        let far = far_tail_reference(dist, s_lo);
+        let top = match far {
+            Some(_) => far_tail_end(dist, s_lo),
+            None => sup_hi,
+        };
+        // A rigid law is bounded by its own divergence (checked in `new`).
+        let s_hi = top.min((d + law.max_interference()) / sigma);
+        (s_lo, s_hi, far)
+    }
+
+    /// Whether the fixed rules in the root ([`root_rule`]) may serve
+    /// states asking for `obs`: [`Method::Auto`] at a tolerance of at
+    /// least [`FIXED_RULE_MIN_RTOL`], no closed form, no finite sample of
+    /// heights, a law smooth in the root of its interference.
+    fn fixed_root_rule(&self, obs: &Observables) -> bool {
+        self.accuracy.method == Method::Auto
+            && self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL
+            && self.law.smooth_in_root()
+            && !self.has_closed_form(obs)
+            && self.distribution.sample_points().is_none()
+    }
+
+    /// The state at `d` after `history` as [`LoadingModel::state`] computes
+    /// it with the fixed rules in the root, when it does; `None` for every
+    /// other state.
+    /// `fixed` is [`GwModel::fixed_root_rule`] of the observables.
+    fn root_plan(&self, d: f64, history: History, fixed: bool) -> Option<RootPlan> {
+        if !fixed || history.check(d).is_err() || !self.root_rule_applies(history) {
+            return None;
+        }
+        let (s_lo, s_hi, far) = self.height_range(d);
+        (s_hi > s_lo && far.is_none()).then_some(RootPlan { d, s_lo, s_hi })
+    }
+
+    /// The states of `steps` in order: those the fixed rules in the root
+    /// serve in one batch, the others one by one.
+    fn batch_states(&self, steps: &[(f64, History)], obs: &Observables) -> Vec<Result<State>> {
+        let fixed = self.fixed_root_rule(obs);
+        let plans: Vec<Option<RootPlan>> = steps
+            .iter()
+            .map(|&(d, h)| self.root_plan(d, h, fixed))
+            .collect();
+        let batch: Vec<RootPlan> = plans.iter().flatten().copied().collect();
+        let mut root = self.root_states(&batch, obs).into_iter();
+        steps
+            .iter()
+            .zip(&plans)
+            .map(|(&(d, h), p)| match p.and_then(|_| root.next()) {
+                Some(r) => r,
+                None => self.state(d, h, obs),
+            })
+            .collect()
+    }
+
     /// Whether [`GwModel::quadrature_in_root`] serves this state: adaptive
     /// quadrature asked for by [`Method::Auto`], a law smooth in the root
     /// of its interference ([`AsperityLaw::smooth_in_root`]) on its
@@ -455,7 +524,9 @@ impl GwModel {
             && (history == History::Approach || self.law.reversible())
     }
 
-    /// The approach totals by adaptive Gauss–Kronrod in `t = sqrt(s - s0)`,
+    /// The approach totals by adaptive Gauss–Kronrod in `t = sqrt(s - s0)`
+    /// (tolerances below [`FIXED_RULE_MIN_RTOL`], and states the fixed
+    /// rules of [`root_rule`] could not certify),
     /// `s0 = (d + cutoff)/sigma` the height where contact starts: `ds = 2t
     /// dt`, the interference `sigma t^2 + cutoff` exact (no cancellation),
     /// and every total smooth in `t` between the law's breakpoints, so the
@@ -789,10 +860,19 @@ impl LoadingModel for GwModel {
     /// # Errors
     /// As [`LoadingModel::state`] (the first failing step's error).
     fn states(&self, steps: &[(f64, History)], observables: &Observables) -> Result<Vec<State>> {
-        let results: Vec<Result<State>> = steps
-            .par_iter()
-            .map(|&(d, h)| self.state(d, h, observables))
-            .collect();
+        // States the fixed rules in the root serve go in batches of
+        // ROOT_BATCH (each state's bits are those it has alone).
+        let results: Vec<Result<State>> = if self.fixed_root_rule(observables) {
+            steps
+                .par_chunks(ROOT_BATCH)
+                .flat_map_iter(|chunk| self.batch_states(chunk, observables))
+                .collect()
+        } else {
+            steps
+                .par_iter()
+                .map(|&(d, h)| self.state(d, h, observables))
+                .collect()
+        };
         // Collected in order first, so the reported error is deterministic.
         results.into_iter().collect()
     }

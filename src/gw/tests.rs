@@ -214,3 +214,60 @@ fn root_rule_meets_the_tolerance_against_closed_forms() {
         }
     }
 }
+
+/// The fixed rules in the root serve a curve in batches: every state of
+/// `states` is bit for bit the state computed alone, the batch and single
+/// paths agree on method and evaluations, looser tolerances cost fewer
+/// evaluations, and the Kogut–Etsion curve (pieces at its three jumps)
+/// stays within the tolerance of the tightest adaptive curve.
+#[test]
+fn fixed_root_rules_in_batches_are_the_single_states() {
+    use crate::heights::Gaussian;
+    use crate::law::plastic::build;
+    use crate::loading::Observable;
+    use crate::material::plastic::{Plasticity, Variant};
+    let s = RoughSurface::gold_microswitch();
+    let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
+    let ke = build(Variant::KogutEtsion, s.radius, 4.796e10, Plasticity::gold())
+        .unwrap()
+        .as_law();
+    let extra = Observables::ALL
+        .with(Observable::Custom(Arc::new(AreaAgain)))
+        .unwrap();
+    let steps: Vec<(f64, History)> = (0..75)
+        .map(|i| ((-3.0 + 0.1 * i as f64) * s.sigma, History::Approach))
+        .collect();
+    for (law, obs) in [(hertz, &extra), (ke, &Observables::ALL)] {
+        let m = GwModel::new(s, Arc::new(Gaussian::new()), law).unwrap();
+        let reference = m
+            .clone()
+            .with_accuracy(Accuracy::new(1e-12).unwrap())
+            .states(&steps, obs)
+            .unwrap();
+        let mut last = usize::MAX;
+        for tol in [1e-6, 1e-3] {
+            let m = m.clone().with_accuracy(Accuracy::new(tol).unwrap());
+            let batch = m.states(&steps, obs).unwrap();
+            let mut evaluations = 0;
+            for ((st, &(d, h)), r) in batch.iter().zip(&steps).zip(&reference) {
+                let one = m.state(d, h, obs).unwrap();
+                assert_eq!(st, &one, "{} tol {tol} d {d:e}", m.law().name());
+                assert_eq!(st.method, MethodUsed::Quadrature);
+                evaluations += st.evaluations;
+                for k in 0..4 {
+                    let (Some(a), Some(b)) = (st.totals.get(k), r.totals.get(k)) else {
+                        continue;
+                    };
+                    let e = st.totals.error(k).unwrap();
+                    assert!(
+                        (a - b).abs() <= tol * b.abs() && (a - b).abs() <= e + 1e-13 * b.abs(),
+                        "{} tol {tol} d {d:e} slot {k}: {a} vs {b} (estimate {e:e})",
+                        m.law().name()
+                    );
+                }
+            }
+            assert!(evaluations < last, "{}: {evaluations}", m.law().name());
+            last = evaluations;
+        }
+    }
+}

@@ -4,6 +4,7 @@
 //! and the one seed mixer of the crate's random streams.
 
 pub mod chebyshev;
+pub mod gauss;
 pub mod lanes;
 pub mod mix;
 pub mod pchip;
