@@ -49,7 +49,8 @@
 //! `A^2 = A_last^2 + Dbar - Dbar_last` (adhesion changes slowly there).
 
 use super::{
-    AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, RetractionMinimum,
+    AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, LawCursor,
+    RetractionMinimum,
 };
 use crate::error::{Error, Result};
 use crate::material::MaugisScales;
@@ -113,19 +114,32 @@ impl CurveTable {
 struct Interp {
     load: Pchip,
     radius: Pchip,
+    /// `h1 = 1 - s Dbar_1` at the first node (`s` the far-field scale).
+    far_h1: f64,
+    /// `E_1 - 1` with `E_1 = Pbar_1/Bradley(h1)` (used where `h1 > 1`).
+    far_excess: f64,
 }
 
 impl Interp {
-    fn new(b: &BranchTable, which: &str) -> Result<Self> {
+    fn new(b: &BranchTable, which: &str, far_field_scale: f64) -> Result<Self> {
         let bad = || {
             Error::invalid(
                 format!("table.{which}"),
                 "needs >= 2 finite points with strictly increasing interference and equal lengths",
             )
         };
+        let load = Pchip::new(b.interference_bar.clone(), b.load_bar.clone()).ok_or_else(bad)?;
+        let radius =
+            Pchip::new(b.interference_bar.clone(), b.radius_bar.clone()).ok_or_else(bad)?;
+        // Constants of the far field below the first node (per call they
+        // cost a division and the Bradley shape).
+        let far_h1 = 1.0 - far_field_scale * load.x()[0];
+        let far_excess = load.y()[0] / (-BRADLEY * bradley_shape(far_h1)) - 1.0;
         Ok(Interp {
-            load: Pchip::new(b.interference_bar.clone(), b.load_bar.clone()).ok_or_else(bad)?,
-            radius: Pchip::new(b.interference_bar.clone(), b.radius_bar.clone()).ok_or_else(bad)?,
+            load,
+            radius,
+            far_h1,
+            far_excess,
         })
     }
 }
@@ -166,8 +180,8 @@ impl Tabulated {
         work: f64,
     ) -> Result<Self> {
         let scales = MaugisScales::new(radius, contact_modulus, work)?;
-        let detached = Interp::new(&table.detached, "detached")?;
-        let attached = Interp::new(&table.attached, "attached")?;
+        let detached = Interp::new(&table.detached, "detached", table.far_field_scale)?;
+        let attached = Interp::new(&table.attached, "attached", table.far_field_scale)?;
         if !(table.far_field_scale > 0.0 && table.far_field_scale.is_finite()) {
             return Err(Error::invalid(
                 "table.far_field_scale",
@@ -254,30 +268,89 @@ impl Tabulated {
     /// `(Pbar, A)` on one branch at `Dbar`.
     #[inline]
     fn eval(&self, it: &Interp, d: f64) -> (f64, f64) {
+        let mut bisect = usize::MAX;
+        self.eval_near(it, d, &mut bisect)
+    }
+
+    /// [`eval`](Self::eval) with the PCHIP piece found by walking from
+    /// `*hint` (updated; the same piece, so the same value), one search for
+    /// the load and the radius (they share their nodes).
+    #[inline]
+    fn eval_near(&self, it: &Interp, d: f64, hint: &mut usize) -> (f64, f64) {
         let xs = it.load.x();
         let (first, last) = (xs[0], xs[xs.len() - 1]);
         if d < first {
-            let s = self.table.far_field_scale;
-            let (h, h1) = (1.0 - s * d, 1.0 - s * first);
-            let p1 = it.load.y()[0];
+            let h1 = it.far_h1;
             if h1 > 1.0 {
-                let (b, b1) = (bradley_shape(h), bradley_shape(h1));
-                // E_1 = p1/Bradley(h1); Pbar = Bradley(h) [1 + (E_1 - 1) (h1/h)^3.5].
-                let excess = p1 / (-BRADLEY * b1) - 1.0;
+                // E_1 = p1/Bradley(h1); Pbar = Bradley(h) [1 + (E_1 - 1) (h1/h)^3.5],
+                // Bradley(h) = h^-2 - h^-8/4, with one division for 1/h.
+                let inv = 1.0 / (1.0 - self.table.far_field_scale * d);
+                let x2 = inv * inv;
+                let b = x2 - 0.25 * x2 * x2 * x2 * x2;
                 // (h1/h)^(7/2) as r^3 sqrt(r): a tenth of `powf`'s cost
                 // in the far-field sums where every summit is in range.
-                let r = h1 / h;
+                let r = h1 * inv;
                 let decay = r * r * r * r.sqrt();
-                return (-BRADLEY * b * (1.0 + excess * decay), 0.0);
+                return (-BRADLEY * b * (1.0 + it.far_excess * decay), 0.0);
             }
-            return (p1, it.radius.y()[0]);
+            return (it.load.y()[0], it.radius.y()[0]);
         }
         if d > last {
             let (p1, a1) = (it.load.y()[xs.len() - 1], it.radius.y()[xs.len() - 1]);
             let p = p1 + d.max(0.0).powf(1.5) - last.max(0.0).powf(1.5);
             return (p, (a1 * a1 + d - last).sqrt());
         }
-        (it.load.eval(d), it.radius.eval(d).max(0.0))
+        // (as `Pchip::eval`: the end values at the ends, and for NaN)
+        if !(d > first) {
+            return (it.load.y()[0], it.radius.y()[0].max(0.0));
+        }
+        if d >= last {
+            let n = xs.len() - 1;
+            return (it.load.y()[n], it.radius.y()[n].max(0.0));
+        }
+        let k = it.load.piece_near(d, hint);
+        (
+            it.load.eval_piece(k, d),
+            it.radius.eval_piece(k, d).max(0.0),
+        )
+    }
+
+    /// The branch table of a state and its index (`0` attached, `1`
+    /// detached), as [`state`](AsperityLaw::state) chooses it.
+    #[inline]
+    fn branch_table(&self, d: f64, branch: Branch) -> (&Interp, usize) {
+        let on_attached = match branch {
+            Branch::Approach => self.table.attach_bar.is_none_or(|a| d >= a),
+            Branch::Retract => self.table.detach_bar.is_none_or(|a| d >= a),
+        };
+        if on_attached {
+            (&self.attached, 0)
+        } else {
+            (&self.detached, 1)
+        }
+    }
+
+    /// [`state`](AsperityLaw::state) with a walking search from `hints`.
+    #[inline]
+    fn state_hinted(&self, delta: f64, branch: Branch, hints: &mut [usize; 2]) -> ContactState {
+        let d = delta / self.scales.interference;
+        let (it, k) = self.branch_table(d, branch);
+        let (p, a) = self.eval_near(it, d, &mut hints[k]);
+        ContactState {
+            load: p * self.scales.load,
+            radius: a * self.scales.radius,
+        }
+    }
+
+    /// The branch of [`state_after`](AsperityLaw::state_after) (the
+    /// trait's rule: retraction once the jump-in was reached).
+    #[inline]
+    fn branch_after(&self, delta_max: f64) -> Branch {
+        if delta_max >= self.attach_interference() {
+            Branch::Retract
+        } else {
+            Branch::Approach
+        }
     }
 }
 
@@ -287,20 +360,47 @@ impl AsperityLaw for Tabulated {
     }
 
     fn state(&self, delta: f64, branch: Branch) -> ContactState {
-        let d = delta / self.scales.interference;
-        let on_attached = match branch {
-            Branch::Approach => self.table.attach_bar.is_none_or(|a| d >= a),
-            Branch::Retract => self.table.detach_bar.is_none_or(|a| d >= a),
-        };
-        let it = if on_attached {
-            &self.attached
-        } else {
-            &self.detached
-        };
-        let (p, a) = self.eval(it, d);
-        ContactState {
-            load: p * self.scales.load,
-            radius: a * self.scales.radius,
+        self.state_hinted(delta, branch, &mut [usize::MAX; 2])
+    }
+
+    /// The PCHIP piece search walks from the cursor (the same piece as
+    /// [`state`](AsperityLaw::state)'s bisection, so the same value).
+    #[inline]
+    fn state_near(
+        &self,
+        delta: f64,
+        delta_max: Option<f64>,
+        cursor: &mut LawCursor,
+    ) -> ContactState {
+        let branch = delta_max.map_or(Branch::Approach, |m| self.branch_after(m));
+        self.state_hinted(delta, branch, &mut cursor.panels)
+    }
+
+    /// One walking search per branch table over the whole block (a sorted
+    /// population moves a piece or two between summits); bit for bit
+    /// [`state`](AsperityLaw::state) / [`state_after`](AsperityLaw::state_after).
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        let mut hints = [usize::MAX; 2];
+        let out = load.iter_mut().zip(radius.iter_mut());
+        match delta_max {
+            None => {
+                for (&d, (l, r)) in delta.iter().zip(out) {
+                    let s = self.state_hinted(d, Branch::Approach, &mut hints);
+                    (*l, *r) = (s.load, s.radius);
+                }
+            }
+            Some(m) => {
+                for ((&d, &m), (l, r)) in delta.iter().zip(m).zip(out) {
+                    let s = self.state_hinted(d, self.branch_after(m), &mut hints);
+                    (*l, *r) = (s.load, s.radius);
+                }
+            }
         }
     }
 
@@ -408,6 +508,48 @@ mod tests {
             jump_out: None,
             zero_load_radius_bar: Some(crate::law::jkr::ZERO_LOAD_RADIUS),
             far_field_scale: 1.77,
+        }
+    }
+
+    /// The block evaluation and the cursor walk give the bits of `state`
+    /// and `state_after` (the same PCHIP piece as the bisection), on sorted
+    /// and shuffled interferences from the far field to beyond the last
+    /// node, the nodes themselves and NaN included.
+    #[test]
+    fn batch_and_cursor_equal_the_scalar_law_bit_for_bit() {
+        let tab = Tabulated::new(Arc::new(jkr_table()), 1e-6, 5e10, 0.5).unwrap();
+        let z = tab.scales.interference;
+        let nodes = tab.attached.load.x().to_vec();
+        let mut d: Vec<f64> = (0..700).map(|k| z * (-12.0 + 0.03 * k as f64)).collect();
+        d.extend(nodes.iter().map(|x| x * z));
+        d.extend([0.0, -3.0 * z, f64::NAN, 1e3 * z]);
+        let n = d.len();
+        let mut shuffled = d.clone();
+        for i in 0..n {
+            shuffled.swap(i, (i * 7919 + 13) % n);
+        }
+        d.extend(shuffled);
+        let m: Vec<f64> = d
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| x + z * (i % 3) as f64)
+            .collect();
+        let (mut load, mut radius) = (vec![0.0; d.len()], vec![0.0; d.len()]);
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+        tab.state_batch(&d, None, &mut load, &mut radius);
+        let mut cursor = LawCursor::default();
+        for (i, &x) in d.iter().enumerate() {
+            let s = tab.state(x, Branch::Approach);
+            assert!(same(load[i], s.load) && same(radius[i], s.radius), "{x:e}");
+            let c = tab.state_near(x, None, &mut cursor);
+            assert!(same(c.load, s.load) && same(c.radius, s.radius), "{x:e}");
+        }
+        tab.state_batch(&d, Some(&m), &mut load, &mut radius);
+        for (i, (&x, &mx)) in d.iter().zip(&m).enumerate() {
+            let s = tab.state_after(x, mx);
+            assert!(same(load[i], s.load) && same(radius[i], s.radius), "{x:e}");
+            let c = tab.state_near(x, Some(mx), &mut cursor);
+            assert!(same(c.load, s.load) && same(c.radius, s.radius), "{x:e}");
         }
     }
 

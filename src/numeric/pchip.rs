@@ -63,6 +63,48 @@ impl Pchip {
     }
 }
 
+impl Pchip {
+    /// The piece `k` with `x_k <= t < x_k+1` for `x_0 < t < x_n-1` (the
+    /// piece [`eval`](Pchip::eval) finds), walking from `*hint` (updated)
+    /// when it is a valid piece and the walk is short, bisecting otherwise:
+    /// nearby arguments (a sorted population) then cost a comparison or two.
+    #[inline]
+    pub fn piece_near(&self, t: f64, hint: &mut usize) -> usize {
+        let x = &self.x;
+        let last = x.len() - 2;
+        let mut k = *hint;
+        if k <= last {
+            for _ in 0..4 {
+                if x[k] > t {
+                    if k == 0 {
+                        break;
+                    }
+                    k -= 1;
+                } else if k < last && x[k + 1] <= t {
+                    k += 1;
+                } else {
+                    *hint = k;
+                    return k;
+                }
+            }
+        }
+        k = (x.partition_point(|&v| v <= t) - 1).min(last);
+        *hint = k;
+        k
+    }
+
+    /// The value at `t` on piece `k` (as [`eval`](Pchip::eval) for
+    /// `x_0 < t < x_n-1` and `k` from [`piece_near`](Pchip::piece_near)).
+    #[inline]
+    pub fn eval_piece(&self, k: usize, t: f64) -> f64 {
+        let h = self.x[k + 1] - self.x[k];
+        let s = (t - self.x[k]) / h;
+        let (y0, y1) = (self.y[k], self.y[k + 1]);
+        let (d0, d1) = (self.d[k] * h, self.d[k + 1] * h);
+        hermite(s, y0, y1, d0, d1)
+    }
+}
+
 /// The cubic Hermite interpolant on the unit interval: value at `s` in
 /// `[0, 1]` of the cubic with end values `y0`, `y1` and end slopes `d0`,
 /// `d1` (per unit `s`), `h00 y0 + h10 d0 + h01 y1 + h11 d1` with
@@ -128,6 +170,27 @@ fn end_slope(h0: f64, h1: f64, del0: f64, del1: f64) -> f64 {
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    /// The walk from any hint finds the piece of the bisection, and
+    /// `eval_piece` on it is `eval`, bit for bit.
+    #[test]
+    fn piece_near_is_the_bisections_piece_from_any_hint() {
+        let x: Vec<f64> = (0..40).map(|k| (k as f64).powf(1.3)).collect();
+        let y: Vec<f64> = x.iter().map(|v| v.sin()).collect();
+        let p = Pchip::new(x.clone(), y).unwrap();
+        let last = x[x.len() - 1];
+        for i in 1..2000 {
+            let t = last * i as f64 / 2000.0;
+            let want = x.partition_point(|&v| v <= t) - 1;
+            for hint in [0, 1, 5, 20, 37, 38, 39, 100, usize::MAX] {
+                let mut h = hint;
+                let k = p.piece_near(t, &mut h);
+                assert_eq!(k, want, "{t} {hint}");
+                assert_eq!(h, k);
+                assert_eq!(p.eval_piece(k, t).to_bits(), p.eval(t).to_bits());
+            }
+        }
+    }
 
     #[test]
     fn reproduces_nodes_and_cubics_with_matching_slopes() {
