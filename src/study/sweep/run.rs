@@ -288,7 +288,9 @@ pub fn sweep_table(
 }
 
 /// Runs the points of `spec` over the scene `base` that are not yet in
-/// `out/results.csv`, calling `progress(done, total)` as points finish.
+/// `out/results.csv`, calling `progress(done, total)` as points finish
+/// (once before any runs; the first point runs alone, so the second call
+/// comes after one point's time, the estimate of the others').
 ///
 /// # Errors
 /// Invalid specs or scenes (naming the field) and I/O failures (naming
@@ -341,18 +343,25 @@ pub fn run_sweep(
     let failed = AtomicUsize::new(0);
     progress(resumed, total);
     let file = Mutex::new(file);
-    let work = || {
-        todo.par_iter().try_for_each(|p| -> Result<()> {
-            let (row, ok) = point_row(&base_value, &paths, options, &cols, p);
-            if !ok {
-                failed.fetch_add(1, Ordering::Relaxed);
-            }
-            file.lock()
-                .map_err(|_| Error::invalid("out", "results file lock poisoned"))?
-                .append(p.index, &row)?;
-            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-            Ok(())
-        })
+    let step = |p: &&SweepPoint| -> Result<()> {
+        let (row, ok) = point_row(&base_value, &paths, options, &cols, p);
+        if !ok {
+            failed.fetch_add(1, Ordering::Relaxed);
+        }
+        file.lock()
+            .map_err(|_| Error::invalid("out", "results file lock poisoned"))?
+            .append(p.index, &row)?;
+        progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+        Ok(())
+    };
+    // The first point alone: its time, reported by the first progress
+    // call past `resumed`, is the per-point estimate of the rest.
+    let work = || match todo.split_first() {
+        Some((first, rest)) => {
+            step(first)?;
+            rest.par_iter().try_for_each(step)
+        }
+        None => Ok(()),
     };
     match options.threads {
         Some(n) => rayon::ThreadPoolBuilder::new()
