@@ -143,6 +143,12 @@ fn parse_cycle(text: &str) -> Result<(f64, f64), CliError> {
 }
 
 fn build_punch(args: &PunchArgs) -> Result<WavyPunch, CliError> {
+    if args.radius > 0.0 && args.wavelength >= args.radius {
+        return Err(CliError::Usage(format!(
+            "--wavelength = {:e} m must be smaller than --radius = {:e} m",
+            args.wavelength, args.radius
+        )));
+    }
     WavyPunch::new(
         args.estar,
         args.w,
@@ -183,7 +189,33 @@ fn furthest_from_typical(p: &WavyPunch, among: &[&'static str]) -> &'static str 
 /// `--cycle`, or `None` when the depths are the defaults) with the flag the
 /// user wrote: `w` is the adhesion (`--w` or `--estar`), `depth` the depths
 /// (or, for default depths, the input furthest from typical).
-fn punch_error(p: &WavyPunch, e: crate::Error, depths_flag: Option<&str>) -> CliError {
+fn punch_error(
+    p: &WavyPunch,
+    e: crate::Error,
+    depths_flag: Option<&str>,
+    deepest: f64,
+) -> CliError {
+    if matches!(&e, crate::Error::Invalid { name, .. }
+        if matches!(name.as_str(), "w" | "wavelength" | "depth" | "punch"))
+    {
+        // A scan refused for its size: every input sets it; the one
+        // furthest (in decades) from typical is named, the depths (typical
+        // 1 um) among them when the user gave them.
+        let all = ["--estar", "--w", "--radius", "--amplitude", "--wavelength"];
+        let flag = furthest_from_typical(p, &all);
+        let decades = |f: &str| match f {
+            "--estar" => (p.estar() / 1e9).log10().abs(),
+            "--w" => (p.w() / 0.1).log10().abs(),
+            "--radius" => (p.radius() / 1e-4).log10().abs(),
+            "--amplitude" => (p.amplitude() / 0.1).log10().abs(),
+            _ => (p.wavelength() / 1e-5).log10().abs(),
+        };
+        let flag = match depths_flag {
+            Some(df) if (deepest.abs() / 1e-6).log10().abs() > decades(flag) => df,
+            _ => flag,
+        };
+        return CliError::from(e.renamed(flag));
+    }
     let flag = match e.field() {
         Some("w") => furthest_from_typical(p, &["--w", "--estar"]),
         Some("wavelength") => "--wavelength",
@@ -243,7 +275,7 @@ pub fn run(args: &PunchArgs) -> super::CommandResult<Report> {
     let energy_loss_per_cycle_j = match cycle {
         Some((lo, hi)) => Some(
             Evolution::new(&p, hi)
-                .map_err(|e| punch_error(&p, e, Some("--cycle")))?
+                .map_err(|e| punch_error(&p, e, Some("--cycle"), hi))?
                 .energy_loss(lo),
         ),
         None => None,
@@ -299,7 +331,7 @@ fn paths(
     let Some(&deepest) = up.last() else {
         return Ok((vec![], vec![]));
     };
-    let ev = Evolution::new(p, deepest).map_err(|e| punch_error(p, e, depths_flag))?;
+    let ev = Evolution::new(p, deepest).map_err(|e| punch_error(p, e, depths_flag, deepest))?;
     let loading = up.iter().map(|&h| ev.loading(h).into()).collect();
     let unloading = up.iter().rev().map(|&h| ev.unloading(h).into()).collect();
     Ok((loading, unloading))
@@ -393,8 +425,7 @@ fn parse_csv(name: &str, text: &str) -> Result<Vec<FitPoint>, CliError> {
 pub fn run_fit(args: &PunchFitArgs) -> super::CommandResult<Report> {
     let name = "DATA.csv";
     let path = args.data.display();
-    let text = std::fs::read_to_string(&args.data)
-        .map_err(|e| CliError::from(crate::Error::io(&path, e)))?;
+    let text = super::read_input(name, &args.data)?;
     let data_name = format!("{name} ({path})");
     let data = parse_csv(&data_name, &text)?;
     fit(&data, args.radius, "--radius", &data_name)
@@ -450,7 +481,11 @@ pub fn fit(
         let field = if e.field() == Some("radius") {
             radius_name.to_string()
         } else {
-            data_name.to_string()
+            // The data and the radius of curvature together: say both.
+            let largest = data.iter().map(|p| p.radius).fold(0.0, f64::max);
+            format!(
+                "{data_name} with {radius_name} = {radius:e} m (contact radii up to {largest:e} m)"
+            )
         };
         CliError::from(e.renamed(&field))
     })?;

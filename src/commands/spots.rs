@@ -124,11 +124,16 @@ pub fn spot_resistance(
         Some(_) => Spreading::Wexler,
         None => Spreading::Maxwell,
     };
-    Ok(SpotResistance::same_metal(
-        spreading,
-        resistivity,
-        mean_free_path,
-    )?)
+    SpotResistance::same_metal(spreading, resistivity, mean_free_path).map_err(|e| {
+        super::flagged(
+            e,
+            &[
+                ("resistivity", "--resistivity"),
+                ("mean_free_path", "--mean-free-path"),
+            ],
+        )
+        .into()
+    })
 }
 
 /// The three resistances of `spots`.
@@ -179,8 +184,11 @@ pub fn check_cost(what: &str, n: usize) -> CommandResult<Option<String>> {
 /// solve is estimated above 2 s are announced on stderr with the estimate.
 pub fn run(args: &SpotsArgs) -> CommandResult<(SpotsOutput, Spots)> {
     let spot = spot_resistance(args.resistivity, args.mean_free_path)?;
-    let text = std::fs::read_to_string(&args.file).map_err(|e| crate::Error::io(&args.file, e))?;
-    let spots = parse_csv(&text)?;
+    let text = super::read_input("spots file", std::path::Path::new(&args.file))?;
+    let spots = parse_csv(&text).map_err(|e| match e {
+        CommandError::Usage(m) => CommandError::Usage(format!("spots file {}: {m}", args.file)),
+        other => other,
+    })?;
     if let Some(note) = check_cost(&format!("spots file {}", args.file), spots.len())? {
         eprintln!("{note}");
     }

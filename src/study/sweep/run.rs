@@ -82,7 +82,8 @@ const CHECKED_VALUES: usize = 4096;
 /// fractional `montecarlo.summits`): every distinct value of each varied
 /// field (up to [`CHECKED_VALUES`]), the others at the first point's,
 /// deserialised into a scene. Values out of a field's range are left to
-/// the points (a sweep may cross a model's limits; those points fail).
+/// the points (a sweep may cross a model's limits; those points fail),
+/// unless every value is (every point would fail: refused).
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the varied path, the value and the reason.
@@ -92,6 +93,10 @@ fn check_fields(base: &toml::Value, paths: &[String], points: &[SweepPoint]) -> 
     };
     for (d, path) in paths.iter().enumerate() {
         let mut seen = std::collections::HashSet::new();
+        // The first value out of the field's own range, and whether every
+        // checked value is (then every point would fail: refused).
+        let mut out_of_range: Option<Error> = None;
+        let mut all_out = true;
         for p in points {
             let x = p.values[d];
             if !seen.insert(x.to_bits()) {
@@ -105,8 +110,20 @@ fn check_fields(base: &toml::Value, paths: &[String], points: &[SweepPoint]) -> 
                 set_field(&mut value, w, *y)?;
             }
             set_field(&mut value, path, x)?;
-            Scene::deserialize(value)
+            let scene = Scene::deserialize(value)
                 .map_err(|e| Error::invalid(path, format!("at {x:e}: {}", e.message().trim())))?;
+            match scene.validate() {
+                Err(e) if e.field() == Some(path.as_str()) => {
+                    out_of_range.get_or_insert(e);
+                }
+                _ => all_out = false,
+            }
+        }
+        if let (true, Some(e)) = (all_out, out_of_range) {
+            return Err(Error::invalid(
+                path,
+                format!("every value is out of the field's range, so every point would fail ({e})"),
+            ));
         }
     }
     Ok(())
