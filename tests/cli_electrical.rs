@@ -124,8 +124,11 @@ fn spots_bad_input_exits_2_naming_the_field() {
         &["spots", &text, "--resistivity", "1e-8", "--json"],
         "radius_m",
     );
+    // A file that cannot be read is bad input naming it, as for scenes and
+    // maps (issue 24's CLI fuzz; it was exit 1).
     let (code, _, err) = run(&["spots", "/nonexistent/spots.csv", "--resistivity", "1e-8"]);
-    assert_eq!(code, 1, "{err}");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("/nonexistent/spots.csv"), "{err}");
 }
 
 #[test]

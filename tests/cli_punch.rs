@@ -307,9 +307,11 @@ fn punch_fit_bad_input() {
             2,
         );
     }
+    // A file that cannot be read is bad input naming it (issue 24's CLI
+    // fuzz; it was exit 1).
     one_line_error(
         &["punch-fit", "/nonexistent/data.csv", "--radius", "0.25"],
         "/nonexistent/data.csv",
-        1,
+        2,
     );
 }

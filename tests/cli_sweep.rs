@@ -348,6 +348,8 @@ fn a_sweep_where_every_point_fails_exits_1() {
         "{}/examples/scenes/soft-jkr.toml",
         env!("CARGO_MANIFEST_DIR")
     );
+    // Every value out of the field's own range is refused before any
+    // point runs (issue 24's CLI fuzz): exit 2, nothing written.
     let o = bin()
         .args(["sweep", &scene, "--vary", "materials.nu1=0.6:0.7:2"])
         .args(["--out", "o"])
@@ -355,12 +357,27 @@ fn a_sweep_where_every_point_fails_exits_1() {
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("materials.nu1: every value is out of"),
+        "{err}"
+    );
+    assert!(!dir.join("o/results.csv").exists());
+    // Values in range where every point fails (summits pressed deeper than
+    // their radius): the points run, and the sweep exits 1.
+    let o = bin()
+        .args(["sweep", &scene, "--vary", "surface.sigma=0.5:0.9:2"])
+        .args(["--out", "o"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(err.contains("every one of the 2 points failed"), "{err}");
-    assert!(err.contains("materials.nu1"), "{err}");
+    assert!(err.contains("surface.sigma"), "{err}");
     // Rerunning (nothing left to compute) still does not report success.
     let o = bin()
-        .args(["sweep", &scene, "--vary", "materials.nu1=0.6:0.7:2"])
+        .args(["sweep", &scene, "--vary", "surface.sigma=0.5:0.9:2"])
         .args(["--out", "o"])
         .current_dir(&dir)
         .output()

@@ -87,13 +87,13 @@ pub struct BemArgs {
     /// clusters (Holm/Maxwell spots + Greenwood interaction) and GW's.
     #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub resistivity: Option<f64>,
-    /// Residual at which the solver stops (dimensionless).
+    /// Residual at which the solver stops (dimensionless), in [1e-15, 1e-2].
     #[cfg_attr(
         feature = "cli",
         arg(long, allow_negative_numbers = true, default_value_t = 1e-10)
     )]
     pub tolerance: f64,
-    /// Most iterations per solve.
+    /// Most iterations per solve, at least 1.
     #[cfg_attr(feature = "cli", arg(long, default_value_t = 10_000))]
     pub max_iterations: usize,
     /// Memory the solver may use (MiB); larger maps are refused.
@@ -182,7 +182,12 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
     positive("--pixel-size", args.pixel_size)?;
     positive("--scale", args.scale)?;
     positive("--estar", args.estar)?;
-    positive("--tolerance", args.tolerance)?;
+    crate::error::Allowed::closed(1e-15, 1e-2).check("--tolerance", args.tolerance)?;
+    if args.max_iterations == 0 {
+        return Err(CliError::Usage(
+            "--max-iterations = 0: give at least 1".into(),
+        ));
+    }
     positive("--memory-limit-mib", args.memory_limit_mib)?;
     // The command line refuses these combinations while parsing; other
     // callers get the same errors here.
@@ -211,7 +216,7 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
             read_map(&args.map)?
                 .scaled(args.scale)
                 .map_err(|e| e.renamed("--scale"))?,
-            args.map.display().to_string(),
+            super::surface::scaled_name(&args.map, args.scale),
         ),
     };
     let options = Options {
@@ -220,6 +225,20 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
         memory_limit: (args.memory_limit_mib * 1048576.0) as usize,
     };
     let memory = memory_estimate(map.rows(), map.cols(), args.periodic);
+    if memory as f64 > args.memory_limit_mib * 1048576.0 {
+        return Err(CliError::Usage(format!(
+            "--memory-limit-mib = {}: {shown} ({} x {} pixels{}) needs about {:.1} MiB",
+            args.memory_limit_mib,
+            map.rows(),
+            map.cols(),
+            if args.periodic {
+                ""
+            } else {
+                ", padded to twice the size"
+            },
+            memory as f64 / 1048576.0
+        )));
+    }
     let mut problem = Problem::new(&map, args.pixel_size, args.estar, args.periodic, &options)
         .map_err(|e| match e.field() {
             Some("topography") => e.renamed(&shown),
@@ -245,8 +264,10 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
         })
         .transpose()?;
     // GW from the finite-difference moments (as `asperity surface`), Persson from the PSD.
-    let topo =
-        Topography::new(map.clone(), args.pixel_size).map_err(|e| e.renamed("--pixel-size"))?;
+    let topo = Topography::new(map.clone(), args.pixel_size).map_err(|e| match e.field() {
+        Some("heights") => e.renamed("--scale"),
+        _ => e.renamed("--pixel-size"),
+    })?;
     let charac = topo
         .characterise(args.periodic)
         .map_err(|e| e.renamed(&shown))?;
@@ -262,15 +283,30 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
     let (mut gw_list, mut persson_list, mut diffs) = (Vec::new(), Vec::new(), Vec::new());
     for &t in &targets {
         let warm = solutions.last();
-        let s = if by_gap {
-            problem
-                .solve_gap(t, &options, warm)
-                .map_err(|e| e.renamed("--gaps"))?
+        let target = if by_gap { "--gaps" } else { "--pressures" };
+        let solved = if by_gap {
+            problem.solve_gap(t, &options, warm)
         } else {
-            problem
-                .solve_pressure(t, &options, warm)
-                .map_err(|e| e.renamed("--pressures"))?
+            problem.solve_pressure(t, &options, warm)
         };
+        let s = solved.map_err(|e| -> CliError {
+            if e.is_bad_input() {
+                return e.renamed(target).into();
+            }
+            // A solve that fails at these inputs: the target, the modulus
+            // and the adhesion the user wrote, named with the failure.
+            CliError::Usage(format!(
+                "{target}: {t:e} with --estar {:e} Pa{}: {e}; the inputs are outside what the \
+                 solver reaches (try a target nearer the map's scales, or --tolerance / \
+                 --max-iterations)",
+                args.estar,
+                match (args.adhesion_energy, args.adhesion_range) {
+                    (Some(w), Some(r)) =>
+                        format!(", --adhesion-energy {w:e} J/m^2, --adhesion-range {r:e} m"),
+                    _ => String::new(),
+                }
+            ))
+        })?;
         let cl = problem.clusters(&s);
         let singles = cl.iter().filter(|c| c.pixels == 1).count();
         if cl.len() >= 10 && singles * 2 > cl.len() {
@@ -286,6 +322,15 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
             .filter(|_| p > 0.0)
             .and_then(|g| g.state(p).ok());
         let pe_state = (p > 0.0).then(|| persson.state(p).ok()).flatten();
+        for (model, missing) in [("GW", gw_state.is_none()), ("Persson", pe_state.is_none())] {
+            if missing {
+                warnings.push(format!(
+                    "state {}: {model} gives no state at the mean pressure {p:e} Pa (none without \
+                     contact pressure, or outside its range): its values are null",
+                    states.len()
+                ));
+            }
+        }
         if let Some(g) = gw_state.filter(|g| g.area_fraction > 0.1) {
             warnings.push(format!(
                 "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity",

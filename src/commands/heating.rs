@@ -70,6 +70,14 @@ pub enum HeatingOutput {
 
 /// Runs `asperity heating`; also returns the bulk temperature used.
 pub fn run(args: &HeatingArgs) -> CommandResult<(HeatingOutput, f64)> {
+    // The pair's order, named by both flags (a huge softening temperature
+    // was blamed on the melting temperature alone).
+    if args.softening_temperature >= args.melting_temperature {
+        return Err(CommandError::Usage(format!(
+            "--softening-temperature = {:e} K must be below --melting-temperature = {:e} K",
+            args.softening_temperature, args.melting_temperature
+        )));
+    }
     let heating = Heating::for_metal(
         args.bulk_temperature,
         args.softening_temperature,

@@ -45,7 +45,7 @@ pub struct LawFacts {
 
 /// Runs `asperity law`.
 pub fn run(args: &LawArgs) -> CommandResult<LawFacts> {
-    let kind = LawKind::parse(&args.law)?;
+    let kind = LawKind::parse(&args.law).map_err(|e| super::flagged(e, &[("law", "--law")]))?;
     if let Some(l) = args.lambda {
         crate::error::positive("--lambda", l)?;
     }
@@ -58,7 +58,9 @@ pub fn run(args: &LawArgs) -> CommandResult<LawFacts> {
     let z0 = crate::material::LJ_MAX_TENSION_FACTOR * w / sigma0;
     let contact = AsperityContact::new(1.0, 0.75, Adhesion::new(w, z0)?)?;
     let scales = contact.scales()?;
-    let law = kind.build(&contact)?;
+    let law = kind
+        .build(&contact)
+        .map_err(|e| super::flagged(e, &[("lambda", "--lambda")]))?;
     let load_pull = law
         .pull_off(Control::Load)
         .map(|p| p.load / scales.load)

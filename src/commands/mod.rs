@@ -83,3 +83,20 @@ impl Report {
 
 /// Result of a command.
 pub type CommandResult<T> = std::result::Result<T, CommandError>;
+
+/// The text of an input file `path` (named `what` in messages, e.g.
+/// `spots file`): one that cannot be read (missing, a directory, not
+/// UTF-8) is bad input naming the path.
+pub(crate) fn read_input(what: &str, path: &std::path::Path) -> CommandResult<String> {
+    std::fs::read_to_string(path)
+        .map_err(|e| CommandError::Usage(format!("{what} {}: cannot read: {e}", path.display())))
+}
+
+/// `e` with its field renamed by `map` (library name, flag), so a message
+/// names the flag the user wrote.
+pub(crate) fn flagged(e: crate::Error, map: &[(&str, &str)]) -> crate::Error {
+    match map.iter().find(|(from, _)| e.field() == Some(*from)) {
+        Some((_, to)) => e.renamed(to),
+        None => e,
+    }
+}

@@ -118,6 +118,19 @@ pub fn positive_list(flag: &str, text: &str) -> Result<Vec<f64>, CliError> {
 /// Runs `asperity persson`.
 pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
     let pressures = positive_list("--pressures", &args.pressures)?;
+    // The wavevectors' order, named by both flags of a pair.
+    if args.q_long > args.q_roll {
+        return Err(CliError::Usage(format!(
+            "--q-long = {:e} must not exceed --q-roll = {:e}",
+            args.q_long, args.q_roll
+        )));
+    }
+    if args.q_roll >= args.q_short {
+        return Err(CliError::Usage(format!(
+            "--q-roll = {:e} must be below --q-short = {:e}",
+            args.q_roll, args.q_short
+        )));
+    }
     positive("--estar", args.estar)?;
     // The command line refuses both while parsing; other callers here.
     if args.h_rms.is_some() && args.slope_rms.is_some() {
@@ -134,13 +147,36 @@ pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
             ))
         }
     };
+    let norm_flag = if args.h_rms.is_some() {
+        "--h-rms"
+    } else {
+        "--slope-rms"
+    };
     let flag = |e: crate::Error| -> CliError {
         let f = e.field().unwrap_or("").replace('_', "-");
         if f.is_empty() {
             e.into()
+        } else if matches!(f.as_str(), "m0" | "m2" | "m4") {
+            // A moment of the spectrum: every spectrum flag sets it.
+            e.renamed(&format!(
+                "{f} of the spectrum from --hurst, --q-long, --q-roll, --q-short and {norm_flag}"
+            ))
+            .into()
         } else {
             e.renamed(&format!("--{f}")).into()
         }
+    };
+    // A state the solvers cannot find at an extreme pressure or modulus is
+    // the inputs' fault (p/E* far outside contact mechanics), named.
+    let at_pressure = |p: f64, e: crate::Error| -> CliError {
+        if e.is_bad_input() {
+            return e.renamed("--pressures").into();
+        }
+        CliError::Usage(format!(
+            "--pressures: {p:e} Pa with --estar {:e} Pa (p/E* = {:.3e}): {e}",
+            args.estar,
+            p / args.estar
+        ))
     };
     let spectrum = Spectrum::self_affine(args.hurst, args.q_long, args.q_roll, args.q_short, norm)
         .map_err(flag)?;
@@ -150,9 +186,9 @@ pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
     let mut worst_quad: f64 = 0.0;
     let mut warnings = Vec::new();
     for &p in &pressures {
-        let s = model.state(p).map_err(|e| e.renamed("--pressures"))?;
+        let s = model.state(p).map_err(|e| at_pressure(p, e))?;
         worst_quad = worst_quad.max(s.mean_gap_error / s.mean_gap.abs().max(f64::MIN_POSITIVE));
-        let g = gw.state(p).map_err(|e| e.renamed("--pressures"))?;
+        let g = gw.state(p).map_err(|e| at_pressure(p, e))?;
         if g.area_fraction > 0.1 {
             warnings.push(format!(
                 "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity (no asperity interaction)",

@@ -143,6 +143,12 @@ fn parse_cycle(text: &str) -> Result<(f64, f64), CliError> {
 }
 
 fn build_punch(args: &PunchArgs) -> Result<WavyPunch, CliError> {
+    if args.radius > 0.0 && args.wavelength >= args.radius {
+        return Err(CliError::Usage(format!(
+            "--wavelength = {:e} m must be smaller than --radius = {:e} m",
+            args.wavelength, args.radius
+        )));
+    }
     WavyPunch::new(
         args.estar,
         args.w,
@@ -156,6 +162,78 @@ fn build_punch(args: &PunchArgs) -> Result<WavyPunch, CliError> {
     })
 }
 
+/// The flag among `among` whose value is furthest (in decades) from a
+/// typical one: E* 1 GPa, w 0.1 J/m^2, R 100 um, A 0.1, l 10 um (Kesari &
+/// Lew's scales). When a scale of the punch overflows or a scan would take
+/// too long, that flag is the likely culprit.
+fn furthest_from_typical(p: &WavyPunch, among: &[&'static str]) -> &'static str {
+    let typical = [
+        ("--estar", p.estar(), 1e9),
+        ("--w", p.w(), 0.1),
+        ("--radius", p.radius(), 1e-4),
+        ("--amplitude", p.amplitude(), 0.1),
+        ("--wavelength", p.wavelength(), 1e-5),
+    ];
+    typical
+        .iter()
+        .filter(|(f, ..)| among.contains(f))
+        .map(|&(f, x, t)| (f, (x / t).log10().abs()))
+        .fold(
+            ("--w", f64::NEG_INFINITY),
+            |b, c| if c.1 > b.1 { c } else { b },
+        )
+        .0
+}
+
+/// A punch library error at depths from `depths_flag` (`--depths` or
+/// `--cycle`, or `None` when the depths are the defaults) with the flag the
+/// user wrote: `w` is the adhesion (`--w` or `--estar`), `depth` the depths
+/// (or, for default depths, the input furthest from typical).
+fn punch_error(
+    p: &WavyPunch,
+    e: crate::Error,
+    depths_flag: Option<&str>,
+    deepest: f64,
+) -> CliError {
+    if matches!(&e, crate::Error::Invalid { name, .. }
+        if matches!(name.as_str(), "w" | "wavelength" | "depth" | "punch"))
+    {
+        // A scan refused for its size: every input sets it; the one
+        // furthest (in decades) from typical is named, the depths (typical
+        // 1 um) among them when the user gave them.
+        let all = ["--estar", "--w", "--radius", "--amplitude", "--wavelength"];
+        let flag = furthest_from_typical(p, &all);
+        let decades = |f: &str| match f {
+            "--estar" => (p.estar() / 1e9).log10().abs(),
+            "--w" => (p.w() / 0.1).log10().abs(),
+            "--radius" => (p.radius() / 1e-4).log10().abs(),
+            "--amplitude" => (p.amplitude() / 0.1).log10().abs(),
+            _ => (p.wavelength() / 1e-5).log10().abs(),
+        };
+        let flag = match depths_flag {
+            Some(df) if (deepest.abs() / 1e-6).log10().abs() > decades(flag) => df,
+            _ => flag,
+        };
+        return CliError::from(e.renamed(flag));
+    }
+    let flag = match e.field() {
+        Some("w") => furthest_from_typical(p, &["--w", "--estar"]),
+        Some("wavelength") => "--wavelength",
+        Some("punch") => furthest_from_typical(
+            p,
+            &["--estar", "--w", "--radius", "--amplitude", "--wavelength"],
+        ),
+        _ => match depths_flag {
+            Some(f) => return CliError::from(e.renamed(f)),
+            None => furthest_from_typical(
+                p,
+                &["--estar", "--w", "--radius", "--amplitude", "--wavelength"],
+            ),
+        },
+    };
+    CliError::from(e.renamed(flag))
+}
+
 /// Evenly spaced `n` values from `lo` to `hi`.
 fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     (0..n)
@@ -167,9 +245,9 @@ fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 pub fn run(args: &PunchArgs) -> super::CommandResult<Report> {
     let p = build_punch(args)?;
     let cycle = args.cycle.as_deref().map(parse_cycle).transpose()?;
-    let depths = match (&args.depths, cycle) {
-        (Some(t), _) => parse_list("--depths", t)?,
-        (None, Some((lo, hi))) => linspace(lo, hi, 201),
+    let (depths, depths_flag) = match (&args.depths, cycle) {
+        (Some(t), _) => (parse_list("--depths", t)?, Some("--depths")),
+        (None, Some((lo, hi))) => (linspace(lo, hi, 201), Some("--cycle")),
         (None, None) => {
             // From below the pull-off to the depth of three JKR zero-depth radii.
             let a0 = (2.0 * PI * p.w() * p.radius().powi(2) / p.estar()).cbrt();
@@ -177,14 +255,27 @@ pub fn run(args: &PunchArgs) -> super::CommandResult<Report> {
             let bottom = p
                 .envelope(p.envelope_minimum(Envelope::Unloading), Envelope::Unloading)
                 .depth;
-            linspace(1.2 * bottom, top, 101)
+            if !(top.is_finite() && bottom.is_finite()) {
+                let flag = furthest_from_typical(
+                    &p,
+                    &["--estar", "--w", "--radius", "--amplitude", "--wavelength"],
+                );
+                return Err(CliError::Usage(format!(
+                    "{flag}: the default depths (from the JKR scales of --estar, --w, --radius \
+                     and the envelopes of --amplitude, --wavelength) are not finite \
+                     ({bottom:e} .. {top:e} m): {flag} is the input furthest from typical \
+                     values (E* 1e9 Pa, w 0.1 J/m^2, R 1e-4 m, A 0.1, l 1e-5 m); give values \
+                     whose scales are finite, or --depths"
+                )));
+            }
+            (linspace(1.2 * bottom, top, 101), None)
         }
     };
-    let (loading, unloading) = paths(&p, &depths)?;
+    let (loading, unloading) = paths(&p, &depths, depths_flag)?;
     let energy_loss_per_cycle_j = match cycle {
         Some((lo, hi)) => Some(
             Evolution::new(&p, hi)
-                .map_err(|e| CliError::from(e.renamed("--cycle")))?
+                .map_err(|e| punch_error(&p, e, Some("--cycle"), hi))?
                 .energy_loss(lo),
         ),
         None => None,
@@ -230,13 +321,17 @@ pub fn run(args: &PunchArgs) -> super::CommandResult<Report> {
 }
 
 /// Loading (ascending depths) and unloading (descending from the deepest) paths.
-fn paths(p: &WavyPunch, depths: &[f64]) -> Result<(Vec<PathRow>, Vec<PathRow>), CliError> {
+fn paths(
+    p: &WavyPunch,
+    depths: &[f64],
+    depths_flag: Option<&str>,
+) -> Result<(Vec<PathRow>, Vec<PathRow>), CliError> {
     let mut up = depths.to_vec();
     up.sort_by(f64::total_cmp);
     let Some(&deepest) = up.last() else {
         return Ok((vec![], vec![]));
     };
-    let ev = Evolution::new(p, deepest).map_err(|e| CliError::from(e.renamed("--depths")))?;
+    let ev = Evolution::new(p, deepest).map_err(|e| punch_error(p, e, depths_flag, deepest))?;
     let loading = up.iter().map(|&h| ev.loading(h).into()).collect();
     let unloading = up.iter().rev().map(|&h| ev.unloading(h).into()).collect();
     Ok((loading, unloading))
@@ -330,8 +425,7 @@ fn parse_csv(name: &str, text: &str) -> Result<Vec<FitPoint>, CliError> {
 pub fn run_fit(args: &PunchFitArgs) -> super::CommandResult<Report> {
     let name = "DATA.csv";
     let path = args.data.display();
-    let text = std::fs::read_to_string(&args.data)
-        .map_err(|e| CliError::from(crate::Error::io(&path, e)))?;
+    let text = super::read_input(name, &args.data)?;
     let data_name = format!("{name} ({path})");
     let data = parse_csv(&data_name, &text)?;
     fit(&data, args.radius, "--radius", &data_name)
@@ -387,7 +481,11 @@ pub fn fit(
         let field = if e.field() == Some("radius") {
             radius_name.to_string()
         } else {
-            data_name.to_string()
+            // The data and the radius of curvature together: say both.
+            let largest = data.iter().map(|p| p.radius).fold(0.0, f64::max);
+            format!(
+                "{data_name} with {radius_name} = {radius:e} m (contact radii up to {largest:e} m)"
+            )
         };
         CliError::from(e.renamed(&field))
     })?;

@@ -106,6 +106,42 @@ fn flag(e: crate::Error) -> CliError {
     }
 }
 
+/// An error of the model's scales (instabilities beyond the floating-point
+/// range, a pull-off lost to underflow, a solver that fails on them)
+/// named by the input furthest (in decades) from a typical value: E* 1
+/// GPa, w 0.1 J/m^2, radius 1 um, tan(beta) 0.3, exponent 2, coefficient
+/// 1e6 m^(1-n), sigma0 100 MPa. Errors naming a single input that is not
+/// about the scales keep their name.
+fn scale_flag(args: &ShapeArgs, e: crate::Error) -> CliError {
+    let about_scales = !e.is_bad_input()
+        || matches!(&e, crate::Error::Invalid { name, .. }
+            if name == "exponent" || name == "work_of_adhesion");
+    if !about_scales {
+        return flag(e);
+    }
+    let given = [
+        ("--estar", Some(args.estar), 1e9),
+        ("--w", Some(args.w), 0.1),
+        ("--radius", args.radius, 1e-6),
+        ("--tan-angle", args.tan_angle, 0.3),
+        ("--exponent", args.exponent, 2.0),
+        ("--coefficient", args.coefficient, 1e6),
+        ("--stress", args.stress, 1e8),
+    ];
+    let worst = given
+        .iter()
+        .filter_map(|&(f, x, t)| x.map(|x| (f, (x / t).abs().log10().abs())))
+        .fold(
+            ("--w", f64::NEG_INFINITY),
+            |b, c| if c.1 > b.1 { c } else { b },
+        )
+        .0;
+    CliError::Usage(format!(
+        "{worst}: {e} ({worst} is the input furthest from typical values: E* 1e9 Pa, w 0.1 \
+         J/m^2, radius 1e-6 m, tan-angle 0.3, exponent 2, coefficient 1e6, stress 1e8 Pa)"
+    ))
+}
+
 fn profile(args: &ShapeArgs) -> Result<Profile, CliError> {
     let kind = ProfileKind::parse(&args.profile).map_err(|e| flag(e.renamed("profile")))?;
     if kind == ProfileKind::Tabulated {
@@ -146,10 +182,12 @@ pub fn run(args: &ShapeArgs) -> super::CommandResult<Report> {
         None => None,
     };
     let model = match args.stress {
-        Some(stress) => {
-            Model::Md(AxisymMd::new(profile, args.estar, args.w, stress).map_err(flag)?)
-        }
-        None => Model::Jkr(AxisymJkr::new(profile, args.estar, args.w).map_err(flag)?),
+        Some(stress) => Model::Md(
+            AxisymMd::new(profile, args.estar, args.w, stress).map_err(|e| scale_flag(args, e))?,
+        ),
+        None => Model::Jkr(
+            AxisymJkr::new(profile, args.estar, args.w).map_err(|e| scale_flag(args, e))?,
+        ),
     };
     let (po, jo) = model.instabilities();
     let mut checked = vec![

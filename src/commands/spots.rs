@@ -106,6 +106,7 @@ pub fn from_columns(x: Vec<f64>, y: Vec<f64>, radius: Vec<f64>) -> CommandResult
     if x.is_empty() {
         return Err(CommandError::Usage("x: no spots".into()));
     }
+    check_cost("x", x.len())?;
     Ok(Spots::new(x, y, radius)?)
 }
 
@@ -123,11 +124,16 @@ pub fn spot_resistance(
         Some(_) => Spreading::Wexler,
         None => Spreading::Maxwell,
     };
-    Ok(SpotResistance::same_metal(
-        spreading,
-        resistivity,
-        mean_free_path,
-    )?)
+    SpotResistance::same_metal(spreading, resistivity, mean_free_path).map_err(|e| {
+        super::flagged(
+            e,
+            &[
+                ("resistivity", "--resistivity"),
+                ("mean_free_path", "--mean-free-path"),
+            ],
+        )
+        .into()
+    })
 }
 
 /// The three resistances of `spots`.
@@ -139,10 +145,52 @@ pub fn resistances(spots: &Spots, spot: &SpotResistance) -> CommandResult<SpotsO
     })
 }
 
-/// Runs `asperity spots`: also returns the spots read.
+/// Most spots `asperity spots` solves: the exact equal-potential solve is
+/// O(n^3) in time and O(n^2) in memory ([`Spots::exact_cost`]: about 80 s
+/// of one core and 6.4 GB at 20,000 spots).
+pub const MAX_SPOTS: usize = 20_000;
+
+/// Checks the exact solve of `n` spots from `what` (the file or argument)
+/// is within [`MAX_SPOTS`] and the memory available, before it starts.
+/// `Ok(Some(note))` when it is estimated to take more than 2 s (a note
+/// with the estimate, for stderr).
+///
+/// # Errors
+/// [`CommandError::Usage`] naming `what`, with the estimate and the bound.
+pub fn check_cost(what: &str, n: usize) -> CommandResult<Option<String>> {
+    let (seconds, bytes) = Spots::exact_cost(n);
+    let estimate = format!(
+        "the exact equal-potential solve of {n} spots needs an estimated {seconds:.3} s of one \
+         core and {:.3} GB (1e-11 n^3 s, 16 n^2 bytes)",
+        bytes / 1e9
+    );
+    if n > MAX_SPOTS {
+        return Err(CommandError::Usage(format!(
+            "{what}: {estimate}; allowed up to {MAX_SPOTS} spots"
+        )));
+    }
+    if let Some(free) = crate::study::memory::available() {
+        if bytes > free {
+            return Err(CommandError::Usage(format!(
+                "{what}: {estimate}, more than the {:.3} GB this process may still use",
+                free / 1e9
+            )));
+        }
+    }
+    Ok((seconds > 2.0).then(|| format!("spots: {estimate}")))
+}
+
+/// Runs `asperity spots`: also returns the spots read. Spots whose exact
+/// solve is estimated above 2 s are announced on stderr with the estimate.
 pub fn run(args: &SpotsArgs) -> CommandResult<(SpotsOutput, Spots)> {
     let spot = spot_resistance(args.resistivity, args.mean_free_path)?;
-    let text = std::fs::read_to_string(&args.file).map_err(|e| crate::Error::io(&args.file, e))?;
-    let spots = parse_csv(&text)?;
+    let text = super::read_input("spots file", std::path::Path::new(&args.file))?;
+    let spots = parse_csv(&text).map_err(|e| match e {
+        CommandError::Usage(m) => CommandError::Usage(format!("spots file {}: {m}", args.file)),
+        other => other,
+    })?;
+    if let Some(note) = check_cost(&format!("spots file {}", args.file), spots.len())? {
+        eprintln!("{note}");
+    }
     Ok((resistances(&spots, &spot)?, spots))
 }

@@ -144,8 +144,25 @@ fn plasticity(
         (Some(e), Some(h)) => {
             positive("--estar", e)?;
             positive("--hardness", h)?;
-            Ok(c.gw_from_moments().plasticity_index(e, h)?)
+            let psi = c.gw_from_moments().plasticity_index(e, h)?;
+            if psi.is_some_and(|p| !p.is_finite()) {
+                return Err(CommandError::Usage(format!(
+                    "--estar = {e:e} Pa and --hardness = {h:e} Pa: the plasticity index \
+                     (E*/H) sqrt(sigma/R) overflows"
+                )));
+            }
+            Ok(psi)
         }
+    }
+}
+
+/// How a map is named in messages: its path, and `--scale` when it is not
+/// 1 (a flat map may be a tiny scale's doing).
+pub(crate) fn scaled_name(path: &std::path::Path, scale: f64) -> String {
+    if scale == 1.0 {
+        path.display().to_string()
+    } else {
+        format!("{} (heights x --scale {scale:e})", path.display())
     }
 }
 
@@ -206,7 +223,7 @@ pub fn run(args: &SurfaceArgs) -> CommandResult<SurfaceJson> {
         .map_err(|e| e.renamed("--scale"))?;
     let (out, c) = characterise(
         map,
-        &args.file.display().to_string(),
+        &scaled_name(&args.file, args.scale),
         args.pixel_size,
         args.periodic,
         args.estar,

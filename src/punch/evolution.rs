@@ -48,7 +48,8 @@ impl Evolution {
     /// punch never touches).
     ///
     /// # Errors
-    /// [`crate::Error::OutOfRange`] naming `depth` when `h_max` is not finite;
+    /// [`crate::Error::OutOfRange`] naming `depth` when `h_max` is not finite; the
+    /// landscape scan's refusals ([`Landscape::scan`]: `depth`, `w`, `wavelength`, `punch`);
     /// [`crate::Error::Invalid`] when it is too deep to scan (see [`Landscape::scan`]).
     pub fn new(punch: &WavyPunch, h_max: f64) -> Result<Self> {
         finite("depth", h_max)?;

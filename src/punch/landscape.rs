@@ -15,6 +15,66 @@ use crate::numeric::roots::brent;
 /// Most grid points one scan may take (about 1.5 s of work).
 const MAX_STEPS: usize = 20_000_000;
 
+/// The grid the scan to depth `h_stop` takes, estimated before it
+/// starts: `(steps, step, a_end)`, with the step `min(l/48, a_J/16)` and
+/// the end radius `a_end = sqrt(R h_stop) + (2 pi w R^2/E*)^(1/3)` (past
+/// both the smooth punch's zero-depth radius and the Hertz radius of
+/// `h_stop`, ignoring the roughness, so a lower estimate).
+pub fn scan_estimate(punch: &WavyPunch, h_stop: f64) -> (f64, f64, f64) {
+    let step = (punch.wavelength() / 48.0).min(punch.jkr_detach_radius() / 16.0);
+    let r = punch.radius();
+    let zero_depth = (2.0 * std::f64::consts::PI * punch.w() * r * r / punch.estar()).cbrt();
+    let a_end = (r * h_stop.max(0.0)).sqrt() + zero_depth;
+    (a_end / step, step, a_end)
+}
+
+/// Refuses a scan estimated beyond [`MAX_STEPS`] before it starts, naming
+/// what sets the count: `w` when the step is the JKR jump-out radius's
+/// (adhesion too weak: a tiny `a_J`) or the end is adhesion's zero-depth
+/// radius (adhesion too strong), `depth` for a depth beyond the radius of
+/// curvature, `punch` when its scales overflow, else `wavelength` (too
+/// short for the contact's size).
+fn check_scan(punch: &WavyPunch, h_stop: f64) -> Result<()> {
+    let (steps, step, a_end) = scan_estimate(punch, h_stop);
+    if !steps.is_nan() && steps <= MAX_STEPS as f64 {
+        return Ok(());
+    }
+    let r = punch.radius();
+    let a_j = punch.jkr_detach_radius();
+    let hertz = (r * h_stop.max(0.0)).sqrt();
+    let (name, why) = if !(a_end.is_finite() && step > 0.0) {
+        ("punch", "the punch's scales overflow")
+    } else if a_j / 16.0 < punch.wavelength() / 48.0 {
+        (
+            "w",
+            "the JKR jump-out radius a_J sets the step (a_J/16): adhesion too weak",
+        )
+    } else if hertz < a_end - hertz {
+        (
+            "w",
+            "the contact radius is set by adhesion: adhesion too strong",
+        )
+    } else if h_stop > r {
+        ("depth", "the depth is beyond the radius of curvature")
+    } else {
+        (
+            "wavelength",
+            "the wavelength sets the step (l/48): too short for the contact",
+        )
+    };
+    Err(Error::invalid(
+        name,
+        format!(
+            "the scan of the wavy curve to depth {h_stop:e} m (contact radius ~{a_end:.3e} m, \
+             step {step:.3e} m) needs an estimated {steps:.3e} grid points, allowed up to \
+             {MAX_STEPS}: {why} (adhesion number 2 pi w/(E* R) = {:.3e}, a_J = {a_j:.3e} m, \
+             l = {:e} m, R = {r:e} m)",
+            punch.adhesion_number(),
+            punch.wavelength()
+        ),
+    ))
+}
+
 /// What a knot of the landscape is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum KnotKind {
@@ -49,8 +109,11 @@ impl Landscape {
     ///
     /// # Errors
     /// [`Error::Invalid`] naming `depth` when `h_stop` needs more than 2e7 grid points
-    /// (a depth far beyond the punch's scale).
+    /// (a depth far beyond the punch's scale); estimated before the scan
+    /// ([`scan_estimate`]), naming `w` (adhesion too weak or too strong for
+    /// the grid), `wavelength` or `depth`, whichever sets the count.
     pub fn scan(punch: &WavyPunch, h_stop: f64) -> Result<Self> {
+        check_scan(punch, h_stop)?;
         Self::scan_until(punch, |s: &PunchState, rising| rising && s.depth >= h_stop).map_err(|n| {
             Error::invalid(
                 "depth",

@@ -1,5 +1,7 @@
 //! Process helpers of the CLI tests that run the built `asperity` (in a
-//! test binary by `#[path = "common/cli.rs"] mod cli;`).
+//! test binary by `#[path = "common/cli.rs"] mod cli;`). Each binary uses
+//! some of them.
+#![allow(dead_code)]
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -39,4 +41,67 @@ pub fn run(args: &[&str], dir: &Path) -> (i32, String, String) {
 /// A JSON file, parsed.
 pub fn json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// What a process run under [`run_within`] did.
+#[derive(Debug)]
+pub struct Outcome {
+    /// Exit code; `None` when killed by a signal (a panic's abort, or the
+    /// timeout).
+    pub code: Option<i32>,
+    /// Whether it was killed at the timeout.
+    pub timed_out: bool,
+    /// CPU-independent wall time (s).
+    pub seconds: f64,
+    /// Its stdout.
+    pub stdout: String,
+    /// Its stderr.
+    pub stderr: String,
+}
+
+/// Runs `cmd` (stdin empty, outputs captured), killing it after `limit`
+/// seconds so a hang fails the test instead of hanging it.
+pub fn run_within(mut cmd: Command, limit: f64) -> Outcome {
+    use std::io::Read;
+    use std::process::Stdio;
+    let t0 = std::time::Instant::now();
+    let mut child = cmd
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Readers on threads, so a full pipe cannot stall the child.
+    let mut out = child.stdout.take().unwrap();
+    let mut err = child.stderr.take().unwrap();
+    let t_out = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = out.read_to_end(&mut s);
+        s
+    });
+    let t_err = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = err.read_to_end(&mut s);
+        s
+    });
+    let mut timed_out = false;
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break s;
+        }
+        if t0.elapsed().as_secs_f64() > limit {
+            timed_out = true;
+            let _ = child.kill();
+            break child.wait().unwrap();
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    };
+    let seconds = t0.elapsed().as_secs_f64();
+    Outcome {
+        code: status.code(),
+        timed_out,
+        seconds,
+        stdout: String::from_utf8_lossy(&t_out.join().unwrap()).into_owned(),
+        stderr: String::from_utf8_lossy(&t_err.join().unwrap()).into_owned(),
+    }
 }

@@ -29,7 +29,14 @@ pub fn run(args: &RunArgs) -> crate::CliResult {
     let text = std::fs::read_to_string(&args.scene).map_err(|e| {
         CliError::Usage(format!("scene: cannot read {}: {e}", args.scene.display()))
     })?;
-    let scene = Scene::from_toml(&text)?;
+    // A file that is not a scene (a map, a CSV, an empty file) is named.
+    let scene = Scene::from_toml(&text).map_err(|e| {
+        if e.is_bad_input() {
+            CliError::Usage(format!("{e} (scene {})", args.scene.display()))
+        } else {
+            CliError::from(e)
+        }
+    })?;
     let mode = if args.everything {
         PlanMode::EverythingOn
     } else {

@@ -71,7 +71,14 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     let text = std::fs::read_to_string(&args.scene).map_err(|e| {
         CliError::Usage(format!("scene: cannot read {}: {e}", args.scene.display()))
     })?;
-    let scene = Scene::from_toml(&text)?;
+    // A file that is not a scene (a map, a CSV, an empty file) is named.
+    let scene = Scene::from_toml(&text).map_err(|e| {
+        if e.is_bad_input() {
+            CliError::Usage(format!("{e} (scene {})", args.scene.display()))
+        } else {
+            CliError::from(e)
+        }
+    })?;
     let vary = args
         .vary
         .iter()
@@ -98,9 +105,40 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     if args.threads == Some(0) {
         return Err(CliError::Usage("--threads = 0: give at least 1".into()));
     }
+    // The estimates: bookkeeping memory before the first point, time after
+    // the first (which runs alone).
+    spec.validate().map_err(as_flag)?;
+    eprintln!(
+        "sweep: {} points, about {:.1} MB of bookkeeping (bounded by the memory available)",
+        spec.total(),
+        (spec.memory_estimate() / 1e6).max(0.1)
+    );
+    let threads = args.threads.unwrap_or_else(|| {
+        std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+    });
+    let first: std::sync::Mutex<Option<(std::time::Instant, usize)>> = Default::default();
     // A bar on a terminal; plain lines (every 10 % or 10 s) in logs.
     let bar = Progress::new("sweep", "points", std::time::Duration::ZERO);
-    let progress = |done: usize, total: usize| bar.update(done, total);
+    let progress = |done: usize, total: usize| {
+        if let Ok(mut first) = first.lock() {
+            match *first {
+                None => *first = Some((std::time::Instant::now(), done)),
+                Some((t0, start)) if done == start + 1 && done < total => {
+                    let one = t0.elapsed().as_secs_f64();
+                    let rest = (total - done) as f64;
+                    eprintln!(
+                        "sweep: the first point took {one:.3} s; the {} others an estimated \
+                         {:.3e} s of CPU ({:.3e} s on {threads} threads)",
+                        total - done,
+                        one * rest,
+                        one * rest / threads as f64
+                    );
+                }
+                _ => {}
+            }
+        }
+        bar.update(done, total)
+    };
     let mut options = SweepOptions::default();
     options.shard = shard;
     options.threads = args.threads;

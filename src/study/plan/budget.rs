@@ -18,6 +18,13 @@ pub const NEGLIGIBLE_ADHESION_FRACTION: f64 = 1e-6;
 /// negative energy within `max(rtol, this) x int |P| dd` is zero.
 pub const ENERGY_SIGN_FLOOR: f64 = 1e-9;
 
+/// Smallest `accuracy.rtol` of a calibrated (tabulated) law: the GW
+/// quadrature of the interpolated solver table stalls at a relative
+/// residual of about 2e-12 to 8e-12 (measured on calibrated-gold.toml and
+/// mems-gold.toml: 1e-11 runs in under 1 s, 5e-12 ran 14 s and failed,
+/// 1e-12 failed), so tighter tolerances are refused up front.
+pub const CALIBRATED_MIN_RTOL: f64 = 1e-11;
+
 /// One share of the tolerance.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Share {

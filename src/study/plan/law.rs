@@ -1,7 +1,7 @@
 //! The law decision: the scene's law, or for `auto` the cheapest law whose
 //! measured error against the full Lennard-Jones solution meets `rtol`.
 
-use super::budget::Budget;
+use super::budget::{Budget, CALIBRATED_MIN_RTOL};
 use super::decision::{Decision, LawReason};
 use super::inputs::CalibrationInput;
 use super::PlanMode;
@@ -46,7 +46,9 @@ pub(super) fn choose(
     let (kind, reason) = match given {
         LawName::Plastic(v) => return plastic(scene, contact, v, budget, decisions),
         LawName::Shaped => return shaped(scene, contact, decisions),
-        LawName::Calibrated if w > 0.0 => return calibrated(contact, calibration, None, decisions),
+        LawName::Calibrated if w > 0.0 => {
+            return calibrated(contact, calibration, None, rtol, decisions)
+        }
         _ if w == 0.0 => {
             if !matches!(given, LawName::Auto | LawName::Analytic(LawKind::Hertz)) {
                 return Err(Error::invalid(
@@ -77,7 +79,7 @@ pub(super) fn choose(
                 // the solver (accuracy.model_error = false).
                 if scene.accuracy.model_error && super::inputs::solver_reaches(mu) {
                     let why = (rtol, k.name(), error);
-                    return calibrated(contact, calibration, Some(why), decisions);
+                    return calibrated(contact, calibration, Some(why), rtol, decisions);
                 }
                 (k, LawReason::NoneWithin { rtol, error })
             }
@@ -111,8 +113,18 @@ fn calibrated(
     contact: &AsperityContact,
     calibration: Option<&CalibrationInput>,
     auto: Option<(f64, &'static str, f64)>,
+    rtol: f64,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
+    if let Some(why) = calibrated_rtol_refusal(rtol) {
+        let auto = auto.map_or(String::new(), |(_, law, error)| {
+            format!(
+                "; law.kind = \"auto\" chose the calibrated law because no analytic law \
+                 meets rtol (the closest, {law}, is {error:.1e} off)"
+            )
+        });
+        return Err(Error::invalid("accuracy.rtol", format!("{why}{auto}")));
+    }
     let law: Arc<dyn AsperityLaw> = match calibration {
         Some(c) => Arc::new(c.calibration.law(
             contact.radius,
@@ -258,4 +270,27 @@ fn shaped_error(scene: &Scene, e: Error) -> Error {
             "the shaped law cannot be built ({e}); {pick} is the input furthest from typical values"
         ),
     )
+}
+
+/// `accuracy.rtol` of a calibrated law is at least
+/// [`CALIBRATED_MIN_RTOL`].
+///
+/// # Errors
+/// [`Error::Invalid`] naming `accuracy.rtol`, with the range and why.
+pub fn check_calibrated_rtol(rtol: f64) -> Result<()> {
+    match calibrated_rtol_refusal(rtol) {
+        Some(why) => Err(Error::invalid("accuracy.rtol", why)),
+        None => Ok(()),
+    }
+}
+
+/// Why `rtol` is too tight for a calibrated law, if it is.
+fn calibrated_rtol_refusal(rtol: f64) -> Option<String> {
+    (rtol < CALIBRATED_MIN_RTOL).then(|| {
+        format!(
+            "{rtol:e} is below what the calibrated law's GW quadrature reaches: its \
+             interpolated solver table stalls at a residual of a few 1e-12 (5e-12 ran 14 s and \
+             failed); allowed [{CALIBRATED_MIN_RTOL:e}, 0.1] with the calibrated law"
+        )
+    })
 }

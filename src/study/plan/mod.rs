@@ -38,10 +38,12 @@ mod program;
 mod sphere;
 mod topography;
 
-pub use budget::{Budget, Share, START_TAIL_FRACTION, TABLE_TOLERANCE_FRACTION};
+pub use budget::{
+    Budget, Share, CALIBRATED_MIN_RTOL, START_TAIL_FRACTION, TABLE_TOLERANCE_FRACTION,
+};
 pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
 pub use inputs::{CalibrationInput, Inputs, Pending};
-pub use law::LawChoice;
+pub use law::{check_calibrated_rtol, LawChoice};
 pub use montecarlo::McPlan;
 pub use outputs::accuracy_of;
 use outputs::{outputs, resistance};

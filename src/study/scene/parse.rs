@@ -85,6 +85,10 @@ impl Scene {
             });
         }
         Allowed::closed(1e-12, 0.1).check("accuracy.rtol", self.accuracy.rtol)?;
+        if self.law.kind == super::LawName::Calibrated {
+            // Before the calibration is computed.
+            crate::study::plan::check_calibrated_rtol(self.accuracy.rtol)?;
+        }
         if let Some(mc) = &self.montecarlo {
             if let Some(n) = mc.summits {
                 let max = crate::montecarlo::MAX_SUMMITS;

@@ -467,7 +467,8 @@ impl Default for OutputsSpec {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AccuracySpec {
-    /// Relative tolerance of every output, in [1e-12, 0.1]; default 1e-6.
+    /// Relative tolerance of every output, in [1e-12, 0.1] (at least 1e-11
+    /// with the calibrated law, whose table stalls below); default 1e-6.
     #[serde(default = "default_rtol")]
     pub rtol: f64,
     /// Measure the model error of an adhesive law on this surface against

@@ -18,5 +18,7 @@ mod store;
 
 pub use edit::set_field;
 pub use run::{run_sweep, sweep_table, PointOutcome, SweepOptions};
-pub use spec::{Design, Shard, SweepPoint, SweepSpec, Vary};
+pub use spec::{
+    Design, Shard, SweepPoint, SweepSpec, Vary, BYTES_PER_POINT, BYTES_PER_VALUE, MAX_POINTS,
+};
 pub use store::{merge, ResultsFile, SweepMeta};

@@ -82,7 +82,8 @@ const CHECKED_VALUES: usize = 4096;
 /// fractional `montecarlo.summits`): every distinct value of each varied
 /// field (up to [`CHECKED_VALUES`]), the others at the first point's,
 /// deserialised into a scene. Values out of a field's range are left to
-/// the points (a sweep may cross a model's limits; those points fail).
+/// the points (a sweep may cross a model's limits; those points fail),
+/// unless every value is (every point would fail: refused).
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the varied path, the value and the reason.
@@ -92,6 +93,10 @@ fn check_fields(base: &toml::Value, paths: &[String], points: &[SweepPoint]) -> 
     };
     for (d, path) in paths.iter().enumerate() {
         let mut seen = std::collections::HashSet::new();
+        // The first value out of the field's own range, and whether every
+        // checked value is (then every point would fail: refused).
+        let mut out_of_range: Option<Error> = None;
+        let mut all_out = true;
         for p in points {
             let x = p.values[d];
             if !seen.insert(x.to_bits()) {
@@ -105,8 +110,20 @@ fn check_fields(base: &toml::Value, paths: &[String], points: &[SweepPoint]) -> 
                 set_field(&mut value, w, *y)?;
             }
             set_field(&mut value, path, x)?;
-            Scene::deserialize(value)
+            let scene = Scene::deserialize(value)
                 .map_err(|e| Error::invalid(path, format!("at {x:e}: {}", e.message().trim())))?;
+            match scene.validate() {
+                Err(e) if e.field() == Some(path.as_str()) => {
+                    out_of_range.get_or_insert(e);
+                }
+                _ => all_out = false,
+            }
+        }
+        if let (true, Some(e)) = (all_out, out_of_range) {
+            return Err(Error::invalid(
+                path,
+                format!("every value is out of the field's range, so every point would fail ({e})"),
+            ));
         }
     }
     Ok(())
@@ -288,7 +305,9 @@ pub fn sweep_table(
 }
 
 /// Runs the points of `spec` over the scene `base` that are not yet in
-/// `out/results.csv`, calling `progress(done, total)` as points finish.
+/// `out/results.csv`, calling `progress(done, total)` as points finish
+/// (once before any runs; the first point runs alone, so the second call
+/// comes after one point's time, the estimate of the others').
 ///
 /// # Errors
 /// Invalid specs or scenes (naming the field) and I/O failures (naming
@@ -341,18 +360,25 @@ pub fn run_sweep(
     let failed = AtomicUsize::new(0);
     progress(resumed, total);
     let file = Mutex::new(file);
-    let work = || {
-        todo.par_iter().try_for_each(|p| -> Result<()> {
-            let (row, ok) = point_row(&base_value, &paths, options, &cols, p);
-            if !ok {
-                failed.fetch_add(1, Ordering::Relaxed);
-            }
-            file.lock()
-                .map_err(|_| Error::invalid("out", "results file lock poisoned"))?
-                .append(p.index, &row)?;
-            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-            Ok(())
-        })
+    let step = |p: &&SweepPoint| -> Result<()> {
+        let (row, ok) = point_row(&base_value, &paths, options, &cols, p);
+        if !ok {
+            failed.fetch_add(1, Ordering::Relaxed);
+        }
+        file.lock()
+            .map_err(|_| Error::invalid("out", "results file lock poisoned"))?
+            .append(p.index, &row)?;
+        progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+        Ok(())
+    };
+    // The first point alone: its time, reported by the first progress
+    // call past `resumed`, is the per-point estimate of the rest.
+    let work = || match todo.split_first() {
+        Some((first, rest)) => {
+            step(first)?;
+            rest.par_iter().try_for_each(step)
+        }
+        None => Ok(()),
     };
     match options.threads {
         Some(n) => rayon::ThreadPoolBuilder::new()
