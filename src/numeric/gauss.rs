@@ -232,8 +232,8 @@ fn exp2_approx(y: f64) -> f64 {
     }
     // k = floor(y) without a library call (y > -1000).
     let k = (y + 1024.0) as i64 - 1024;
-    let r = (y - k as f64) * std::f64::consts::LN_2; // [0, ln 2)
-                                                     // exp(r) by Taylor to r^9/9! (remainder < 4e-9 relative).
+    // r in [0, ln 2); exp(r) by Taylor to r^9/9! (remainder < 4e-9 relative).
+    let r = (y - k as f64) * std::f64::consts::LN_2;
     const INV_FACT: [f64; 10] = [
         1.0,
         1.0,
