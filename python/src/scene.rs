@@ -58,6 +58,24 @@ impl Source {
     }
 }
 
+/// Where a run failed: parsing the scene (a file's bad input then names
+/// the file, as `asperity run` and `asperity sweep` do) or anywhere else.
+enum Stage {
+    Parse(asperity::Error),
+    Other(asperity::Error),
+}
+
+impl Stage {
+    fn into_py(self, source: &Source) -> PyErr {
+        match (self, source) {
+            (Stage::Parse(e), Source::File(path)) if e.is_bad_input() => {
+                PyValueError::new_err(format!("{e} (scene {})", path.display()))
+            }
+            (Stage::Parse(e) | Stage::Other(e), _) => lib_err(e),
+        }
+    }
+}
+
 /// What a run gives, before it becomes Python objects.
 struct Outcome {
     summary: Summary,
@@ -67,12 +85,11 @@ struct Outcome {
 
 /// Plans and runs a scene as `asperity run` does (the map's path relative
 /// to `base`), writing the files only into `out` when given.
-fn execute(text: &str, base: &Path, out: Option<&Path>) -> asperity::Result<Outcome> {
-    let scene = Scene::from_toml(text)?;
+fn execute(scene: &Scene, base: &Path, out: Option<&Path>) -> asperity::Result<Outcome> {
     let plan = if scene.surface.topography.is_some() {
-        Plan::new_in(&scene, PlanMode::Planned, base)?
+        Plan::new_in(scene, PlanMode::Planned, base)?
     } else {
-        Plan::new(&scene, PlanMode::Planned)?
+        Plan::new(scene, PlanMode::Planned)?
     };
     let results = plan.run()?;
     let summary = Summary::new(&plan, &results);
@@ -122,10 +139,11 @@ impl RunResult {
 fn run_source(py: Python<'_>, source: Source, out: Option<PathBuf>) -> PyResult<RunResult> {
     let outcome = py
         .detach(|| {
-            let (text, base) = source.text()?;
-            execute(&text, &base, out.as_deref())
+            let (text, base) = source.text().map_err(Stage::Other)?;
+            let scene = Scene::from_toml(&text).map_err(Stage::Parse)?;
+            execute(&scene, &base, out.as_deref()).map_err(Stage::Other)
         })
-        .map_err(lib_err)?;
+        .map_err(|e| e.into_py(&source))?;
     let summary = serialised(py, &outcome.summary, false)?;
     Ok(RunResult {
         states: serialised(py, &outcome.summary.states, false)?,
@@ -190,13 +208,13 @@ pub fn sweep(
     }
     let table = py
         .detach(|| {
-            let (text, _) = source.text()?;
-            let scene = Scene::from_toml(&text)?;
+            let (text, _) = source.text().map_err(Stage::Other)?;
+            let scene = Scene::from_toml(&text).map_err(Stage::Parse)?;
             let mut options = SweepOptions::default();
             options.threads = threads;
-            sweep_table(&scene, &fields, seed, &options)
+            sweep_table(&scene, &fields, seed, &options).map_err(Stage::Other)
         })
-        .map_err(lib_err)?;
+        .map_err(|e| e.into_py(&source))?;
     // As `asperity sweep`: a sweep that produced no result at all is a
     // failure (exit 1 there), naming the first point's error.
     if let Some(Column::Text(status)) = table.get("status") {

@@ -53,9 +53,12 @@ def test_bad_scene_is_value_error_with_the_cli_message(table, key, value, field,
     f.write_text(text)
     want = cli_error("run", f, "--out", tmp_path / "out")
     assert field in want, want
+    # The command line names the scene file; text has no file to name.
+    named = f" (scene {f})"
+    assert want.endswith(named), want
     with pytest.raises(ValueError) as e:
         asperity.run_toml(text)
-    assert str(e.value) == want
+    assert str(e.value) == want[: -len(named)]
     with pytest.raises(ValueError) as e:
         asperity.run(f)
     assert str(e.value) == want
@@ -66,9 +69,14 @@ def test_duplicated_key_is_refused(tmp_path):
     f = tmp_path / "dup.toml"
     f.write_text(text)
     want = cli_error("run", f, "--out", tmp_path / "out")
+    named = f" (scene {f})"
+    assert want.endswith(named), want
     with pytest.raises(ValueError) as e:
         asperity.run_toml(text)
-    assert str(e.value) == want and "sigma" in want
+    assert str(e.value) == want[: -len(named)] and "sigma" in want
+    with pytest.raises(ValueError) as e:
+        asperity.run(f)
+    assert str(e.value) == want
 
 
 def test_bad_dict_value_names_the_field():

@@ -354,6 +354,116 @@ impl Tabulated {
     }
 }
 
+/// The constants of [`Tabulated::eval_near`]'s far field for a block
+/// evaluation: the same operations in the same order, so the same bits.
+#[derive(Clone, Copy)]
+struct FarField {
+    /// `Dbar` from which a state is on the attached table, on approach and
+    /// on retraction (`-inf` where the table has no such threshold).
+    attach_bar: f64,
+    detach_bar: f64,
+    /// `[attached, detached]`: first node, `h1`, `E_1 - 1`.
+    first: [f64; 2],
+    h1: [f64; 2],
+    excess: [f64; 2],
+    far_field_scale: f64,
+    /// `1/interference`, load and radius scales.
+    interference: f64,
+    load: f64,
+    radius: f64,
+}
+
+impl FarField {
+    fn of(law: &Tabulated) -> Self {
+        let its = [&law.attached, &law.detached];
+        FarField {
+            attach_bar: law.table.attach_bar.unwrap_or(f64::NEG_INFINITY),
+            detach_bar: law.table.detach_bar.unwrap_or(f64::NEG_INFINITY),
+            first: its.map(|it| it.load.x()[0]),
+            h1: its.map(|it| it.far_h1),
+            excess: its.map(|it| it.far_excess),
+            far_field_scale: law.table.far_field_scale,
+            interference: law.scales.interference,
+            load: law.scales.load,
+            radius: law.scales.radius,
+        }
+    }
+
+    /// `(load, radius)` (N, m) of the far field at `delta` (m), the radius
+    /// NaN where `delta` is not in the far field (the load is then
+    /// meaningless).
+    #[inline(always)]
+    fn state(&self, delta: f64, retract: bool) -> (f64, f64) {
+        let d = delta / self.interference;
+        let threshold = if retract {
+            self.detach_bar
+        } else {
+            self.attach_bar
+        };
+        // (selects, not indexing: the loop stays in vector lanes)
+        let detached = d < threshold;
+        let first = if detached {
+            self.first[1]
+        } else {
+            self.first[0]
+        };
+        let h1 = if detached { self.h1[1] } else { self.h1[0] };
+        let excess = if detached {
+            self.excess[1]
+        } else {
+            self.excess[0]
+        };
+        let inv = 1.0 / (1.0 - self.far_field_scale * d);
+        let x2 = inv * inv;
+        let b = x2 - 0.25 * x2 * x2 * x2 * x2;
+        let r = h1 * inv;
+        let decay = r * r * r * r.sqrt();
+        let p = -BRADLEY * b * (1.0 + excess * decay);
+        // NaN marks a state outside the far field (for the scalar pass).
+        let far = d < first && h1 > 1.0;
+        (
+            p * self.load,
+            if far { 0.0 * self.radius } else { f64::NAN },
+        )
+    }
+}
+
+/// Every state of a block as if it were in the far field (the others are
+/// overwritten after), compiled for the CPU's widest vectors.
+struct FarFieldBatch<'a> {
+    far: &'a FarField,
+    delta: &'a [f64],
+    delta_max: Option<&'a [f64]>,
+    load: &'a mut [f64],
+    radius: &'a mut [f64],
+}
+
+impl pulp::WithSimd for FarFieldBatch<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) {
+        // A copy of the constants on the stack: kept in registers.
+        let far = &{ *self.far };
+        let attach = far.attach_bar;
+        let out = self.load.iter_mut().zip(self.radius.iter_mut());
+        match self.delta_max {
+            None => {
+                for (&d, (l, r)) in self.delta.iter().zip(out) {
+                    (*l, *r) = far.state(d, false);
+                }
+            }
+            Some(m) => {
+                // Retraction once the jump-in was reached (`branch_after`).
+                let reach = attach * far.interference;
+                for ((&d, &m), (l, r)) in self.delta.iter().zip(m).zip(out) {
+                    (*l, *r) = far.state(d, m >= reach);
+                }
+            }
+        }
+    }
+}
+
 impl AsperityLaw for Tabulated {
     fn name(&self) -> &'static str {
         "tabulated"
@@ -386,18 +496,36 @@ impl AsperityLaw for Tabulated {
         load: &mut [f64],
         radius: &mut [f64],
     ) {
+        // The far field (every summit below the table, all of them with a
+        // long-range law) in vector lanes, the rest (radius NaN after the
+        // first pass) by the walking search.
+        let far = FarField::of(self);
+        pulp::Arch::new().dispatch(FarFieldBatch {
+            far: &far,
+            delta,
+            delta_max,
+            load: &mut *load,
+            radius: &mut *radius,
+        });
         let mut hints = [usize::MAX; 2];
         let out = load.iter_mut().zip(radius.iter_mut());
         match delta_max {
             None => {
                 for (&d, (l, r)) in delta.iter().zip(out) {
+                    if !r.is_nan() {
+                        continue; // in the far field, done
+                    }
                     let s = self.state_hinted(d, Branch::Approach, &mut hints);
                     (*l, *r) = (s.load, s.radius);
                 }
             }
             Some(m) => {
                 for ((&d, &m), (l, r)) in delta.iter().zip(m).zip(out) {
-                    let s = self.state_hinted(d, self.branch_after(m), &mut hints);
+                    if !r.is_nan() {
+                        continue; // in the far field, done
+                    }
+                    let branch = self.branch_after(m);
+                    let s = self.state_hinted(d, branch, &mut hints);
                     (*l, *r) = (s.load, s.radius);
                 }
             }
