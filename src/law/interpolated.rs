@@ -458,17 +458,19 @@ impl TableBatch<'_> {
         if retract.iter().any(|&x| x != retract[0]) {
             return None;
         }
-        let (mut lo, mut hi, mut nan) = (d[0], d[0], false);
-        for &x in d {
-            lo = if x < lo { x } else { lo };
-            hi = if x > hi { x } else { hi };
-            nan |= x.is_nan();
-        }
         let k = usize::from(retract[0]);
         let table = &self.law.tables[k];
-        let i = table.panel_from(lo, &mut hint[k])?;
-        let mut upper = i;
-        (!nan && table.panel_from(hi, &mut upper)? == i).then_some((k, i))
+        let i = table.panel_from(d[0], &mut hint[k])?;
+        // Every lane in panel i as `panel_from` bounds it: `[l, r)`, the
+        // last panel `[l, r]` (NaN fails both; a plain AND, so the test
+        // runs in vector lanes).
+        let (l, r) = (table.edges[i], table.edges[i + 1]);
+        let inside = if i + 1 == table.load.len() {
+            d.iter().fold(true, |ok, &x| ok & (x >= l) & (x <= r))
+        } else {
+            d.iter().fold(true, |ok, &x| ok & (x >= l) & (x < r))
+        };
+        inside.then_some((k, i))
     }
 }
 
@@ -497,7 +499,8 @@ impl pulp::WithSimd for TableBatch<'_> {
             }
             let mut t = [0.0; GROUP];
             let mut inside = [true; GROUP];
-            let (p, mut q) = if let Some((k, i)) = self.common_panel(&d, &retract, &mut hint) {
+            let common = self.common_panel(&d, &retract, &mut hint);
+            let (p, mut q) = if let Some((k, i)) = common {
                 // One panel: its coefficients broadcast to every lane.
                 let table = &law.tables[k];
                 let (l, r) = (table.edges[i], table.edges[i + 1]);
@@ -536,10 +539,16 @@ impl pulp::WithSimd for TableBatch<'_> {
                 group_values(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j])
             };
             sqrt_lanes(simd, &mut q);
-            for j in 0..len {
-                if inside[j] {
-                    self.load[start + j] = p[j];
-                    self.radius[start + j] = q[j];
+            if common.is_some() {
+                // every lane inside: whole copies
+                self.load[start..start + len].copy_from_slice(&p[..len]);
+                self.radius[start..start + len].copy_from_slice(&q[..len]);
+            } else {
+                for j in 0..len {
+                    if inside[j] {
+                        self.load[start + j] = p[j];
+                        self.radius[start + j] = q[j];
+                    }
                 }
             }
             start += len;
