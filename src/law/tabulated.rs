@@ -282,16 +282,8 @@ impl Tabulated {
         if d < first {
             let h1 = it.far_h1;
             if h1 > 1.0 {
-                // E_1 = p1/Bradley(h1); Pbar = Bradley(h) [1 + (E_1 - 1) (h1/h)^3.5],
-                // Bradley(h) = h^-2 - h^-8/4, with one division for 1/h.
-                let inv = 1.0 / (1.0 - self.table.far_field_scale * d);
-                let x2 = inv * inv;
-                let b = x2 - 0.25 * x2 * x2 * x2 * x2;
-                // (h1/h)^(7/2) as r^3 sqrt(r): a tenth of `powf`'s cost
-                // in the far-field sums where every summit is in range.
-                let r = h1 * inv;
-                let decay = r * r * r * r.sqrt();
-                return (-BRADLEY * b * (1.0 + it.far_excess * decay), 0.0);
+                let p = far_field_bar(self.table.far_field_scale, d, h1, it.far_excess);
+                return (p, 0.0);
             }
             return (it.load.y()[0], it.radius.y()[0]);
         }
@@ -354,8 +346,24 @@ impl Tabulated {
     }
 }
 
+/// `Pbar` below the table's first node (`h1 = 1 - s Dbar_1 > 1`):
+/// `Pbar = Bradley(h) [1 + (E_1 - 1) (h1/h)^(7/2)]`, `h = 1 - s Dbar`,
+/// `Bradley(h) = -(8/3)(h^-2 - h^-8/4)`, with one division for `1/h` and
+/// `(h1/h)^(7/2)` as `r^3 sqrt(r)` (a tenth of `powf`'s cost in the
+/// far-field sums, where every summit is in range). The scalar law and the
+/// block evaluation share it, so they agree bit for bit.
+#[inline(always)]
+fn far_field_bar(scale: f64, d: f64, h1: f64, excess: f64) -> f64 {
+    let inv = 1.0 / (1.0 - scale * d);
+    let x2 = inv * inv;
+    let b = x2 - 0.25 * x2 * x2 * x2 * x2;
+    let r = h1 * inv;
+    let decay = r * r * r * r.sqrt();
+    -BRADLEY * b * (1.0 + excess * decay)
+}
+
 /// The constants of [`Tabulated::eval_near`]'s far field for a block
-/// evaluation: the same operations in the same order, so the same bits.
+/// evaluation ([`far_field_bar`] with the branch table chosen by selects).
 #[derive(Clone, Copy)]
 struct FarField {
     /// `Dbar` from which a state is on the attached table, on approach and
@@ -413,12 +421,7 @@ impl FarField {
         } else {
             self.excess[0]
         };
-        let inv = 1.0 / (1.0 - self.far_field_scale * d);
-        let x2 = inv * inv;
-        let b = x2 - 0.25 * x2 * x2 * x2 * x2;
-        let r = h1 * inv;
-        let decay = r * r * r * r.sqrt();
-        let p = -BRADLEY * b * (1.0 + excess * decay);
+        let p = far_field_bar(self.far_field_scale, d, h1, excess);
         // NaN marks a state outside the far field (for the scalar pass).
         let far = d < first && h1 > 1.0;
         (

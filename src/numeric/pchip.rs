@@ -54,12 +54,7 @@ impl Pchip {
         if t >= self.x[n - 1] {
             return self.y[n - 1];
         }
-        let k = self.x.partition_point(|&v| v <= t) - 1;
-        let h = self.x[k + 1] - self.x[k];
-        let s = (t - self.x[k]) / h;
-        let (y0, y1) = (self.y[k], self.y[k + 1]);
-        let (d0, d1) = (self.d[k] * h, self.d[k + 1] * h);
-        hermite(s, y0, y1, d0, d1)
+        self.eval_piece(self.x.partition_point(|&v| v <= t) - 1, t)
     }
 }
 
