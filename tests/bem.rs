@@ -14,17 +14,23 @@ use asperity::surface::{npy, HeightMap};
 use serde_json::Value;
 use std::f64::consts::PI;
 
-/// R = 1 sphere in a unit cell, E* = 1, at the Hertz load of a = 0.1.
-fn hertz(n: usize, periodic: bool) -> (f64, f64) {
+/// The R = 1 paraboloid `-r^2/2` on an `n^2` grid of the unit cell
+/// (pixel `dx = 1/n`), its apex at pixel coordinates `(c, c)`.
+fn sphere_cell(n: usize, c: f64) -> HeightMap {
     let dx = 1.0 / n as f64;
-    let c = n as f64 / 2.0 - 0.5;
     let h: Vec<f64> = (0..n * n)
         .map(|k| {
             let (i, j) = ((k / n) as f64 - c, (k % n) as f64 - c);
             -(i * i + j * j) * dx * dx / 2.0
         })
         .collect();
-    let map = HeightMap::new(n, n, h).unwrap();
+    HeightMap::new(n, n, h).unwrap()
+}
+
+/// R = 1 sphere in a unit cell, E* = 1, at the Hertz load of a = 0.1.
+fn hertz(n: usize, periodic: bool) -> (f64, f64) {
+    let dx = 1.0 / n as f64;
+    let map = sphere_cell(n, n as f64 / 2.0 - 0.5);
     let opts = Options::default();
     let prob = Problem::new(&map, dx, 1.0, periodic, &opts).unwrap();
     let s = prob.solve_pressure(4e-3 / 3.0, &opts, None).unwrap();
@@ -201,16 +207,7 @@ fn adhesive_sphere_follows_jkr_near_pull_off() {
     // (4 % measured, mostly the finite range: 512^2 gives the same).
     let n = 256;
     let dx = 1.0 / n as f64;
-    let h: Vec<f64> = (0..n * n)
-        .map(|k| {
-            let (i, j) = (
-                (k / n) as f64 - n as f64 / 2.0,
-                (k % n) as f64 - n as f64 / 2.0,
-            );
-            -(i * i + j * j) * dx * dx / 2.0
-        })
-        .collect();
-    let map = HeightMap::new(n, n, h).unwrap();
+    let map = sphere_cell(n, n as f64 / 2.0);
     let (w, rho) = (5.66e-4, 3.11e-3);
     let opts = Options {
         tolerance: 1e-8,
@@ -245,16 +242,7 @@ fn adhesive_sphere_follows_jkr_near_pull_off() {
 /// parabola through the smallest sample and its neighbours.
 fn sphere_pull_off(n: usize, w: f64, rho: f64, start: f64, step: f64, count: usize) -> f64 {
     let dx = 1.0 / n as f64;
-    let h: Vec<f64> = (0..n * n)
-        .map(|k| {
-            let (i, j) = (
-                (k / n) as f64 - n as f64 / 2.0,
-                (k % n) as f64 - n as f64 / 2.0,
-            );
-            -(i * i + j * j) * dx * dx / 2.0
-        })
-        .collect();
-    let map = HeightMap::new(n, n, h).unwrap();
+    let map = sphere_cell(n, n as f64 / 2.0);
     let opts = Options {
         tolerance: 1e-8,
         ..Default::default()
