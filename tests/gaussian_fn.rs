@@ -132,3 +132,49 @@ fn normal_quantile_matches_mpmath() {
         assert!(err < 1e-14, "p {p}: {got} vs {exact}");
     }
 }
+
+/// Wichura's AS 241 against a dense mpmath set over `[1e-300, 1 - 1e-16]`
+/// (tests/data/normal_quantile.py): error below 1e-15 relative (absolute
+/// where `|quantile| < 1`, around `p = 1/2`); AS 241 claims ~1e-16, 5.6e-16
+/// measured.
+#[test]
+fn normal_quantile_matches_dense_mpmath() {
+    let d = local("normal_quantile.json");
+    let mut worst = 0.0f64;
+    for row in d["rows"].as_array().unwrap() {
+        let p = row["p"].as_f64().unwrap();
+        let exact = num(&row["quantile"]);
+        let got = normal::quantile(p);
+        let err = (got - exact).abs() / exact.abs().max(1.0);
+        worst = worst.max(err);
+        assert!(err < 1e-15, "p {p}: {got} vs {exact} ({err:e})");
+    }
+    println!("normal quantile: worst {worst:.2e}");
+}
+
+/// The quantile's far tails (`min(p, 1 - p) < 1e-10`, polished by a Halley
+/// step) on both sides: `Q(-s) = p` for small `p` and `Q(s) = 1 - p` for
+/// `p` near 1, within what one ulp of `s` allows (a relative error `e` of
+/// `s` shows as `s^2 e` in the tail: `2 s^2 eps`, 1e-15 at least).
+#[test]
+fn normal_quantile_round_trips_in_both_far_tails() {
+    for k in 0..=58 {
+        let p = 10f64.powf(-11.0 - 5.0 * k as f64);
+        let s = normal::quantile(p);
+        // One ulp of s alone moves Q by ~s^2 eps relative.
+        let tol = 1e-15 + 2.0 * s * s * f64::EPSILON;
+        let err = (normal::tail(-s) / p - 1.0).abs();
+        assert!(err < tol, "p {p:e}: {err:e} > {tol:e}");
+        assert_eq!(normal::inverse_tail(p), -s, "p {p:e}");
+    }
+    for k in 1..=5 {
+        // The upper side, where 1 - p is exact.
+        let q = 1e-11 * k as f64;
+        let p = 1.0 - q;
+        let s = normal::quantile(p);
+        let q_exact = 1.0 - p; // exact (Sterbenz)
+        let tol = 1e-15 + 2.0 * s * s * f64::EPSILON;
+        let err = (normal::tail(s) / q_exact - 1.0).abs();
+        assert!(err < tol, "1 - p {q_exact:e}: {err:e} > {tol:e}");
+    }
+}

@@ -215,9 +215,10 @@ pub fn erfcx(x: f64) -> f64 {
 }
 
 /// Inverse upper tail: `s` with `Q(s) = q`, for `q` in `(0, 1)`; `+inf` at
-/// `q = 0`, `-inf` at `q = 1`, NaN outside. Acklam's rational initial guess
-/// (relative 1e-9) polished by two Halley steps on the accurate [`tail`],
-/// so the result is accurate to a few ulp also in the far tails.
+/// `q = 0`, `-inf` at `q = 1`, NaN outside: `s = -Phi^-1(q)` by
+/// [`ppnd16`] (no cancellation: its central form takes `q - 1/2`, its
+/// tails `min(q, 1 - q)`, both exact), polished by one Halley step on the
+/// accurate [`tail`] where `min(q, 1 - q) < 1e-10`.
 pub fn inverse_tail(q: f64) -> f64 {
     if q.is_nan() || !(0.0..=1.0).contains(&q) {
         return f64::NAN;
@@ -228,76 +229,133 @@ pub fn inverse_tail(q: f64) -> f64 {
     if q == 1.0 {
         return f64::NEG_INFINITY;
     }
-    // Lower-tail quantile of p = q is -s.
-    let mut s = -acklam(q);
-    for _ in 0..2 {
+    let mut s = -ppnd16(q);
+    // Beyond |s| = 6.4 (q < 1e-10 either side) a relative error e of s
+    // moves the tail by ~s^2 e: one Halley step on the accurate tail keeps
+    // Q(s) = q to ~1e-15 out to q = 1e-300 (tests/heights.rs round trips).
+    if !(q.min(1.0 - q) >= 1e-10) {
         let d = pdf(s);
-        if d == 0.0 {
-            break;
+        if d > 0.0 {
+            let u = if q <= 0.5 {
+                (tail(s) - q) / d
+            } else {
+                // Q(s) - q = (1 - q) - P(S <= s) = (1 - q) - Q(-s)
+                ((1.0 - q) - tail(-s)) / d
+            };
+            s += u / (1.0 + 0.5 * s * u);
         }
-        let u = (tail(s) - q) / d;
-        let step = u / (1.0 + 0.5 * s * u);
-        s += step;
     }
     s
 }
 
-/// Quantile `Phi^-1(p)`: `s` with `P(S <= s) = p`, accurate in both tails.
+/// Quantile `Phi^-1(p)`: `s` with `P(S <= s) = p`, accurate in both tails
+/// ([`ppnd16`]; `-inf`/`+inf` at 0/1, NaN outside `[0, 1]`).
 pub fn quantile(p: f64) -> f64 {
-    if p < 0.5 {
-        -inverse_tail(p)
-    } else {
-        inverse_tail(1.0 - p)
-    }
+    -inverse_tail(p)
 }
 
-/// Acklam's rational approximation to the normal quantile `Phi^-1(p)`
-/// (relative error 1.15e-9), `p` in `(0, 1)`.
-fn acklam(p: f64) -> f64 {
-    const A: [f64; 6] = [
-        -3.969683028665376e+01,
-        2.209460984245205e+02,
-        -2.759285104469687e+02,
-        1.383577518672690e+02,
-        -3.066479806614716e+01,
-        2.506628277459239e+00,
-    ];
-    const B: [f64; 5] = [
-        -5.447609879822406e+01,
-        1.615858368580409e+02,
-        -1.556989798598866e+02,
-        6.680131188771972e+01,
-        -1.328068155288572e+01,
-    ];
-    const C: [f64; 6] = [
-        -7.784894002430293e-03,
-        -3.223964580411365e-01,
-        -2.400758277161838e+00,
-        -2.549732539343734e+00,
-        4.374664141464968e+00,
-        2.938163982698783e+00,
-    ];
-    const D: [f64; 4] = [
-        7.784695709041462e-03,
-        3.224671290700398e-01,
-        2.445134137142996e+00,
-        3.754408661907416e+00,
-    ];
-    const P_LOW: f64 = 0.02425;
-    let tail_form = |q: f64| {
-        let r = (-2.0 * q.ln()).sqrt();
-        (((((C[0] * r + C[1]) * r + C[2]) * r + C[3]) * r + C[4]) * r + C[5])
-            / ((((D[0] * r + D[1]) * r + D[2]) * r + D[3]) * r + 1.0)
-    };
-    if p < P_LOW {
-        tail_form(p)
-    } else if p <= 1.0 - P_LOW {
-        let q = p - 0.5;
-        let r = q * q;
-        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
-            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
+/// Wichura's algorithm AS 241 (PPND16) for `Phi^-1(p)`, `p` in `(0, 1)`:
+/// a ratio of degree-7 polynomials in `r = 0.180625 - (p - 1/2)^2` for
+/// `|p - 1/2| <= 0.425`, else in `r = sqrt(-ln min(p, 1 - p))` (shifted by
+/// 1.6 for `r <= 5`, by 5 beyond), "accurate to about 1 part in 10^16"
+/// down to `p = 1e-300` (Wichura, Appl. Statist. 37 (1988) 477-484; the
+/// coefficients as in CPython's `statistics.NormalDist.inv_cdf`). Measured
+/// against mpmath: `tests/gaussian_fn.rs` `normal_quantile_matches_mpmath`.
+/// About 15 ns (one `ln`, one `sqrt`, one division), a tenth of the
+/// Halley-polished Acklam guess it replaced in the Monte Carlo draws.
+#[inline]
+fn ppnd16(p: f64) -> f64 {
+    let q = p - 0.5;
+    if q.abs() <= 0.425 {
+        let r = 0.180625 - q * q;
+        let num = (((((((2.509_080_928_730_122_7e3 * r + 3.343_057_558_358_812_8e4) * r
+            + 6.726_577_092_700_870_0e4)
+            * r
+            + 4.592_195_393_154_987_1e4)
+            * r
+            + 1.373_169_376_550_946_1e4)
+            * r
+            + 1.971_590_950_306_551_4e3)
+            * r
+            + 1.331_416_678_917_843_8e2)
+            * r
+            + 3.387_132_872_796_366_6)
+            * q;
+        let den = ((((((5.226_495_278_852_854_6e3 * r + 2.872_908_573_572_194_3e4) * r
+            + 3.930_789_580_009_271_0e4)
+            * r
+            + 2.121_379_430_158_659_6e4)
+            * r
+            + 5.394_196_021_424_751_1e3)
+            * r
+            + 6.871_870_074_920_579_1e2)
+            * r
+            + 4.231_333_070_160_091_1e1)
+            * r
+            + 1.0;
+        return num / den;
+    }
+    let tail = if q <= 0.0 { p } else { 1.0 - p };
+    let r = (-tail.ln()).sqrt();
+    let x = if r <= 5.0 {
+        let r = r - 1.6;
+        let num = ((((((7.745_450_142_783_414_1e-4 * r + 2.272_384_498_926_918_5e-2) * r
+            + 2.417_807_251_774_506_1e-1)
+            * r
+            + 1.270_458_252_452_368_4)
+            * r
+            + 3.647_848_324_763_204_6)
+            * r
+            + 5.769_497_221_460_691_4)
+            * r
+            + 4.630_337_846_156_545_3)
+            * r
+            + 1.423_437_110_749_683_6;
+        let den = ((((((1.050_750_071_644_416_8e-9 * r + 5.475_938_084_995_344_9e-4) * r
+            + 1.519_866_656_361_645_7e-2)
+            * r
+            + 1.481_039_764_274_800_7e-1)
+            * r
+            + 6.897_673_349_851_000_0e-1)
+            * r
+            + 1.676_384_830_183_803_8)
+            * r
+            + 2.053_191_626_637_758_8)
+            * r
+            + 1.0;
+        num / den
     } else {
-        -tail_form(1.0 - p)
+        let r = r - 5.0;
+        let num = ((((((2.010_334_399_292_288_1e-7 * r + 2.711_555_568_743_487_6e-5) * r
+            + 1.242_660_947_388_078_4e-3)
+            * r
+            + 2.653_218_952_657_612_3e-2)
+            * r
+            + 2.965_605_718_285_048_9e-1)
+            * r
+            + 1.784_826_539_917_291_3)
+            * r
+            + 5.463_784_911_164_114_4)
+            * r
+            + 6.657_904_643_501_103_8;
+        let den = ((((((2.044_263_103_389_939_8e-15 * r + 1.421_511_758_316_445_9e-7) * r
+            + 1.846_318_317_510_054_7e-5)
+            * r
+            + 7.868_691_311_456_132_6e-4)
+            * r
+            + 1.487_536_129_085_061_5e-2)
+            * r
+            + 1.369_298_809_227_358_1e-1)
+            * r
+            + 5.998_322_065_558_879_4e-1)
+            * r
+            + 1.0;
+        num / den
+    };
+    if q < 0.0 {
+        -x
+    } else {
+        x
     }
 }
 
