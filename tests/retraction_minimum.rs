@@ -171,3 +171,57 @@ fn pruned_pull_off_equals_the_full_curve_minimum() {
     // Most separations are ruled out without being summed.
     assert!(pruned * 2 > total, "{pruned} of {total} pruned");
 }
+
+/// The per-summit history prepared once for many separations
+/// (`prepare_after`, a plastic summit's unloading shape) gives every law's
+/// states and retraction minima bit for bit as without it: interferences
+/// below, at and above the peak, peaks out of contact, NaN.
+#[test]
+fn prepared_histories_give_the_same_bits() {
+    let s = Jkr::new(R, E_STAR, W).unwrap().scales().interference;
+    let peaks: Vec<f64> = [-0.5, 0.0, 0.3, 2.0, 20.0, 200.0, 2000.0, f64::NAN]
+        .iter()
+        .map(|x| x * s)
+        .collect();
+    for (name, law) in laws() {
+        let mut delta = Vec::new();
+        let mut delta_max = Vec::new();
+        for &m in &peaks {
+            for i in 0..=300 {
+                delta.push((-40.0 + 2100.0 * i as f64 / 300.0) * s);
+                delta_max.push(m);
+            }
+            delta.push(f64::NAN);
+            delta_max.push(m);
+        }
+        let n = delta.len();
+        let mut words = vec![[0.0; 4]; n];
+        law.prepare_after(&delta_max, &mut words);
+        let (mut l0, mut r0, mut l1, mut r1) =
+            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        law.state_batch(&delta, Some(&delta_max), &mut l0, &mut r0);
+        law.state_batch_prepared(&delta, &delta_max, &words, &mut l1, &mut r1);
+        for i in 0..n {
+            assert_eq!(
+                (l0[i].to_bits(), r0[i].to_bits()),
+                (l1[i].to_bits(), r1[i].to_bits()),
+                "{name}: delta {:e}, delta_max {:e}",
+                delta[i],
+                delta_max[i]
+            );
+            let (a, b) = (
+                law.retraction_minimum(delta_max[i]),
+                law.retraction_minimum_prepared(delta_max[i], &words[i]),
+            );
+            assert_eq!(
+                a.map(|m| (m.load.to_bits(), m.interference.to_bits())),
+                b.map(|m| (m.load.to_bits(), m.interference.to_bits())),
+                "{name}: retraction minimum after {:e}",
+                delta_max[i]
+            );
+        }
+        if law.prepares_history() {
+            println!("{name}: prepared history checked on {n} states");
+        }
+    }
+}

@@ -143,6 +143,108 @@ fn radius_from_root(x: f64) -> f64 {
 /// 10.0, 32 lanes 7.4, 64 lanes 7.5-8.0 ns per summit).
 const GROUP: usize = 32;
 
+/// The stable JKR roots of a group in SIMD lanes: for each lane with
+/// `live` set, `(A, Pbar)` of [`stable_radius_bar`]`(d)` and [`load_bar`]
+/// bit for bit (the same start, the same Newton steps); other lanes hold
+/// no meaning.
+#[inline(always)]
+fn group_roots<S: pulp::Simd>(
+    simd: S,
+    d: &[f64; GROUP],
+    mut live: [bool; GROUP],
+) -> ([f64; GROUP], [f64; GROUP]) {
+    // newton_start, with its square roots in SIMD lanes.
+    let (mut bound, mut fold) = ([0.0; GROUP], [0.0; GROUP]);
+    for j in 0..GROUP {
+        (bound[j], fold[j]) = start_radicands(d[j]);
+    }
+    sqrt_lanes(simd, &mut bound);
+    sqrt_lanes(simd, &mut bound);
+    sqrt_lanes(simd, &mut fold);
+    let mut x = [0.0; GROUP];
+    for j in 0..GROUP {
+        x[j] = start_from_roots(bound[j], fold[j]);
+        bound[j] = d[j] + B * x[j];
+    }
+    sqrt_lanes(simd, &mut bound);
+    sqrt_lanes(simd, &mut bound);
+    for j in 0..GROUP {
+        x[j] = x[j].min(bound[j]);
+    }
+    for _ in 0..MAX_NEWTON {
+        let mut any = false;
+        for j in 0..GROUP {
+            let (next, more) = newton_step(x[j], d[j]);
+            x[j] = if live[j] { next } else { x[j] };
+            live[j] &= more;
+            any |= live[j];
+        }
+        if !any {
+            break;
+        }
+    }
+    // load_bar(A) = A^3 - sqrt(6 A^3), the root in SIMD lanes.
+    let (mut a, mut a3, mut root) = ([0.0; GROUP], [0.0; GROUP], [0.0; GROUP]);
+    for j in 0..GROUP {
+        a[j] = radius_from_root(x[j]);
+        a3[j] = a[j] * a[j] * a[j];
+        root[j] = 6.0 * a3[j];
+    }
+    sqrt_lanes(simd, &mut root);
+    for j in 0..GROUP {
+        a3[j] -= root[j];
+    }
+    (a, a3)
+}
+
+/// JKR states of asperities with their own scales (a plastic summit's
+/// flattened shape): state `i` is `(Pbar(A) * words[i][2], A * words[i][3])`
+/// with `A` = [`stable_radius_bar`]`((delta[i] - words[i][0]) / words[i][1])`,
+/// free where that has no root (NaN words included); in SIMD lanes, bit
+/// for bit the scalar formulas. Words as
+/// [`AdhesivePlastic::prepare_after`](crate::law::AsperityLaw::prepare_after).
+pub(crate) struct JkrShapesBatch<'a> {
+    pub delta: &'a [f64],
+    pub words: &'a [crate::law::Prepared],
+    pub load: &'a mut [f64],
+    pub radius: &'a mut [f64],
+}
+
+impl pulp::WithSimd for JkrShapesBatch<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, simd: S) {
+        let n = self
+            .delta
+            .len()
+            .min(self.words.len())
+            .min(self.load.len())
+            .min(self.radius.len());
+        let mut start = 0;
+        while start < n {
+            let len = GROUP.min(n - start);
+            let (mut d, mut live) = ([0.0; GROUP], [false; GROUP]);
+            for j in 0..len {
+                let w = &self.words[start + j];
+                let dbar = (self.delta[start + j] - w[0]) / w[1];
+                live[j] = dbar >= JUMP_OUT_INTERFERENCE;
+                d[j] = if live[j] { dbar } else { 0.0 };
+            }
+            let (a, pbar) = group_roots(simd, &d, live);
+            for j in 0..len {
+                let w = &self.words[start + j];
+                (self.load[start + j], self.radius[start + j]) = if live[j] {
+                    (pbar[j] * w[2], a[j] * w[3])
+                } else {
+                    (0.0, 0.0)
+                };
+            }
+            start += len;
+        }
+    }
+}
+
 /// [`Jkr::state_batch`] as a [`pulp::WithSimd`] operation (compiled for the
 /// widest SIMD the CPU has): per group of [`GROUP`] asperities, masked
 /// Newton iterations until every lane has stopped; each lane takes exactly
@@ -185,51 +287,10 @@ impl pulp::WithSimd for JkrBatch<'_> {
                 d[j] = if live[j] { dbar } else { 0.0 };
             }
             let ok = live;
-            // newton_start, with its square roots in SIMD lanes.
-            let (mut bound, mut fold) = ([0.0; GROUP], [0.0; GROUP]);
-            for j in 0..GROUP {
-                (bound[j], fold[j]) = start_radicands(d[j]);
-            }
-            sqrt_lanes(simd, &mut bound);
-            sqrt_lanes(simd, &mut bound);
-            sqrt_lanes(simd, &mut fold);
-            let mut x = [0.0; GROUP];
-            for j in 0..GROUP {
-                x[j] = start_from_roots(bound[j], fold[j]);
-                bound[j] = d[j] + B * x[j];
-            }
-            sqrt_lanes(simd, &mut bound);
-            sqrt_lanes(simd, &mut bound);
-            for j in 0..GROUP {
-                x[j] = x[j].min(bound[j]);
-            }
-            for _ in 0..MAX_NEWTON {
-                let mut any = false;
-                for j in 0..GROUP {
-                    let (next, more) = newton_step(x[j], d[j]);
-                    x[j] = if live[j] { next } else { x[j] };
-                    live[j] &= more;
-                    any |= live[j];
-                }
-                if !any {
-                    break;
-                }
-            }
-            // load_bar(A) = A^3 - sqrt(6 A^3), the root in SIMD lanes.
-            let (mut a, mut a3, mut root) = ([0.0; GROUP], [0.0; GROUP], [0.0; GROUP]);
-            for j in 0..GROUP {
-                a[j] = radius_from_root(x[j]);
-                a3[j] = a[j] * a[j] * a[j];
-                root[j] = 6.0 * a3[j];
-            }
-            sqrt_lanes(simd, &mut root);
+            let (a, pbar) = group_roots(simd, &d, live);
             let (mut p, mut r) = ([0.0; GROUP], [0.0; GROUP]);
             for j in 0..GROUP {
-                p[j] = if ok[j] {
-                    (a3[j] - root[j]) * s.load
-                } else {
-                    0.0
-                };
+                p[j] = if ok[j] { pbar[j] * s.load } else { 0.0 };
                 r[j] = if ok[j] { a[j] * s.radius } else { 0.0 };
             }
             self.load[start..start + len].copy_from_slice(&p[..len]);

@@ -106,6 +106,10 @@ impl ContactState {
     }
 }
 
+/// Per-summit words of a loading history that do not depend on the current
+/// interference ([`AsperityLaw::prepare_after`]).
+pub type Prepared = [f64; 4];
+
 /// A point where the asperity snaps or is pulled off (defined with the
 /// axisymmetric contacts the laws are built on).
 pub use crate::axisym::Instability;
@@ -257,6 +261,50 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
                 }
             }
         }
+    }
+
+    /// Whether [`prepare_after`](AsperityLaw::prepare_after) saves work
+    /// (a plastic summit's unloading shape): sums over many separations
+    /// after the same peaks then call it once per summit and
+    /// [`state_batch_prepared`](AsperityLaw::state_batch_prepared) per
+    /// separation. Default `false`.
+    fn prepares_history(&self) -> bool {
+        false
+    }
+
+    /// What [`state_after`](AsperityLaw::state_after)`(delta, delta_max[i])`
+    /// needs of `delta_max[i]` (m) alone, into `prepared[i]` (the law's own
+    /// words: for [`plastic::AdhesivePlastic`] the residual interference and
+    /// the JKR scales of the flattened shape). The default leaves it alone.
+    fn prepare_after(&self, delta_max: &[f64], prepared: &mut [Prepared]) {
+        let _ = (delta_max, prepared);
+    }
+
+    /// [`retraction_minimum`](AsperityLaw::retraction_minimum)`(delta_max)`
+    /// bit for bit, from `prepared` = [`prepare_after`](AsperityLaw::prepare_after)`(delta_max)`.
+    /// The default ignores `prepared`.
+    fn retraction_minimum_prepared(
+        &self,
+        delta_max: f64,
+        prepared: &Prepared,
+    ) -> Option<RetractionMinimum> {
+        let _ = prepared;
+        self.retraction_minimum(delta_max)
+    }
+
+    /// [`state_batch`](AsperityLaw::state_batch)`(delta, Some(delta_max))`
+    /// bit for bit, from `prepared` = [`prepare_after`](AsperityLaw::prepare_after)`(delta_max)`.
+    /// The default ignores `prepared`.
+    fn state_batch_prepared(
+        &self,
+        delta: &[f64],
+        delta_max: &[f64],
+        prepared: &[Prepared],
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        let _ = prepared;
+        self.state_batch(delta, Some(delta_max), load, radius);
     }
 
     /// Whether the law has neither hysteresis nor memory:

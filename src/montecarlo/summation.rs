@@ -34,7 +34,7 @@
 use super::population::Population;
 use super::scaling::SummitLaw;
 use crate::error::{finite, Error, Result};
-use crate::law::{Branch, ContactState};
+use crate::law::{Branch, ContactState, Prepared};
 use crate::loading::{
     History, LoadingModel, MethodUsed, Observables, State, Totals, EXTRA_SLOTS, SLOTS,
 };
@@ -352,15 +352,24 @@ impl MonteCarlo {
         // partials[b - first_block][k]: block b at step k (zero if unreached).
         let one = |b: usize| -> Vec<Partial> {
             let (start, end) = (b * SUM_BLOCK, ((b + 1) * SUM_BLOCK).min(n));
+            let prepared = self.prepare_block(start, end, steps, &firsts);
             steps
                 .iter()
                 .zip(&firsts)
                 .map(|(&(d, history), &lo)| {
-                    if lo < end {
-                        self.block(start.max(lo), end, d, history, observables)
-                    } else {
-                        Partial::default()
+                    if lo >= end {
+                        return Partial::default();
                     }
+                    let a = start.max(lo);
+                    let prep = match (&prepared, history) {
+                        (Some(p), History::Retract { closest })
+                            if closest.to_bits() == p.closest.to_bits() && a >= p.from =>
+                        {
+                            Some(&p.words[a - p.from..])
+                        }
+                        _ => None,
+                    };
+                    self.block(a, end, d, history, observables, prep)
                 })
                 .collect()
         };
@@ -381,6 +390,48 @@ impl MonteCarlo {
             states.push(self.finish(d, &total, lo, observables)?);
         }
         Ok(states)
+    }
+
+    /// The law's words of each summit's history after the first retraction
+    /// step's closest approach, for the summits of block `start..end` that
+    /// any retraction step after that approach reaches: computed once here
+    /// instead of once per step ([`AsperityLaw::prepare_after`]: a plastic
+    /// summit's unloading shape). `None` for laws that prepare nothing.
+    fn prepare_block(
+        &self,
+        start: usize,
+        end: usize,
+        steps: &[(f64, History)],
+        firsts: &[usize],
+    ) -> Option<PreparedBlock> {
+        let law = self.law.law();
+        if !law.prepares_history() || law.reversible() {
+            return None;
+        }
+        let closest = steps.iter().find_map(|&(_, h)| match h {
+            History::Retract { closest } => Some(closest),
+            History::Approach => None,
+        })?;
+        let from = steps
+            .iter()
+            .zip(firsts)
+            .filter(|&(&(_, h), &lo)| {
+                lo < end
+                    && matches!(h, History::Retract { closest: c } if c.to_bits() == closest.to_bits())
+            })
+            .map(|(_, &lo)| start.max(lo))
+            .min()?;
+        let z = &self.population.heights()[from..end];
+        let mut delta_max = vec![0.0; z.len()];
+        self.chunk_factors(from, z.len())
+            .interferences(z, closest, &mut delta_max);
+        let mut words = vec![[0.0; 4]; z.len()];
+        law.prepare_after(&delta_max, &mut words);
+        Some(PreparedBlock {
+            closest,
+            from,
+            words,
+        })
     }
 
     /// The state from a step's total; an error if the load is not finite.
@@ -418,7 +469,15 @@ impl MonteCarlo {
     /// Sums over summits `a..b` at separation `d`: per chunk, the
     /// interferences, one batch call of the law, the radius factors, the
     /// lane sums.
-    fn block(&self, a: usize, b: usize, d: f64, history: History, obs: &Observables) -> Partial {
+    fn block(
+        &self,
+        a: usize,
+        b: usize,
+        d: f64,
+        history: History,
+        obs: &Observables,
+        prepared: Option<&[Prepared]>,
+    ) -> Partial {
         let z = &self.population.heights()[a..b];
         let law = self.law.law();
         let closest = match history {
@@ -443,17 +502,33 @@ impl MonteCarlo {
                 load,
                 radius,
             } = &mut buf;
-            law.state_batch(
-                &delta[..n],
-                closest.map(|_| &delta_max[..n]),
-                &mut load[..n],
-                &mut radius[..n],
-            );
+            match (closest, prepared) {
+                (Some(_), Some(p)) => law.state_batch_prepared(
+                    &delta[..n],
+                    &delta_max[..n],
+                    &p[c * CHUNK..c * CHUNK + n],
+                    &mut load[..n],
+                    &mut radius[..n],
+                ),
+                _ => law.state_batch(
+                    &delta[..n],
+                    closest.map(|_| &delta_max[..n]),
+                    &mut load[..n],
+                    &mut radius[..n],
+                ),
+            }
             f.scale(&mut load[..n], &mut radius[..n]);
             acc.add_chunk(&mut buf, n, obs);
         }
         acc.finish()
     }
+}
+
+/// [`MonteCarlo::prepare_block`]'s words, for summits `from..` of a block.
+struct PreparedBlock {
+    closest: f64,
+    from: usize,
+    words: Vec<Prepared>,
 }
 
 /// Per-summit history of a [`MonteCarlo::sequence`].

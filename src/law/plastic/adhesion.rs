@@ -28,7 +28,7 @@ use crate::law::jkr::{
     interference_bar, load_bar, stable_radius_bar, JUMP_OUT_INTERFERENCE, JUMP_OUT_LOAD,
     JUMP_OUT_RADIUS, PULL_OFF_LOAD, PULL_OFF_RADIUS, ZERO_LOAD_RADIUS,
 };
-use crate::law::{AsperityLaw, Branch, ContactState, Control, Instability};
+use crate::law::{AsperityLaw, Branch, ContactState, Control, Instability, Prepared};
 use crate::material::MaugisScales;
 use std::sync::Arc;
 
@@ -248,6 +248,68 @@ impl AsperityLaw for AdhesivePlastic {
             interference: p.interference,
             load: p.load,
         })
+    }
+
+    fn prepares_history(&self) -> bool {
+        true
+    }
+
+    /// `[delta_res, Dbar scale, load scale, radius scale]` of the shape
+    /// after `delta_max` ([`AdhesivePlastic::shape_after`]: the unloading
+    /// law and a cube root, ~90 % of a state's cost); NaN where
+    /// `delta_max < 0` (never in contact).
+    fn prepare_after(&self, delta_max: &[f64], prepared: &mut [Prepared]) {
+        for (&m, p) in delta_max.iter().zip(prepared.iter_mut()) {
+            *p = if m < 0.0 {
+                [f64::NAN; 4]
+            } else {
+                let (u, s) = self.shape_after(m);
+                [u.residual, s.interference, s.load, s.radius]
+            };
+        }
+    }
+
+    /// As `retraction_minimum`: the load-controlled pull-off of the
+    /// prepared shape.
+    fn retraction_minimum_prepared(
+        &self,
+        delta_max: f64,
+        prepared: &Prepared,
+    ) -> Option<crate::law::RetractionMinimum> {
+        if delta_max < 0.0 {
+            return Some(crate::law::RetractionMinimum::MONOTONE);
+        }
+        let [residual, interference, load, _] = *prepared;
+        Some(crate::law::RetractionMinimum {
+            interference: residual + interference_bar(PULL_OFF_RADIUS) * interference,
+            load: PULL_OFF_LOAD * load,
+        })
+    }
+
+    fn state_batch_prepared(
+        &self,
+        delta: &[f64],
+        delta_max: &[f64],
+        prepared: &[Prepared],
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        // The JKR roots of every state on its prepared shape in SIMD lanes
+        // (free where the words are NaN: never in contact), then, as
+        // `state_after`, a state above its peak on its own shape.
+        pulp::Arch::new().dispatch(crate::law::jkr::JkrShapesBatch {
+            delta,
+            words: prepared,
+            load: &mut *load,
+            radius: &mut *radius,
+        });
+        let out = load.iter_mut().zip(radius.iter_mut());
+        for ((&d, &m), (l, r)) in delta.iter().zip(delta_max).zip(out) {
+            if !(m < 0.0) && !(d <= m) {
+                let st = self.attached(d, d.max(m));
+                (*l, *r) = (st.load, st.radius);
+            }
+        }
     }
 
     fn attach_interference(&self) -> f64 {

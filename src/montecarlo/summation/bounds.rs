@@ -54,24 +54,40 @@ impl MonteCarlo {
         let mut abs = vec![0.0; k];
         let (mut delta, mut load) = (vec![0.0; k * CHUNK], vec![0.0; k * CHUNK]);
         let (mut delta_max, mut radius) = ([0.0; CHUNK], [0.0; CHUNK]);
+        // A plastic summit's shape after `closest`, once per chunk.
+        let prepares = !reversible && law.prepares_history();
+        let mut prepared = [[0.0; 4]; CHUNK];
         let mut a = start;
         while a < n {
             let m = CHUNK.min(n - a);
             let zc = &z[a..a + m];
             let f = self.chunk_factors(a, m);
             f.interferences(zc, closest, &mut delta_max[..m]);
+            if prepares {
+                law.prepare_after(&delta_max[..m], &mut prepared[..m]);
+            }
             for (s, &d) in separations.iter().enumerate() {
                 let (dl, ll) = (
                     &mut delta[s * CHUNK..s * CHUNK + m],
                     &mut load[s * CHUNK..s * CHUNK + m],
                 );
                 f.interferences(zc, d, dl);
-                law.state_batch(
-                    dl,
-                    (!reversible).then_some(&delta_max[..m]),
-                    ll,
-                    &mut radius[..m],
-                );
+                if prepares {
+                    law.state_batch_prepared(
+                        dl,
+                        &delta_max[..m],
+                        &prepared[..m],
+                        ll,
+                        &mut radius[..m],
+                    );
+                } else {
+                    law.state_batch(
+                        dl,
+                        (!reversible).then_some(&delta_max[..m]),
+                        ll,
+                        &mut radius[..m],
+                    );
+                }
                 f.scale(ll, &mut radius[..m]);
                 // Summits out of the law's reach add nothing to the sums.
                 let skip = firsts[s].saturating_sub(a).min(m);
@@ -82,7 +98,11 @@ impl MonteCarlo {
                 }
             }
             for i in 0..m {
-                let rm = law.retraction_minimum(delta_max[i])?;
+                let rm = if prepares {
+                    law.retraction_minimum_prepared(delta_max[i], &prepared[i])?
+                } else {
+                    law.retraction_minimum(delta_max[i])?
+                };
                 let [_, load_factor, _] = f.at(i);
                 let rm = crate::law::RetractionMinimum {
                     load: rm.load * load_factor,
