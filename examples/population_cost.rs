@@ -8,7 +8,9 @@
 //! is CPU time. docs/performance.md, "Pull-off populations", quotes it.
 
 use asperity::loading::LoadingProgram;
-use asperity::montecarlo::pull_off::{candidate_separations, population_model, realised_pull_off};
+use asperity::montecarlo::pull_off::{
+    candidate_separations, population_model, pull_off_evaluations, realised_pull_off,
+};
 use asperity::montecarlo::SummitLaw;
 use asperity::study::plan::{Plan, PlanMode};
 use asperity::study::scene::Scene;
@@ -31,7 +33,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let closest = plan.closest_separation(&model)?;
     let program = LoadingProgram::new(plan.start, closest, plan.points)?;
     let summit_law = SummitLaw::fixed(law, plan.surface.radius)?;
-    let (mut draw, mut prune, mut sums, mut candidates) = (0.0, 0.0, 0.0, 0);
+    let (mut draw, mut prune, mut sums, mut candidates, mut evaluations) = (0.0, 0.0, 0.0, 0, 0);
     let mut first = None;
     for k in 0..seeds {
         let t = Instant::now();
@@ -47,6 +49,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let t = Instant::now();
         candidates += candidate_separations(&mc, &program).len();
         prune += t.elapsed().as_secs_f64();
+        evaluations += pull_off_evaluations(&mc, &program);
         let t = Instant::now();
         let v = realised_pull_off(&mc, &program, p.factor)?;
         sums += t.elapsed().as_secs_f64();
@@ -60,11 +63,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
     println!(
         "per population: draw {:.3} ms, pruning {:.3} ms, pull-off (pruning + sums) {:.3} ms, \
-         {:.1} candidate separations",
+         {:.1} candidate separations, {:.0} law evaluations ({:.2} ns each)",
         draw / n * 1e3,
         prune / n * 1e3,
         sums / n * 1e3,
-        candidates as f64 / n
+        candidates as f64 / n,
+        evaluations as f64 / n,
+        sums / evaluations as f64 * 1e9
     );
     Ok(())
 }

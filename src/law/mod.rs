@@ -449,6 +449,16 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         TABLE_LOOKUP_NS
     }
 
+    /// Cost (ns) of one evaluation inside a Monte Carlo sum over sorted
+    /// summits ([`state_batch`](AsperityLaw::state_batch) and the retraction
+    /// bounds), which prices a pull-off population. Default
+    /// [`cost_ns`](AsperityLaw::cost_ns); laws with vectorised or walking
+    /// batches state theirs, measured by `examples/population_cost.rs`
+    /// (docs/performance.md).
+    fn batch_cost_ns(&self) -> f64 {
+        self.cost_ns()
+    }
+
     /// Whether a loading program should evaluate a Chebyshev table of the
     /// law instead ([`AsperityLaw::cost_ns`] above [`TABULATE_ABOVE_NS`]);
     /// never for laws that remember their maximum interference (a table

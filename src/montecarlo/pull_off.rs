@@ -77,11 +77,7 @@ pub fn candidate_separations(mc: &MonteCarlo, program: &LoadingProgram) -> Vec<f
     if k < PRUNE_FROM_POINTS {
         return all;
     }
-    let stride = ((k as f64 / 2.0).sqrt().ceil() as usize).max(2);
-    let mut coarse: Vec<usize> = (0..k).step_by(stride).collect();
-    if coarse.last() != Some(&(k - 1)) {
-        coarse.push(k - 1);
-    }
+    let coarse = coarse_indices(k);
     let at: Vec<f64> = coarse.iter().map(|&i| all[i]).collect();
     let Some(b) = mc.retraction_bounds(&at, program.closest) else {
         return all;
@@ -98,6 +94,41 @@ pub fn candidate_separations(mc: &MonteCarlo, program: &LoadingProgram) -> Vec<f
         .zip(keep)
         .filter_map(|(d, kept)| kept.then_some(d))
         .collect()
+}
+
+/// Indices of the separations where [`candidate_separations`] sums the
+/// loads and bounds of `k` program points: every `ceil(sqrt(k/2))`-th and
+/// the last.
+fn coarse_indices(k: usize) -> Vec<usize> {
+    let stride = ((k as f64 / 2.0).sqrt().ceil() as usize).max(2);
+    let mut coarse: Vec<usize> = (0..k).step_by(stride).collect();
+    if coarse.last() != Some(&(k - 1)) {
+        coarse.push(k - 1);
+    }
+    coarse
+}
+
+/// Law evaluations of [`realised_pull_off`] on `mc` over `program`: the
+/// summits in range at the pruning's coarse separations (when it prunes)
+/// and at the candidates. Deterministic: what prices a population.
+pub fn pull_off_evaluations(mc: &MonteCarlo, program: &LoadingProgram) -> usize {
+    let all = program.separations();
+    let candidates = candidate_separations(mc, program);
+    // (a search that kept every separation is counted without its bounds)
+    let pruned = all.len() >= PRUNE_FROM_POINTS && candidates.len() < all.len();
+    let coarse: usize = if pruned {
+        coarse_indices(all.len())
+            .iter()
+            .map(|&i| mc.summits_in_range(all[i]))
+            .sum()
+    } else {
+        0
+    };
+    coarse
+        + candidates
+            .iter()
+            .map(|&d| mc.summits_in_range(d))
+            .sum::<usize>()
 }
 
 /// The retraction leg of one population over `program`: `(separation,

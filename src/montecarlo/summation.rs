@@ -144,6 +144,12 @@ impl MonteCarlo {
         &self.law
     }
 
+    /// Summits the law is evaluated for at separation `d` (m): those within
+    /// its reach (all of them for a law without a cutoff).
+    pub fn summits_in_range(&self, d: f64) -> usize {
+        self.population.len() - self.first_in_range(d)
+    }
+
     /// Index of the first summit that can contribute at separation `d`.
     fn first_in_range(&self, d: f64) -> usize {
         self.first_above(d, self.law.law().cutoff_interference())

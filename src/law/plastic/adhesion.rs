@@ -333,6 +333,12 @@ impl AsperityLaw for AdhesivePlastic {
         370.0
     }
 
+    /// Measured on the same populations with the shapes prepared once per
+    /// summit ([`AsperityLaw::prepare_after`]): 28.7 ns per evaluation.
+    fn batch_cost_ns(&self) -> f64 {
+        30.0
+    }
+
     fn breakpoints(&self, branch: Branch) -> Vec<f64> {
         let mut b = self.loading.breakpoint_interferences();
         if branch == Branch::Retract {
