@@ -216,7 +216,7 @@ pub fn erfcx(x: f64) -> f64 {
 
 /// Inverse upper tail: `s` with `Q(s) = q`, for `q` in `(0, 1)`; `+inf` at
 /// `q = 0`, `-inf` at `q = 1`, NaN outside: `s = -Phi^-1(q)` by
-/// [`ppnd16`] (no cancellation: its central form takes `q - 1/2`, its
+/// Wichura's AS 241 (`ppnd16`; no cancellation: its central form takes `q - 1/2`, its
 /// tails `min(q, 1 - q)`, both exact), polished by one Halley step on the
 /// accurate [`tail`] where `min(q, 1 - q) < 1e-10`.
 pub fn inverse_tail(q: f64) -> f64 {
@@ -249,7 +249,7 @@ pub fn inverse_tail(q: f64) -> f64 {
 }
 
 /// Quantile `Phi^-1(p)`: `s` with `P(S <= s) = p`, accurate in both tails
-/// ([`ppnd16`]; `-inf`/`+inf` at 0/1, NaN outside `[0, 1]`).
+/// (Wichura's AS 241; `-inf`/`+inf` at 0/1, NaN outside `[0, 1]`).
 pub fn quantile(p: f64) -> f64 {
     -inverse_tail(p)
 }
