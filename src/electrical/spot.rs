@@ -254,7 +254,7 @@ impl SpotResistance {
     /// vectorises (the nodes of a quadrature panel).
     pub fn conductance_batch(&self, a: &[f64], out: &mut [f64]) {
         // A `WithSimd` operation: compiled for the CPU's widest vectors.
-        pulp::Arch::new().dispatch(ConductanceBatch { spot: self, a, out });
+        crate::numeric::simd::arch().dispatch(ConductanceBatch { spot: self, a, out });
     }
 
     /// Conductance `1/R` of a spot of radius `a` (S); 0 for `a <= 0` (no

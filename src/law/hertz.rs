@@ -97,7 +97,7 @@ impl AsperityLaw for Hertz {
         radius: &mut [f64],
     ) {
         let (k, sr) = (self.stiffness, self.sqrt_radius);
-        pulp::Arch::new().dispatch(
+        crate::numeric::simd::arch().dispatch(
             #[inline(always)]
             || {
                 for ((&d, l), a) in delta.iter().zip(load.iter_mut()).zip(radius.iter_mut()) {
@@ -108,6 +108,12 @@ impl AsperityLaw for Hertz {
                 }
             },
         );
+    }
+
+    /// `(K sqrt(R), sqrt(R))`: `P = K sqrt(R) d^(3/2)` as `k * d * sqrt(d)`,
+    /// `a = sqrt(R d)` as `sqrt(R) * sqrt(d)`, as in the batch above.
+    fn root_monomials(&self) -> Option<(f64, f64)> {
+        Some((self.stiffness, self.sqrt_radius))
     }
 
     /// The branch is ignored: no hysteresis, no memory.

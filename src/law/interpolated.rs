@@ -678,7 +678,7 @@ impl AsperityLaw for InterpolatedLaw {
         load: &mut [f64],
         radius: &mut [f64],
     ) {
-        pulp::Arch::new().dispatch(TableBatch {
+        crate::numeric::simd::arch().dispatch(TableBatch {
             law: self,
             delta,
             delta_max,

@@ -387,7 +387,7 @@ impl AsperityLaw for Jkr {
         load: &mut [f64],
         radius: &mut [f64],
     ) {
-        pulp::Arch::new().dispatch(JkrBatch {
+        crate::numeric::simd::arch().dispatch(JkrBatch {
             scales: self.scales,
             delta,
             delta_max,

@@ -307,6 +307,14 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         self.state_batch(delta, Some(delta_max), load, radius);
     }
 
+    /// `Some((k, c))` when the state is `P = k d sqrt(d)`, `a = c sqrt(d)`
+    /// with `d = max(delta, 0)` on both branches, evaluated in exactly that
+    /// order ([`Hertz`]): the Monte Carlo sums then fuse the state into
+    /// their lane sums (one pass over the heights). Default `None`.
+    fn root_monomials(&self) -> Option<(f64, f64)> {
+        None
+    }
+
     /// Whether the law has neither hysteresis nor memory:
     /// [`state_after`](AsperityLaw::state_after)`(delta, delta_max)` equals
     /// [`state`](AsperityLaw::state)`(delta, Approach)` bit for bit for every

@@ -535,7 +535,7 @@ impl AsperityLaw for Tabulated {
         // long-range law) in vector lanes, the rest (radius NaN after the
         // first pass) by the walking search.
         let far = FarField::of(self);
-        pulp::Arch::new().dispatch(FarFieldBatch {
+        crate::numeric::simd::arch().dispatch(FarFieldBatch {
             far: &far,
             delta,
             delta_max,

@@ -498,6 +498,14 @@ impl MonteCarlo {
         for (c, zc) in z.chunks(CHUNK).enumerate() {
             let n = zc.len();
             let f = self.chunk_factors(a + c * CHUNK, n);
+            if let (None, ChunkFactors::Uniform([scale, 1.0, 1.0]), Some((k, c)), true) =
+                (closest, f, law.root_monomials(), obs.extras().is_empty())
+            {
+                // Hertz at the law's own radius: the state inside the lane
+                // sums, one pass over the heights.
+                acc.add_root_monomials(zc, d, scale, k, c);
+                continue;
+            }
             f.interferences(zc, d, &mut buf.delta[..n]);
             if let Some(m) = closest {
                 f.interferences(zc, m, &mut buf.delta_max[..n]);
@@ -585,7 +593,7 @@ impl ChunkFactors<'_> {
     #[inline]
     fn interferences(&self, z: &[f64], d: f64, out: &mut [f64]) {
         match *self {
-            ChunkFactors::Uniform(f) => pulp::Arch::new().dispatch(
+            ChunkFactors::Uniform(f) => crate::numeric::simd::arch().dispatch(
                 #[inline(always)]
                 || {
                     for (o, &zi) in out.iter_mut().zip(z) {
@@ -608,7 +616,7 @@ impl ChunkFactors<'_> {
             // Summits of the law's own radius: nothing to scale (a pass
             // over the chunk saved).
             ChunkFactors::Uniform([_, 1.0, 1.0]) => {}
-            ChunkFactors::Uniform(f) => pulp::Arch::new().dispatch(
+            ChunkFactors::Uniform(f) => crate::numeric::simd::arch().dispatch(
                 #[inline(always)]
                 || {
                     for (l, r) in load.iter_mut().zip(radius.iter_mut()) {
@@ -677,6 +685,24 @@ impl Accumulator {
         lane_sums(&buf.load[..padded], &buf.radius[..padded], &mut self.lanes);
     }
 
+    /// [`add_chunk`](Self::add_chunk) of the states `P = k d sqrt(d)`,
+    /// `a = c sqrt(d)`, `d = max((z - sep) scale, 0)` of heights `z`
+    /// ([`AsperityLaw::root_monomials`](crate::law::AsperityLaw::root_monomials)),
+    /// computed in the same pass: the same lanes, the same operations, so
+    /// the same bits (the padding the chunk path adds is `+0.0` to lanes
+    /// that hold non-negative sums, which changes nothing).
+    #[inline]
+    fn add_root_monomials(&mut self, z: &[f64], sep: f64, scale: f64, k: f64, c: f64) {
+        crate::numeric::simd::arch().dispatch(RootMonomialSums {
+            z,
+            sep,
+            scale,
+            k,
+            c,
+            lanes: &mut self.lanes,
+        });
+    }
+
     /// Lanes combined in a fixed tree: `((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7))`.
     fn finish(&self) -> Partial {
         let mut p = self.extras;
@@ -695,7 +721,7 @@ impl Accumulator {
 /// at the widest SIMD the CPU has ([`pulp::Arch`]).
 #[inline]
 fn lane_sums(load: &[f64], radius: &[f64], lanes: &mut [[f64; LANES]; 6]) {
-    pulp::Arch::new().dispatch(LaneSums {
+    crate::numeric::simd::arch().dispatch(LaneSums {
         load,
         radius,
         lanes,
@@ -804,5 +830,68 @@ impl MonteCarlo {
     pub fn top_height(&self) -> f64 {
         let z = self.population.heights();
         z[z.len() - 1]
+    }
+}
+
+/// [`Accumulator::add_root_monomials`] as a [`pulp::WithSimd`] operation.
+struct RootMonomialSums<'a> {
+    z: &'a [f64],
+    sep: f64,
+    scale: f64,
+    k: f64,
+    c: f64,
+    lanes: &'a mut [[f64; LANES]; 6],
+}
+
+impl pulp::WithSimd for RootMonomialSums<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) {
+        let mut acc = *self.lanes;
+        let (sep, scale, k, c) = (self.sep, self.scale, self.k, self.c);
+        // As `Hertz::state_batch`, then as `LaneSums`, a lane group at a
+        // time (the remainder padded with free summits: +0.0 everywhere).
+        let mut groups = self.z.chunks_exact(LANES);
+        for g in &mut groups {
+            root_monomial_group(&mut acc, g.try_into().expect("LANES"), sep, scale, k, c);
+        }
+        let rest = groups.remainder();
+        if !rest.is_empty() {
+            let mut pad = [f64::NEG_INFINITY; LANES];
+            pad[..rest.len()].copy_from_slice(rest);
+            root_monomial_group(&mut acc, &pad, sep, scale, k, c);
+        }
+        *self.lanes = acc;
+    }
+}
+
+/// One lane group of [`RootMonomialSums`].
+#[inline(always)]
+fn root_monomial_group(
+    acc: &mut [[f64; LANES]; 6],
+    z: &[f64; LANES],
+    sep: f64,
+    scale: f64,
+    k: f64,
+    c: f64,
+) {
+    let (mut p, mut a) = ([0.0; LANES], [0.0; LANES]);
+    for j in 0..LANES {
+        let d = (z[j] - sep) * scale;
+        let d = if d > 0.0 { d } else { 0.0 };
+        let s = d.sqrt();
+        p[j] = k * d * s;
+        a[j] = c * s;
+    }
+    for j in 0..LANES {
+        let area = PI * a[j] * a[j];
+        let n = if a[j] > 0.0 { 1.0 } else { 0.0 };
+        acc[0][j] += p[j];
+        acc[1][j] += area;
+        acc[2][j] += n;
+        acc[3][j] += p[j] * p[j];
+        acc[4][j] += area * area;
+        acc[5][j] += n;
     }
 }

@@ -621,6 +621,27 @@ fn sequence_reproduces_the_curve_bit_for_bit() {
     }
 }
 
+/// Hertz at its own radius is summed in one fused pass
+/// (`Accumulator::add_root_monomials`); the sequence path sums
+/// `law.state` summit by summit through the chunk buffers: the same bits,
+/// also with a last lane group that is not full (20,003 summits).
+#[test]
+fn fused_hertz_sums_equal_the_summit_by_summit_path() {
+    for n in [20_000, 20_003, 5] {
+        let mc = MonteCarlo::new(population(n, 7), hertz()).unwrap();
+        let program = LoadingProgram::new(5.0 * SIGMA, -1.5 * SIGMA, 25).unwrap();
+        let curve = mc.curve(&program, &Observables::ALL).unwrap();
+        let seps = program.separations();
+        let path: Vec<f64> = seps.iter().rev().chain(seps.iter()).copied().collect();
+        let seq = mc.sequence(&path, &Observables::ALL).unwrap();
+        let expect: Vec<&State> = curve.approach.iter().rev().chain(&curve.retract).collect();
+        assert!(curve.approach.iter().any(|s| s.load().unwrap() > 0.0));
+        for (a, b) in seq.iter().zip(expect) {
+            assert_eq!(a, b, "{n} summits");
+        }
+    }
+}
+
 /// Brute force with the threshold rule, summit by summit: with `a_i`,
 /// `b_i` its attach and detach interferences, the set of attached heights
 /// after separations `d_1..d_t` is `z >= z*(t)`, `z*(t) = min(max(z*(t-1),

@@ -35,7 +35,7 @@ mod tests {
             .chain([f64::NAN, -1.0])
             .collect();
         let mut y = x.clone();
-        pulp::Arch::new().dispatch(Roots(&mut y));
+        crate::numeric::simd::arch().dispatch(Roots(&mut y));
         for (a, b) in x.iter().zip(&y) {
             let s = a.sqrt();
             assert!(

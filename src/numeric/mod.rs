@@ -10,3 +10,4 @@ pub mod mix;
 pub mod pchip;
 pub mod quadrature;
 pub mod roots;
+pub mod simd;

@@ -54,7 +54,7 @@ pub fn pdf(h: f64) -> f64 {
 pub fn pdf_batch(h: &[f64], out: &mut [f64]) {
     // A `WithSimd` operation: compiled for the CPU's widest vectors
     // (AVX2/AVX-512); passed to `dispatch` as a closure it stays scalar.
-    pulp::Arch::new().dispatch(PdfBatch { h, out });
+    crate::numeric::simd::arch().dispatch(PdfBatch { h, out });
 }
 
 struct PdfBatch<'a> {

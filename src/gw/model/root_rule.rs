@@ -231,7 +231,7 @@ impl GwModel {
         obs: &Observables,
         scratch: &mut Scratch,
     ) -> Vec<Sums> {
-        pulp::Arch::new().dispatch(Pass {
+        crate::numeric::simd::arch().dispatch(Pass {
             model: self,
             plans,
             pending,

@@ -297,7 +297,7 @@ impl AsperityLaw for AdhesivePlastic {
         // The JKR roots of every state on its prepared shape in SIMD lanes
         // (free where the words are NaN: never in contact), then, as
         // `state_after`, a state above its peak on its own shape.
-        pulp::Arch::new().dispatch(crate::law::jkr::JkrShapesBatch {
+        crate::numeric::simd::arch().dispatch(crate::law::jkr::JkrShapesBatch {
             delta,
             words: prepared,
             load: &mut *load,

@@ -59,6 +59,10 @@ pub struct Summary {
     pub model_error: Option<ModelErrorSummary>,
     /// Wall-clock time of the run (s).
     pub seconds: f64,
+    /// The SIMD instruction set the vector passes ran on (`avx512`, `avx2`
+    /// or `scalar`; `ASPERITY_SIMD` narrows it, [`crate::numeric::simd`]):
+    /// the timings depend on it, the numbers do not.
+    pub simd: &'static str,
     /// Law evaluations spent by quadrature.
     pub evaluations: usize,
     /// The explicit population beside the integral, if asked for.
@@ -361,6 +365,7 @@ impl Summary {
                 listed_loads: m.listed_loads.clone(),
             }),
             seconds: results.seconds,
+            simd: crate::numeric::simd::arch_name(),
             evaluations: results.evaluations,
             montecarlo: results
                 .montecarlo
