@@ -34,15 +34,14 @@
 use super::population::Population;
 use super::scaling::SummitLaw;
 use crate::error::{finite, Error, Result};
-use crate::law::{Branch, ContactState, Prepared};
-use crate::loading::{
-    History, LoadingModel, MethodUsed, Observables, State, Totals, EXTRA_SLOTS, SLOTS,
-};
+use crate::law::{Branch, Prepared};
+use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
 use rayon::prelude::*;
 
 mod bounds;
+mod lanes;
 pub use bounds::RetractionBounds;
-use std::f64::consts::PI;
+use lanes::{Accumulator, Buffers};
 use std::sync::Arc;
 
 /// Summits per summation block (fixed: part of the reduction order).
@@ -635,136 +634,6 @@ impl ChunkFactors<'_> {
     }
 }
 
-/// Stack buffers of one chunk.
-struct Buffers {
-    delta: [f64; CHUNK],
-    delta_max: [f64; CHUNK],
-    load: [f64; CHUNK],
-    radius: [f64; CHUNK],
-}
-
-impl Buffers {
-    fn new() -> Self {
-        Buffers {
-            delta: [0.0; CHUNK],
-            delta_max: [0.0; CHUNK],
-            load: [0.0; CHUNK],
-            radius: [0.0; CHUNK],
-        }
-    }
-}
-
-/// The lane sums of one block: `lanes[k][j]` for `k` = load, area, count
-/// and their squares, lane `j`; further observables in `extras`, summed in
-/// summit order.
-#[derive(Default)]
-struct Accumulator {
-    lanes: [[f64; LANES]; 6],
-    extras: Partial,
-}
-
-impl Accumulator {
-    /// Adds the first `n` summits of a chunk (load and radius, already
-    /// scaled), padding the last lane group with free summits (exact
-    /// zeros).
-    #[inline]
-    fn add_chunk(&mut self, buf: &mut Buffers, n: usize, obs: &Observables) {
-        if !obs.extras().is_empty() {
-            for (&load, &radius) in buf.load[..n].iter().zip(&buf.radius[..n]) {
-                let st = ContactState { load, radius };
-                for (k, e) in obs.extras().iter().take(EXTRA_SLOTS).enumerate() {
-                    let v = e.value(&st);
-                    self.extras.sum[3 + k] += v;
-                    self.extras.sq[3 + k] += v * v;
-                }
-            }
-        }
-        let padded = n.next_multiple_of(LANES);
-        buf.load[n..padded].fill(0.0);
-        buf.radius[n..padded].fill(0.0);
-        lane_sums(&buf.load[..padded], &buf.radius[..padded], &mut self.lanes);
-    }
-
-    /// [`add_chunk`](Self::add_chunk) of the states `P = k d sqrt(d)`,
-    /// `a = c sqrt(d)`, `d = max((z - sep) scale, 0)` of heights `z`
-    /// ([`AsperityLaw::root_monomials`](crate::law::AsperityLaw::root_monomials)),
-    /// computed in the same pass: the same lanes, the same operations, so
-    /// the same bits (the padding the chunk path adds is `+0.0` to lanes
-    /// that hold non-negative sums, which changes nothing).
-    #[inline]
-    fn add_root_monomials(&mut self, z: &[f64], sep: f64, scale: f64, k: f64, c: f64) {
-        crate::numeric::simd::arch().dispatch(RootMonomialSums {
-            z,
-            sep,
-            scale,
-            k,
-            c,
-            lanes: &mut self.lanes,
-        });
-    }
-
-    /// Lanes combined in a fixed tree: `((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7))`.
-    fn finish(&self) -> Partial {
-        let mut p = self.extras;
-        let tree =
-            |l: &[f64; LANES]| ((l[0] + l[1]) + (l[2] + l[3])) + ((l[4] + l[5]) + (l[6] + l[7]));
-        for k in 0..3 {
-            p.sum[k] = tree(&self.lanes[k]);
-            p.sq[k] = tree(&self.lanes[3 + k]);
-        }
-        p
-    }
-}
-
-/// Adds `P`, `pi a^2`, `[a > 0]` and their squares of each summit to lane
-/// `i mod LANES` (lengths multiples of [`LANES`]); branch-free, vectorised
-/// at the widest SIMD the CPU has ([`pulp::Arch`]).
-#[inline]
-fn lane_sums(load: &[f64], radius: &[f64], lanes: &mut [[f64; LANES]; 6]) {
-    crate::numeric::simd::arch().dispatch(LaneSums {
-        load,
-        radius,
-        lanes,
-    });
-}
-
-/// [`lane_sums`] as a [`pulp::WithSimd`] operation: its body is compiled
-/// inside the target-feature context (a closure passed to `dispatch` was
-/// left out of line and ran as 128-bit SSE2 code with its accumulators on
-/// the stack: 40 % of a Hertz sum's time).
-struct LaneSums<'a> {
-    load: &'a [f64],
-    radius: &'a [f64],
-    lanes: &'a mut [[f64; LANES]; 6],
-}
-
-impl pulp::WithSimd for LaneSums<'_> {
-    type Output = ();
-
-    #[inline(always)]
-    fn with_simd<S: pulp::Simd>(self, _simd: S) {
-        let mut acc = *self.lanes;
-        for (l, r) in self
-            .load
-            .chunks_exact(LANES)
-            .zip(self.radius.chunks_exact(LANES))
-        {
-            for j in 0..LANES {
-                let (p, a) = (l[j], r[j]);
-                let area = PI * a * a;
-                let c = if a > 0.0 { 1.0 } else { 0.0 };
-                acc[0][j] += p;
-                acc[1][j] += area;
-                acc[2][j] += c;
-                acc[3][j] += p * p;
-                acc[4][j] += area * area;
-                acc[5][j] += c;
-            }
-        }
-        *self.lanes = acc;
-    }
-}
-
 impl LoadingModel for MonteCarlo {
     /// Totals at separation `d` (m) after `history`.
     ///
@@ -830,68 +699,5 @@ impl MonteCarlo {
     pub fn top_height(&self) -> f64 {
         let z = self.population.heights();
         z[z.len() - 1]
-    }
-}
-
-/// [`Accumulator::add_root_monomials`] as a [`pulp::WithSimd`] operation.
-struct RootMonomialSums<'a> {
-    z: &'a [f64],
-    sep: f64,
-    scale: f64,
-    k: f64,
-    c: f64,
-    lanes: &'a mut [[f64; LANES]; 6],
-}
-
-impl pulp::WithSimd for RootMonomialSums<'_> {
-    type Output = ();
-
-    #[inline(always)]
-    fn with_simd<S: pulp::Simd>(self, _simd: S) {
-        let mut acc = *self.lanes;
-        let (sep, scale, k, c) = (self.sep, self.scale, self.k, self.c);
-        // As `Hertz::state_batch`, then as `LaneSums`, a lane group at a
-        // time (the remainder padded with free summits: +0.0 everywhere).
-        let mut groups = self.z.chunks_exact(LANES);
-        for g in &mut groups {
-            root_monomial_group(&mut acc, g.try_into().expect("LANES"), sep, scale, k, c);
-        }
-        let rest = groups.remainder();
-        if !rest.is_empty() {
-            let mut pad = [f64::NEG_INFINITY; LANES];
-            pad[..rest.len()].copy_from_slice(rest);
-            root_monomial_group(&mut acc, &pad, sep, scale, k, c);
-        }
-        *self.lanes = acc;
-    }
-}
-
-/// One lane group of [`RootMonomialSums`].
-#[inline(always)]
-fn root_monomial_group(
-    acc: &mut [[f64; LANES]; 6],
-    z: &[f64; LANES],
-    sep: f64,
-    scale: f64,
-    k: f64,
-    c: f64,
-) {
-    let (mut p, mut a) = ([0.0; LANES], [0.0; LANES]);
-    for j in 0..LANES {
-        let d = (z[j] - sep) * scale;
-        let d = if d > 0.0 { d } else { 0.0 };
-        let s = d.sqrt();
-        p[j] = k * d * s;
-        a[j] = c * s;
-    }
-    for j in 0..LANES {
-        let area = PI * a[j] * a[j];
-        let n = if a[j] > 0.0 { 1.0 } else { 0.0 };
-        acc[0][j] += p[j];
-        acc[1][j] += area;
-        acc[2][j] += n;
-        acc[3][j] += p[j] * p[j];
-        acc[4][j] += area * area;
-        acc[5][j] += n;
     }
 }
