@@ -40,7 +40,7 @@ def main():
     print("| sigma/z0 | calibrated (LJ) P_c [uN] | Maugis-Dugdale | JKR | DMT | one switch, LJ: mean [uN] | p05 [uN] | carriers |")
     print("|---|---|---|---|---|---|---|---|")
     for sigma in [0.3e-9, 1e-9, 3e-9, 5e-9, 10e-9]:
-        cal = run(sigma, "calibrated", 20)
+        cal = run(sigma, "calibrated", 100)
         row = [f"{sigma / Z0:.3g}", f"{cal['pull_off_load'] * 1e6:.4g}"]
         for law in ["maugis", "jkr", "dmt"]:
             v = run(sigma, law, 2)
