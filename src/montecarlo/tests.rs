@@ -607,18 +607,27 @@ fn bad_evaluation_input_names_the_field() {
 
 // ---------------------------------------------------------------- sequences
 
-#[test]
-fn sequence_reproduces_the_curve_bit_for_bit() {
-    let mc = MonteCarlo::new(population(20_000, 6), jkr()).unwrap();
-    let program = LoadingProgram::new(5.0 * SIGMA, -0.5 * SIGMA, 25).unwrap();
-    let curve = mc.curve(&program, &Observables::ALL).unwrap();
+/// `mc.sequence` down the program's separations and back up equals
+/// `mc.curve` on the program, state for state (bit for bit); returns the
+/// curve's approach leg.
+fn assert_sequence_is_the_curve(mc: &MonteCarlo, program: &LoadingProgram) -> Vec<State> {
+    let curve = mc.curve(program, &Observables::ALL).unwrap();
     let seps = program.separations();
     let path: Vec<f64> = seps.iter().rev().chain(seps.iter()).copied().collect();
     let seq = mc.sequence(&path, &Observables::ALL).unwrap();
     let expect: Vec<&State> = curve.approach.iter().rev().chain(&curve.retract).collect();
+    assert_eq!(seq.len(), expect.len());
     for (a, b) in seq.iter().zip(expect) {
         assert_eq!(a, b);
     }
+    curve.approach
+}
+
+#[test]
+fn sequence_reproduces_the_curve_bit_for_bit() {
+    let mc = MonteCarlo::new(population(20_000, 6), jkr()).unwrap();
+    let program = LoadingProgram::new(5.0 * SIGMA, -0.5 * SIGMA, 25).unwrap();
+    assert_sequence_is_the_curve(&mc, &program);
 }
 
 /// Hertz at its own radius is summed in one fused pass
@@ -630,15 +639,11 @@ fn fused_hertz_sums_equal_the_summit_by_summit_path() {
     for n in [20_000, 20_003, 5] {
         let mc = MonteCarlo::new(population(n, 7), hertz()).unwrap();
         let program = LoadingProgram::new(5.0 * SIGMA, -1.5 * SIGMA, 25).unwrap();
-        let curve = mc.curve(&program, &Observables::ALL).unwrap();
-        let seps = program.separations();
-        let path: Vec<f64> = seps.iter().rev().chain(seps.iter()).copied().collect();
-        let seq = mc.sequence(&path, &Observables::ALL).unwrap();
-        let expect: Vec<&State> = curve.approach.iter().rev().chain(&curve.retract).collect();
-        assert!(curve.approach.iter().any(|s| s.load().unwrap() > 0.0));
-        for (a, b) in seq.iter().zip(expect) {
-            assert_eq!(a, b, "{n} summits");
-        }
+        let approach = assert_sequence_is_the_curve(&mc, &program);
+        assert!(
+            approach.iter().any(|s| s.load().unwrap() > 0.0),
+            "{n} summits"
+        );
     }
 }
 

@@ -124,15 +124,7 @@ impl pulp::WithSimd for LaneSums<'_> {
             .zip(self.radius.chunks_exact(LANES))
         {
             for j in 0..LANES {
-                let (p, a) = (l[j], r[j]);
-                let area = PI * a * a;
-                let c = if a > 0.0 { 1.0 } else { 0.0 };
-                acc[0][j] += p;
-                acc[1][j] += area;
-                acc[2][j] += c;
-                acc[3][j] += p * p;
-                acc[4][j] += area * area;
-                acc[5][j] += c;
+                add_state(&mut acc, j, l[j], r[j]);
             }
         }
         *self.lanes = acc;
@@ -191,13 +183,20 @@ fn root_monomial_group(
         a[j] = c * s;
     }
     for j in 0..LANES {
-        let area = PI * a[j] * a[j];
-        let n = if a[j] > 0.0 { 1.0 } else { 0.0 };
-        acc[0][j] += p[j];
-        acc[1][j] += area;
-        acc[2][j] += n;
-        acc[3][j] += p[j] * p[j];
-        acc[4][j] += area * area;
-        acc[5][j] += n;
+        add_state(acc, j, p[j], a[j]);
     }
+}
+
+/// Adds load `p` (N), area `pi a^2` and count `[a > 0]` of one summit
+/// (radius `a`, m) and their squares to lane `j`.
+#[inline(always)]
+fn add_state(acc: &mut [[f64; LANES]; 6], j: usize, p: f64, a: f64) {
+    let area = PI * a * a;
+    let c = if a > 0.0 { 1.0 } else { 0.0 };
+    acc[0][j] += p;
+    acc[1][j] += area;
+    acc[2][j] += c;
+    acc[3][j] += p * p;
+    acc[4][j] += area * area;
+    acc[5][j] += c;
 }
