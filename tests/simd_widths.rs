@@ -70,3 +70,23 @@ fn every_simd_width_gives_the_same_bits() {
         }
     }
 }
+
+/// A value the variable does not know is not silently dropped: the run
+/// says which set it used instead, in a warning.
+#[test]
+fn an_unknown_simd_request_is_named_in_a_warning() {
+    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args(["run", "examples/scenes/hertz-exponential.toml", "--json"])
+        .env("ASPERITY_SIMD", "sse9")
+        .output()
+        .expect("asperity runs");
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let warnings = v["warnings"].as_array().expect("warnings");
+    assert!(
+        warnings.iter().any(|w| w
+            .as_str()
+            .is_some_and(|w| w.contains("ASPERITY_SIMD=sse9 not followed"))),
+        "{warnings:?}"
+    );
+}

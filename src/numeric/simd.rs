@@ -1,7 +1,9 @@
 //! The SIMD instruction set every vectorised pass dispatches to: the widest
 //! the CPU has (`pulp::Arch::new()`: AVX-512, else AVX2 + FMA, else
 //! scalar), or a narrower one named by the environment variable
-//! `ASPERITY_SIMD` (`avx2` or `scalar`; read once per process), so that a
+//! `ASPERITY_SIMD` (`avx2` or `scalar`; `avx512` and `native` ask for the
+//! widest; read once per process; a value not followed is reported in the
+//! run's warnings, [`ignored_request`]), so that a
 //! machine with AVX-512 can measure the AVX2 code and check that every
 //! width gives the same bits (the passes never reorder additions across
 //! lanes: `tests/simd_widths.rs`).
@@ -23,6 +25,29 @@ pub fn arch() -> pulp::Arch {
             "avx2" => pulp::x86::V3::try_new().map_or_else(pulp::Arch::new, pulp::Arch::V3),
             _ => pulp::Arch::new(),
         }
+    })
+}
+
+/// Why `ASPERITY_SIMD` was not followed, when it is set to a value that
+/// is not `avx2`, `scalar`, `avx512` or `native` (any case), or names a set
+/// the CPU lacks: the run then uses [`arch_name`]'s set, and says so.
+pub fn ignored_request() -> Option<String> {
+    let wanted = std::env::var(SIMD_VARIABLE).ok()?;
+    let lower = wanted.to_ascii_lowercase();
+    let followed = match lower.as_str() {
+        "scalar" => true,
+        "avx2" => arch_name() == "avx2",
+        "avx512" => arch_name() == "avx512",
+        "" | "native" => return None,
+        _ => false,
+    };
+    (!followed).then(|| {
+        format!(
+            "{SIMD_VARIABLE}={wanted} not followed (allowed: avx2, scalar, avx512, native, or \
+             unset for the widest set the CPU has): the vector passes ran on {} (the numbers are the same \
+             at every width, only the time differs)",
+            arch_name()
+        )
     })
 }
 

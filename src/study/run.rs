@@ -389,6 +389,7 @@ impl Plan {
             .map(|s| s.evaluations)
             .sum();
         let mut warnings = super::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
+        warnings.extend(crate::numeric::simd::ignored_request());
         let max_load = curve.approach.first().and_then(|s| s.load());
         let model_error = super::model_error::measure(
             self,
