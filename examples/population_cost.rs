@@ -47,9 +47,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         )?;
         draw += t.elapsed().as_secs_f64();
         let t = Instant::now();
-        candidates += candidate_separations(&mc, &program).len();
+        let found = candidate_separations(&mc, &program);
         prune += t.elapsed().as_secs_f64();
-        evaluations += pull_off_evaluations(&mc, &program);
+        candidates += found.len();
+        evaluations += pull_off_evaluations(&mc, &program, &found);
         let t = Instant::now();
         let v = realised_pull_off(&mc, &program, p.factor)?;
         sums += t.elapsed().as_secs_f64();

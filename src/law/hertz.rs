@@ -101,10 +101,7 @@ impl AsperityLaw for Hertz {
             #[inline(always)]
             || {
                 for ((&d, l), a) in delta.iter().zip(load.iter_mut()).zip(radius.iter_mut()) {
-                    let d = if d > 0.0 { d } else { 0.0 };
-                    let s = d.sqrt();
-                    *l = k * d * s;
-                    *a = sr * s;
+                    (*l, *a) = root_monomial_state(d, k, sr);
                 }
             },
         );
@@ -167,6 +164,17 @@ impl AsperityLaw for Hertz {
             area: vec![(PI * self.radius, 1.0)],
         })
     }
+}
+
+/// `(P, a) = (k d sqrt(d), c sqrt(d))` with `d = max(delta, 0)`, branch-free
+/// (it vectorises): Hertz's state from `(k, c)` =
+/// [`AsperityLaw::root_monomials`], the one formula of the batch and of the
+/// Monte Carlo sums that fuse it (so they agree bit for bit).
+#[inline(always)]
+pub fn root_monomial_state(delta: f64, k: f64, c: f64) -> (f64, f64) {
+    let d = if delta > 0.0 { delta } else { 0.0 };
+    let s = d.sqrt();
+    (k * d * s, c * s)
 }
 
 #[cfg(test)]

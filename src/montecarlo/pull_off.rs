@@ -108,12 +108,16 @@ fn coarse_indices(k: usize) -> Vec<usize> {
     coarse
 }
 
-/// Law evaluations of [`realised_pull_off`] on `mc` over `program`: the
-/// summits in range at the pruning's coarse separations (when it prunes)
-/// and at the candidates. Deterministic: what prices a population.
-pub fn pull_off_evaluations(mc: &MonteCarlo, program: &LoadingProgram) -> usize {
+/// Law evaluations of [`realised_pull_off`] on `mc` over `program`, given
+/// its `candidates` ([`candidate_separations`]): the summits in range at
+/// the pruning's coarse separations (when it prunes) and at the
+/// candidates. Deterministic: what prices a population.
+pub fn pull_off_evaluations(
+    mc: &MonteCarlo,
+    program: &LoadingProgram,
+    candidates: &[f64],
+) -> usize {
     let all = program.separations();
-    let candidates = candidate_separations(mc, program);
     // (a search that kept every separation is counted without its bounds)
     let pruned = all.len() >= PRUNE_FROM_POINTS && candidates.len() < all.len();
     let coarse: usize = if pruned {

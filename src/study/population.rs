@@ -76,19 +76,21 @@ fn summit_law(
 }
 
 /// Estimated CPU seconds of one population over `program`, priced on the
-/// first one, `first`: its draw, and its pull-off search's law evaluations
+/// first one, `first` (with its `candidates`): its draw, and its pull-off
+/// search's law evaluations
 /// ([`pull_off_evaluations`], deterministic) at the law's batch cost.
 fn cost_per_population(
     p: &PopulationPlan,
     law: &SummitLaw,
     first: &MonteCarlo,
+    candidates: &[f64],
     program: &LoadingProgram,
 ) -> f64 {
     let draw = match p.draw {
         Draw::Exact => p.summits as f64 * DRAW_NS,
         _ => first.population().len() as f64 * DRAW_NS,
     };
-    let evaluations = pull_off_evaluations(first, program) as f64;
+    let evaluations = pull_off_evaluations(first, program, candidates) as f64;
     (POPULATION_OVERHEAD_NS + draw + evaluations * law.law().batch_cost_ns()) * 1e-9
 }
 
@@ -149,9 +151,12 @@ pub fn run(
             p.draw,
         )
     };
-    // The first population prices the others.
-    let mut first = Some(draw_one(0)?);
-    let per = cost_per_population(p, &law, first.as_ref().expect("drawn"), program);
+    // The first population prices the others (its pruned search is then
+    // its example curve's).
+    let first_mc = draw_one(0)?;
+    let first_candidates = candidate_separations(&first_mc, program);
+    let per = cost_per_population(p, &law, &first_mc, &first_candidates, program);
+    let mut first = Some((first_mc, first_candidates));
     let affordable = (POPULATION_CPU_BUDGET / per.max(1e-12)).floor() as usize;
     let drawn = p.seeds.min(affordable.max(MIN_POPULATIONS));
     if drawn < p.seeds {
@@ -175,14 +180,17 @@ pub fn run(
     let mut values = Vec::with_capacity(drawn);
     for k in 0..shown as u64 {
         let seed = p.first_seed + k;
-        let mc = match first.take() {
-            Some(mc) => mc,
-            None => draw_one(k)?,
+        let (mc, candidates) = match first.take() {
+            Some(drawn) => drawn,
+            None => {
+                let mc = draw_one(k)?;
+                let c = candidate_separations(&mc, program);
+                (mc, c)
+            }
         };
         // Drawn at every EXAMPLE_STRIDE-th separation and wherever the
         // minimum can lie: the pull-off is the least of these loads, as
         // `realised_pull_off` finds it.
-        let candidates = candidate_separations(&mc, program);
         let all = program.separations();
         let last = all.len() - 1;
         let shown_at: Vec<f64> = all

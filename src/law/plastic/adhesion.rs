@@ -122,15 +122,7 @@ impl AdhesivePlastic {
     /// (`-(5/6) pi w R_u`) at `delta_res + Dbar_c (pi^2 w^2 R_u/K^2)^(1/3)`.
     pub fn pull_off_after(&self, delta_max: f64, control: Control) -> Instability {
         let (u, s) = self.shape_after(delta_max);
-        let (a, p) = match control {
-            Control::Load => (PULL_OFF_RADIUS, PULL_OFF_LOAD),
-            Control::Displacement => (JUMP_OUT_RADIUS, JUMP_OUT_LOAD),
-        };
-        Instability {
-            load: p * s.load,
-            interference: u.residual + interference_bar(a) * s.interference,
-            radius: a * s.radius,
-        }
+        pull_off_on(u.residual, &s, control)
     }
 
     /// Jump-out interference (m) after loading to `delta_max`.
@@ -162,6 +154,21 @@ impl AdhesivePlastic {
             },
             None => ContactState::FREE,
         }
+    }
+}
+
+/// JKR's pull-off on a shape with residual interference `residual` (m)
+/// and JKR scales `s`: under load control `-(3/2) pi w R_u`, under
+/// displacement control the jump-out.
+fn pull_off_on(residual: f64, s: &MaugisScales, control: Control) -> Instability {
+    let (a, p) = match control {
+        Control::Load => (PULL_OFF_RADIUS, PULL_OFF_LOAD),
+        Control::Displacement => (JUMP_OUT_RADIUS, JUMP_OUT_LOAD),
+    };
+    Instability {
+        load: p * s.load,
+        interference: residual + interference_bar(a) * s.interference,
+        radius: a * s.radius,
     }
 }
 
@@ -279,10 +286,16 @@ impl AsperityLaw for AdhesivePlastic {
         if delta_max < 0.0 {
             return Some(crate::law::RetractionMinimum::MONOTONE);
         }
-        let [residual, interference, load, _] = *prepared;
+        let [residual, interference, load, radius] = *prepared;
+        let s = MaugisScales {
+            radius,
+            load,
+            interference,
+        };
+        let p = pull_off_on(residual, &s, Control::Load);
         Some(crate::law::RetractionMinimum {
-            interference: residual + interference_bar(PULL_OFF_RADIUS) * interference,
-            load: PULL_OFF_LOAD * load,
+            interference: p.interference,
+            load: p.load,
         })
     }
 

@@ -148,7 +148,7 @@ impl pulp::WithSimd for RootMonomialSums<'_> {
     fn with_simd<S: pulp::Simd>(self, _simd: S) {
         let mut acc = *self.lanes;
         let (sep, scale, k, c) = (self.sep, self.scale, self.k, self.c);
-        // As `Hertz::state_batch`, then as `LaneSums`, a lane group at a
+        // `root_monomial_state`, then as `LaneSums`, a lane group at a
         // time (the remainder padded with free summits: +0.0 everywhere).
         let mut groups = self.z.chunks_exact(LANES);
         for g in &mut groups {
@@ -176,11 +176,7 @@ fn root_monomial_group(
 ) {
     let (mut p, mut a) = ([0.0; LANES], [0.0; LANES]);
     for j in 0..LANES {
-        let d = (z[j] - sep) * scale;
-        let d = if d > 0.0 { d } else { 0.0 };
-        let s = d.sqrt();
-        p[j] = k * d * s;
-        a[j] = c * s;
+        (p[j], a[j]) = crate::law::hertz::root_monomial_state((z[j] - sep) * scale, k, c);
     }
     for j in 0..LANES {
         add_state(acc, j, p[j], a[j]);
