@@ -34,10 +34,12 @@ use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Tota
 use crate::numeric::quadrature::{
     integrate_pieces_batch, kronrod21_batch, kronrod21_pieces, QuadOptions,
 };
+use curve_fit::CURVE_FIT_MIN_STATES;
 use rayon::prelude::*;
 use root_rule::{RootPlan, FIXED_RULE_MIN_RTOL, ROOT_BATCH};
 use std::sync::Arc;
 
+mod curve_fit;
 mod root_rule;
 
 /// How to integrate.
@@ -449,24 +451,20 @@ impl GwModel {
     /// separation `d`, and `Some(s_lo)` when the density is factored out
     /// there ([`far_tail_reference`]).
     fn height_range(&self, d: f64) -> (f64, f64, Option<f64>) {
-        let sigma = self.surface.sigma;
+        self.height_ranges().at(d)
+    }
+
+    /// [`GwModel::height_range`] with the law's and density's constants
+    /// read once, for many separations.
+    fn height_ranges(&self) -> HeightRanges<'_> {
         let law = self.law.as_ref();
-        let dist = self.distribution.as_ref();
-        let (sup_lo, sup_hi) = self.support;
-        // Below the cutoff every branch gives exactly zero: skip.
-        let s_lo = ((d + law.cutoff_interference()) / sigma).max(sup_lo);
-        // Far in the upper tail the density is factored out at `s_lo` (so
-        // neither it nor the integral underflows before the end of the
-        // result's own range) and the upper end is where the density has
-        // fallen by FAR_TAIL_DROP from there, not the fixed support.
-        let far = far_tail_reference(dist, s_lo);
-        let top = match far {
-            Some(_) => far_tail_end(dist, s_lo),
-            None => sup_hi,
-        };
-        // A rigid law is bounded by its own divergence (checked in `new`).
-        let s_hi = top.min((d + law.max_interference()) / sigma);
-        (s_lo, s_hi, far)
+        HeightRanges {
+            sigma: self.surface.sigma,
+            cutoff: law.cutoff_interference(),
+            max_interference: law.max_interference(),
+            support: self.support,
+            dist: self.distribution.as_ref(),
+        }
     }
 
     /// Whether the fixed rules in the root ([`root_rule`]) may serve
@@ -481,26 +479,32 @@ impl GwModel {
             && self.distribution.sample_points().is_none()
     }
 
-    /// The state at `d` after `history` as [`LoadingModel::state`] computes
-    /// it with the fixed rules in the root, when it does; `None` for every
-    /// other state.
-    /// `fixed` is [`GwModel::fixed_root_rule`] of the observables.
-    fn root_plan(&self, d: f64, history: History, fixed: bool) -> Option<RootPlan> {
-        if !fixed || history.check(d).is_err() || !self.root_rule_applies(history) {
-            return None;
-        }
-        let (s_lo, s_hi, far) = self.height_range(d);
-        (s_hi > s_lo && far.is_none()).then_some(RootPlan { d, s_lo, s_hi })
+    /// For each step, the state at `d` after `history` as
+    /// [`LoadingModel::state`] computes it with the fixed rules in the
+    /// root, when it does; `None` for every other state. `fixed` is
+    /// [`GwModel::fixed_root_rule`] of the observables.
+    fn root_plans(&self, steps: &[(f64, History)], fixed: bool) -> Vec<Option<RootPlan>> {
+        let ranges = self.height_ranges();
+        let applies = [History::Approach, History::Retract { closest: 0.0 }]
+            .map(|h| fixed && self.root_rule_applies(h));
+        steps
+            .iter()
+            .map(|&(d, history)| {
+                let applies = applies[usize::from(history != History::Approach)];
+                if !applies || history.check(d).is_err() {
+                    return None;
+                }
+                let (s_lo, s_hi, far) = ranges.at(d);
+                (s_hi > s_lo && far.is_none()).then_some(RootPlan { d, s_lo, s_hi })
+            })
+            .collect()
     }
 
     /// The states of `steps` in order: those the fixed rules in the root
     /// serve in one batch, the others one by one.
     fn batch_states(&self, steps: &[(f64, History)], obs: &Observables) -> Vec<Result<State>> {
         let fixed = self.fixed_root_rule(obs);
-        let plans: Vec<Option<RootPlan>> = steps
-            .iter()
-            .map(|&(d, h)| self.root_plan(d, h, fixed))
-            .collect();
+        let plans = self.root_plans(steps, fixed);
         let batch: Vec<RootPlan> = plans.iter().flatten().copied().collect();
         let mut root = self.root_states(&batch, obs).into_iter();
         steps
@@ -748,6 +752,36 @@ fn far_tail_reference(dist: &dyn HeightDistribution, s_lo: f64) -> Option<f64> {
     far.then_some(s_lo)
 }
 
+/// The constants of [`GwModel::height_range`].
+struct HeightRanges<'a> {
+    sigma: f64,
+    cutoff: f64,
+    max_interference: f64,
+    support: (f64, f64),
+    dist: &'a dyn HeightDistribution,
+}
+
+impl HeightRanges<'_> {
+    /// [`GwModel::height_range`] at `d`.
+    fn at(&self, d: f64) -> (f64, f64, Option<f64>) {
+        let (sup_lo, sup_hi) = self.support;
+        // Below the cutoff every branch gives exactly zero: skip.
+        let s_lo = ((d + self.cutoff) / self.sigma).max(sup_lo);
+        // Far in the upper tail the density is factored out at `s_lo` (so
+        // neither it nor the integral underflows before the end of the
+        // result's own range) and the upper end is where the density has
+        // fallen by FAR_TAIL_DROP from there, not the fixed support.
+        let far = far_tail_reference(self.dist, s_lo);
+        let top = match far {
+            Some(_) => far_tail_end(self.dist, s_lo),
+            None => sup_hi,
+        };
+        // A rigid law is bounded by its own divergence (checked in `new`).
+        let s_hi = top.min((d + self.max_interference) / self.sigma);
+        (s_lo, s_hi, far)
+    }
+}
+
 /// Height above `s_lo` where `ln phi` has fallen by [`FAR_TAIL_DROP`]
 /// (steps doubling from `1/(1 + s_lo)`), capped at the support's end.
 fn far_tail_end(dist: &dyn HeightDistribution, s_lo: f64) -> f64 {
@@ -862,7 +896,20 @@ impl LoadingModel for GwModel {
     fn states(&self, steps: &[(f64, History)], observables: &Observables) -> Result<Vec<State>> {
         // States the fixed rules in the root serve go in batches of
         // ROOT_BATCH (each state's bits are those it has alone).
-        let results: Vec<Result<State>> = if self.fixed_root_rule(observables) {
+        let fixed = self.fixed_root_rule(observables);
+        if fixed && steps.len() >= CURVE_FIT_MIN_STATES {
+            // One trip into the pool: the loops inside then run on its
+            // threads without handing work across (none with one thread).
+            let fitted = if rayon::current_num_threads() > 1 {
+                rayon::scope(|_| self.curve_states(steps, observables))
+            } else {
+                self.curve_states(steps, observables)
+            };
+            if let Some(result) = fitted {
+                return result;
+            }
+        }
+        let results: Vec<Result<State>> = if fixed {
             steps
                 .par_chunks(ROOT_BATCH)
                 .flat_map_iter(|chunk| self.batch_states(chunk, observables))

@@ -151,7 +151,7 @@ fn fixed_rule_converges_as_panels_grow() {
 
 /// A per-asperity observable that forces quadrature (`pi a^2` again).
 #[derive(Debug)]
-struct AreaAgain;
+pub(crate) struct AreaAgain;
 
 impl crate::loading::PerAsperity for AreaAgain {
     fn name(&self) -> &str {

@@ -11,6 +11,9 @@ pub enum MethodUsed {
     Quadrature,
     /// A fixed composite Kronrod rule.
     Fixed,
+    /// A Chebyshev interpolant of the curve's logarithm in the separation
+    /// through quadrature states (many approach states of one curve).
+    Interpolated,
     /// An exact average over a finite sample of heights (measured summits).
     SampleSum,
     /// An exact sum over a drawn population (Monte Carlo); the
