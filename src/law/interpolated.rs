@@ -30,7 +30,7 @@
 use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor};
 use crate::error::{Allowed, Error, Result};
 use crate::numeric::chebyshev::{horner, monomial_coefficients};
-use crate::numeric::lanes::sqrt_lanes;
+use crate::numeric::lanes::{sqrt_lanes, StateSums, STATE_LANES};
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -420,20 +420,43 @@ impl BranchTable {
 }
 
 /// Asperities evaluated together by [`InterpolatedLaw::state_batch`]
-/// (four AVX-512 vectors).
+/// (four AVX-512 vectors; a multiple of [`STATE_LANES`]).
 const GROUP: usize = 32;
+
+/// Where [`TableBatch`] puts the states: arrays, or lane sums.
+enum Sink<'a> {
+    /// `load[i]`, `radius[i]` ([`AsperityLaw::state_batch`]).
+    States {
+        load: &'a mut [f64],
+        radius: &'a mut [f64],
+    },
+    /// State `i` added to lane `i mod STATE_LANES`
+    /// ([`AsperityLaw::add_state_sums`]).
+    Sums(&'a mut StateSums),
+}
 
 /// [`InterpolatedLaw::state_batch`] as a [`pulp::WithSimd`] operation: per
 /// group of [`GROUP`] asperities, the panels are found by a scalar walk,
 /// then the two polynomials (load, `a^2`) and the square root run in
 /// SIMD lanes with each lane's own coefficients, in the operation order of
-/// [`horner`] (so bit for bit the scalar evaluation).
+/// [`horner`] (so bit for bit the scalar evaluation); the group's states
+/// are then stored or summed ([`Sink`]).
 struct TableBatch<'a> {
+    groups: Groups<'a>,
+    sink: Sink<'a>,
+}
+
+/// The input of a [`TableBatch`]: interferences `delta_i = (z_i - sep) s`
+/// and, on retraction, the maximum interferences
+/// `(m_i - closest) s` that pick each asperity's branch (given
+/// interferences: `sep = closest = 0`, `s = 1`, which is exact).
+struct Groups<'a> {
     law: &'a InterpolatedLaw,
-    delta: &'a [f64],
-    delta_max: Option<&'a [f64]>,
-    load: &'a mut [f64],
-    radius: &'a mut [f64],
+    z: &'a [f64],
+    sep: f64,
+    /// `m` and `closest`.
+    max: Option<(&'a [f64], f64)>,
+    scale: f64,
 }
 
 /// The loads and squared radii (`max(a^2, 0)`, 0 outside contact; the
@@ -454,7 +477,7 @@ fn group_values(
     )
 }
 
-impl TableBatch<'_> {
+impl Groups<'_> {
     /// The branch table and panel holding every lane of a group, if one
     /// does (a sorted population's group nearly always lies on one panel):
     /// one branch, no NaN, and the least and greatest interference on the
@@ -483,6 +506,83 @@ impl TableBatch<'_> {
         };
         inside.then_some((k, i))
     }
+
+    /// The states of the group of `len` asperities from `start`, padded
+    /// with its first lane: loads and radii.
+    #[inline(always)]
+    fn group<S: pulp::Simd>(
+        &self,
+        simd: S,
+        start: usize,
+        len: usize,
+        hint: &mut [usize; 2],
+    ) -> ([f64; GROUP], [f64; GROUP]) {
+        const ZERO: [f64; DEG + 1] = [0.0; DEG + 1];
+        let law = self.law;
+        // The group's interferences and branches, padded with its first
+        // lane.
+        let (sep, scale) = (self.sep, self.scale);
+        let mut d = [self.z[start]; GROUP];
+        d[..len].copy_from_slice(&self.z[start..start + len]);
+        for x in &mut d {
+            *x = (*x - sep) * scale;
+        }
+        let mut retract = [false; GROUP];
+        if let Some((m, closest)) = self.max {
+            let mut mx = [m[start]; GROUP];
+            mx[..len].copy_from_slice(&m[start..start + len]);
+            for j in 0..GROUP {
+                retract[j] = law.branch_after((mx[j] - closest) * scale) == Branch::Retract;
+            }
+        }
+        let mut t = [0.0; GROUP];
+        if let Some((k, i)) = self.common_panel(&d, &retract, hint) {
+            // One panel: its coefficients broadcast to every lane.
+            let table = &law.tables[k];
+            let map = table.map[i];
+            for j in 0..GROUP {
+                t[j] = local_coordinate(d[j], map);
+            }
+            let (a, b, c) = (&table.load[i], &table.r2[i], table.contact[i]);
+            let (p, mut q) = group_values(&t, |_, k| a[k], |_, k| b[k], |_| c);
+            sqrt_lanes(simd, &mut q);
+            return (p, q);
+        }
+        // Each lane its own panel (found by a walk from the last one) or,
+        // outside the table, the wrapped law.
+        let mut map = [[0.0, 1.0]; GROUP];
+        let mut cl = [&ZERO; GROUP];
+        let mut cr = [&ZERO; GROUP];
+        let mut contact = [false; GROUP];
+        let mut outside = [None; GROUP];
+        for j in 0..len {
+            let k = usize::from(retract[j]);
+            let table = &law.tables[k];
+            match table.panel_from(d[j], &mut hint[k]) {
+                Some(i) => {
+                    map[j] = table.map[i];
+                    (cl[j], cr[j]) = (&table.load[i], &table.r2[i]);
+                    contact[j] = table.contact[i];
+                }
+                None => {
+                    let branch = [Branch::Approach, Branch::Retract][k];
+                    outside[j] = Some(law.inner.state(d[j], branch));
+                    d[j] = 0.0;
+                }
+            }
+        }
+        for j in 0..GROUP {
+            t[j] = local_coordinate(d[j], map[j]);
+        }
+        let (mut p, mut q) = group_values(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j]);
+        sqrt_lanes(simd, &mut q);
+        for j in 0..len {
+            if let Some(s) = outside[j] {
+                (p[j], q[j]) = (s.load, s.radius);
+            }
+        }
+        (p, q)
+    }
 }
 
 impl pulp::WithSimd for TableBatch<'_> {
@@ -490,79 +590,39 @@ impl pulp::WithSimd for TableBatch<'_> {
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, simd: S) {
-        const ZERO: [f64; DEG + 1] = [0.0; DEG + 1];
-        let law = self.law;
-        let n = self.delta.len().min(self.load.len()).min(self.radius.len());
-        let n = self.delta_max.map_or(n, |m| n.min(m.len()));
+        let TableBatch { groups, sink } = self;
+        let n = groups.z.len();
+        let n = groups.max.map_or(n, |(m, _)| n.min(m.len()));
         let mut hint = [0usize; 2];
-        let mut start = 0;
-        while start < n {
-            let len = GROUP.min(n - start);
-            // The group's interferences and branches, padded with its
-            // first lane.
-            let mut d = [self.delta[start]; GROUP];
-            d[..len].copy_from_slice(&self.delta[start..start + len]);
-            let mut retract = [false; GROUP];
-            if let Some(m) = self.delta_max {
-                for j in 0..GROUP {
-                    retract[j] = law.branch_after(m[start + j.min(len - 1)]) == Branch::Retract;
+        match sink {
+            Sink::States { load, radius } => {
+                let n = n.min(load.len()).min(radius.len());
+                for start in (0..n).step_by(GROUP) {
+                    let len = GROUP.min(n - start);
+                    let (p, q) = groups.group(simd, start, len, &mut hint);
+                    load[start..start + len].copy_from_slice(&p[..len]);
+                    radius[start..start + len].copy_from_slice(&q[..len]);
                 }
             }
-            let mut t = [0.0; GROUP];
-            let mut inside = [true; GROUP];
-            let common = self.common_panel(&d, &retract, &mut hint);
-            let (p, mut q) = if let Some((k, i)) = common {
-                // One panel: its coefficients broadcast to every lane.
-                let table = &law.tables[k];
-                let map = table.map[i];
-                for j in 0..GROUP {
-                    t[j] = local_coordinate(d[j], map);
-                }
-                let (a, b, c) = (&table.load[i], &table.r2[i], table.contact[i]);
-                group_values(&t, |_, k| a[k], |_, k| b[k], |_| c)
-            } else {
-                // Each lane its own panel (found by a walk from the last
-                // one) or, outside the table, the wrapped law.
-                let mut map = [[0.0, 1.0]; GROUP];
-                let mut cl = [&ZERO; GROUP];
-                let mut cr = [&ZERO; GROUP];
-                let mut contact = [false; GROUP];
-                for j in 0..len {
-                    let k = usize::from(retract[j]);
-                    let table = &law.tables[k];
-                    match table.panel_from(d[j], &mut hint[k]) {
-                        Some(i) => {
-                            map[j] = table.map[i];
-                            (cl[j], cr[j]) = (&table.load[i], &table.r2[i]);
-                            contact[j] = table.contact[i];
-                        }
-                        None => {
-                            let branch = [Branch::Approach, Branch::Retract][k];
-                            let s = law.inner.state(d[j], branch);
-                            (self.load[start + j], self.radius[start + j]) = (s.load, s.radius);
-                            (inside[j], d[j]) = (false, 0.0);
+            Sink::Sums(sums) => {
+                // In registers for the whole run.
+                let mut acc = *sums;
+                for start in (0..n).step_by(GROUP) {
+                    let len = GROUP.min(n - start);
+                    let (mut p, mut q) = groups.group(simd, start, len, &mut hint);
+                    // Padding: free states, `+0.0` added to lanes that
+                    // never hold `-0.0` (sums from `+0.0`), which changes
+                    // nothing.
+                    p[len..].fill(0.0);
+                    q[len..].fill(0.0);
+                    for (pl, ql) in p.chunks_exact(STATE_LANES).zip(q.chunks_exact(STATE_LANES)) {
+                        for j in 0..STATE_LANES {
+                            acc.add(j, pl[j], ql[j]);
                         }
                     }
                 }
-                for j in 0..GROUP {
-                    t[j] = local_coordinate(d[j], map[j]);
-                }
-                group_values(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j])
-            };
-            sqrt_lanes(simd, &mut q);
-            if common.is_some() {
-                // every lane inside: whole copies
-                self.load[start..start + len].copy_from_slice(&p[..len]);
-                self.radius[start..start + len].copy_from_slice(&q[..len]);
-            } else {
-                for j in 0..len {
-                    if inside[j] {
-                        self.load[start + j] = p[j];
-                        self.radius[start + j] = q[j];
-                    }
-                }
+                *sums = acc;
             }
-            start += len;
         }
     }
 }
@@ -690,12 +750,41 @@ impl AsperityLaw for InterpolatedLaw {
         radius: &mut [f64],
     ) {
         crate::numeric::simd::arch().dispatch(TableBatch {
-            law: self,
-            delta,
-            delta_max,
-            load,
-            radius,
+            groups: Groups {
+                law: self,
+                z: delta,
+                sep: 0.0,
+                max: delta_max.map(|m| (m, 0.0)),
+                scale: 1.0,
+            },
+            sink: Sink::States { load, radius },
         });
+    }
+
+    /// The states of [`state_batch`](AsperityLaw::state_batch) (the same
+    /// groups, panels and operations) added to `sums` group by group, in
+    /// order, each group's interferences computed in the same pass: no
+    /// interference, load or radius arrays (the heights stream from memory
+    /// while the polynomials run).
+    fn add_state_sums(
+        &self,
+        z: &[f64],
+        sep: f64,
+        closest: Option<f64>,
+        scale: f64,
+        sums: &mut StateSums,
+    ) -> bool {
+        crate::numeric::simd::arch().dispatch(TableBatch {
+            groups: Groups {
+                law: self,
+                z,
+                sep,
+                max: closest.map(|c| (z, c)),
+                scale,
+            },
+            sink: Sink::Sums(sums),
+        });
+        true
     }
 
     fn attach_interference(&self) -> f64 {
