@@ -14,8 +14,14 @@
 //! geometric refinement towards them, down to a panel width of `1e-12` of
 //! the interval. Outside the interval the wrapped law is called directly.
 //!
-//! Evaluation: a binary search for the panel and two Clenshaw sums
-//! (about 15 ns), against about 0.5 us for an exact Maugis–Dugdale solve.
+//! Evaluation: a binary search for the panel, its local coordinate
+//! `t = (delta - m) s` (the panel's midpoint `m` and inverse half-width
+//! `s` stored: no division) and two degree-6 polynomials in `t` by
+//! Horner's rule on power-basis coefficients converted once from the
+//! Chebyshev ones (6 multiplies and 6 adds against Clenshaw's 21 operations per
+//! polynomial; the conversion is well conditioned at degree 6 on
+//! `[-1, 1]`, and the panels are accepted on the converted form). About
+//! 15 ns, against about 0.5 us for an exact Maugis–Dugdale solve.
 //! Degree 6 was chosen by measurement: a GW curve with Maugis–Dugdale
 //! asperities ran 29, 31, 36, 47 and 54 ms with degrees 4, 6, 8, 10 and 16
 //! (`examples/md_curve_profile.rs`): short Clenshaw chains win over fewer
@@ -23,8 +29,8 @@
 
 use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor};
 use crate::error::{Allowed, Error, Result};
-use crate::numeric::chebyshev::clenshaw;
-use crate::numeric::lanes::sqrt_lanes;
+use crate::numeric::chebyshev::{horner, monomial_coefficients};
+use crate::numeric::lanes::{sqrt_lanes, StateSums, STATE_LANES};
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -33,23 +39,27 @@ const DEG: usize = 6;
 /// Panels below this fraction of the interval are accepted as they are.
 const MIN_WIDTH: f64 = 1e-12;
 
-/// Lanes of the interleaved Clenshaw sums of
+/// Lanes of the interleaved polynomials of
 /// [`load_near_batch`](AsperityLaw::load_near_batch).
 const LANES: usize = 8;
 
-/// [`clenshaw_lanes`] at this module's degree.
+/// [`horner_lanes`](crate::numeric::chebyshev::horner_lanes) at this
+/// module's degree.
 #[inline(always)]
-fn clenshaw_lanes<const L: usize>(x: &[f64; L], c: impl Fn(usize, usize) -> f64) -> [f64; L] {
-    crate::numeric::chebyshev::clenshaw_lanes::<DEG, L>(x, c)
+fn horner_lanes<const L: usize>(x: &[f64; L], a: impl Fn(usize, usize) -> f64) -> [f64; L] {
+    crate::numeric::chebyshev::horner_lanes::<{ DEG + 1 }, L>(x, a)
 }
 
 #[derive(Debug, Clone, Default)]
 struct BranchTable {
     /// Panel edges, ascending (`panels + 1` values).
     edges: Vec<f64>,
-    /// Chebyshev coefficients of the load on each panel.
+    /// Each panel's map to its local coordinate, `[m, s]`:
+    /// `t = (delta - m) s`, `m = (l + r)/2`, `s = 2/(r - l)`.
+    map: Vec<[f64; 2]>,
+    /// Power-basis coefficients (in `t`) of the load on each panel.
     load: Vec<[f64; DEG + 1]>,
-    /// Chebyshev coefficients of `a^2` on each panel.
+    /// Power-basis coefficients (in `t`) of `a^2` on each panel.
     r2: Vec<[f64; DEG + 1]>,
     /// Whether each panel is in contact (`a > 0`).
     contact: Vec<bool>,
@@ -277,15 +287,16 @@ fn fit_piece(
             fr[k] = s.radius * s.radius;
         }
         *evals += DEG + 1;
-        let cl = chebyshev_coefficients(&fl);
-        let cr = chebyshev_coefficients(&fr);
+        // Accepted on the form evaluated: power-basis coefficients.
+        let cl = monomial_coefficients(&chebyshev_coefficients(&fl));
+        let cr = monomial_coefficients(&chebyshev_coefficients(&fr));
         let mut ok = true;
         for k in 0..DEG {
             let t = (PI * (k as f64 + 0.5) / DEG as f64).cos();
             let s = law.state(map(t), branch);
             *evals += 1;
-            let el = (clenshaw(&cl, t) - s.load).abs();
-            let er = (clenshaw(&cr, t) - s.radius * s.radius).abs();
+            let el = (horner(&cl, t) - s.load).abs();
+            let er = (horner(&cr, t) - s.radius * s.radius).abs();
             let r2 = s.radius * s.radius;
             if !(el <= tol * (s.load.abs() + p_scale) && er <= tol * (r2 + a_scale * a_scale)) {
                 ok = false;
@@ -317,6 +328,8 @@ fn fit_piece(
             table.edges.push(l);
         }
         table.edges.push(r);
+        let l = table.edges[table.edges.len() - 2];
+        table.map.push([0.5 * (l + r), 2.0 / (r - l)]);
         table.load.push(cl);
         table.r2.push(cr);
         table.contact.push(contact);
@@ -324,11 +337,11 @@ fn fit_piece(
     Ok(())
 }
 
-/// Local coordinate `t = (2 delta - l - r)/(r - l)` in `[-1, 1]` of
-/// `delta` on the panel `[l, r]`.
+/// Local coordinate `t = (delta - m) s` in `[-1, 1]` of `delta` on the
+/// panel of map `[m, s]` (midpoint, inverse half-width).
 #[inline(always)]
-fn local_coordinate(delta: f64, l: f64, r: f64) -> f64 {
-    ((2.0 * delta - l - r) / (r - l)).clamp(-1.0, 1.0)
+fn local_coordinate(delta: f64, [m, s]: [f64; 2]) -> f64 {
+    ((delta - m) * s).clamp(-1.0, 1.0)
 }
 
 impl BranchTable {
@@ -340,8 +353,7 @@ impl BranchTable {
             return None;
         }
         let i = self.edges.partition_point(|&e| e <= delta).clamp(1, n) - 1;
-        let (l, r) = (self.edges[i], self.edges[i + 1]);
-        Some((i, local_coordinate(delta, l, r)))
+        Some((i, local_coordinate(delta, self.map[i])))
     }
 
     /// As [`locate`](Self::locate), walking from panel `*hint` (updated):
@@ -349,8 +361,7 @@ impl BranchTable {
     #[inline]
     fn locate_from(&self, delta: f64, hint: &mut usize) -> Option<(usize, f64)> {
         let i = self.panel_from(delta, hint)?;
-        let (l, r) = (self.edges[i], self.edges[i + 1]);
-        Some((i, local_coordinate(delta, l, r)))
+        Some((i, local_coordinate(delta, self.map[i])))
     }
 
     /// The panel of [`locate_from`](Self::locate_from) alone.
@@ -381,9 +392,9 @@ impl BranchTable {
 
     #[inline]
     fn eval_at(&self, i: usize, t: f64) -> ContactState {
-        let load = clenshaw(&self.load[i], t);
+        let load = horner(&self.load[i], t);
         let radius = if self.contact[i] {
-            clenshaw(&self.r2[i], t).max(0.0).sqrt()
+            horner(&self.r2[i], t).max(0.0).sqrt()
         } else {
             0.0
         };
@@ -392,13 +403,13 @@ impl BranchTable {
 
     #[inline]
     fn load(&self, delta: f64) -> Option<f64> {
-        self.locate(delta).map(|(i, t)| clenshaw(&self.load[i], t))
+        self.locate(delta).map(|(i, t)| horner(&self.load[i], t))
     }
 
     #[inline]
     fn load_from(&self, delta: f64, hint: &mut usize) -> Option<f64> {
         self.locate_from(delta, hint)
-            .map(|(i, t)| clenshaw(&self.load[i], t))
+            .map(|(i, t)| horner(&self.load[i], t))
     }
 
     #[inline]
@@ -409,20 +420,43 @@ impl BranchTable {
 }
 
 /// Asperities evaluated together by [`InterpolatedLaw::state_batch`]
-/// (four AVX-512 vectors).
+/// (four AVX-512 vectors; a multiple of [`STATE_LANES`]).
 const GROUP: usize = 32;
+
+/// Where [`TableBatch`] puts the states: arrays, or lane sums.
+enum Sink<'a> {
+    /// `load[i]`, `radius[i]` ([`AsperityLaw::state_batch`]).
+    States {
+        load: &'a mut [f64],
+        radius: &'a mut [f64],
+    },
+    /// State `i` added to lane `i mod STATE_LANES`
+    /// ([`AsperityLaw::add_state_sums`]).
+    Sums(&'a mut StateSums),
+}
 
 /// [`InterpolatedLaw::state_batch`] as a [`pulp::WithSimd`] operation: per
 /// group of [`GROUP`] asperities, the panels are found by a scalar walk,
-/// then the two Clenshaw sums (load, `a^2`) and the square root run in
+/// then the two polynomials (load, `a^2`) and the square root run in
 /// SIMD lanes with each lane's own coefficients, in the operation order of
-/// [`clenshaw`] (so bit for bit the scalar evaluation).
+/// [`horner`] (so bit for bit the scalar evaluation); the group's states
+/// are then stored or summed ([`Sink`]).
 struct TableBatch<'a> {
+    groups: Groups<'a>,
+    sink: Sink<'a>,
+}
+
+/// The input of a [`TableBatch`]: interferences `delta_i = (z_i - sep) s`
+/// and, on retraction, the maximum interferences
+/// `(m_i - closest) s` that pick each asperity's branch (given
+/// interferences: `sep = closest = 0`, `s = 1`, which is exact).
+struct Groups<'a> {
     law: &'a InterpolatedLaw,
-    delta: &'a [f64],
-    delta_max: Option<&'a [f64]>,
-    load: &'a mut [f64],
-    radius: &'a mut [f64],
+    z: &'a [f64],
+    sep: f64,
+    /// `m` and `closest`.
+    max: Option<(&'a [f64], f64)>,
+    scale: f64,
 }
 
 /// The loads and squared radii (`max(a^2, 0)`, 0 outside contact; the
@@ -435,15 +469,15 @@ fn group_values(
     r2: impl Fn(usize, usize) -> f64,
     contact: impl Fn(usize) -> bool,
 ) -> ([f64; GROUP], [f64; GROUP]) {
-    let p = clenshaw_lanes(t, load);
-    let s = clenshaw_lanes(t, r2);
+    let p = horner_lanes(t, load);
+    let s = horner_lanes(t, r2);
     (
         p,
         std::array::from_fn(|j| if contact(j) { s[j].max(0.0) } else { 0.0 }),
     )
 }
 
-impl TableBatch<'_> {
+impl Groups<'_> {
     /// The branch table and panel holding every lane of a group, if one
     /// does (a sorted population's group nearly always lies on one panel):
     /// one branch, no NaN, and the least and greatest interference on the
@@ -472,6 +506,83 @@ impl TableBatch<'_> {
         };
         inside.then_some((k, i))
     }
+
+    /// The states of the group of `len` asperities from `start`, padded
+    /// with its first lane: loads and radii.
+    #[inline(always)]
+    fn group<S: pulp::Simd>(
+        &self,
+        simd: S,
+        start: usize,
+        len: usize,
+        hint: &mut [usize; 2],
+    ) -> ([f64; GROUP], [f64; GROUP]) {
+        const ZERO: [f64; DEG + 1] = [0.0; DEG + 1];
+        let law = self.law;
+        // The group's interferences and branches, padded with its first
+        // lane.
+        let (sep, scale) = (self.sep, self.scale);
+        let mut d = [self.z[start]; GROUP];
+        d[..len].copy_from_slice(&self.z[start..start + len]);
+        for x in &mut d {
+            *x = (*x - sep) * scale;
+        }
+        let mut retract = [false; GROUP];
+        if let Some((m, closest)) = self.max {
+            let mut mx = [m[start]; GROUP];
+            mx[..len].copy_from_slice(&m[start..start + len]);
+            for j in 0..GROUP {
+                retract[j] = law.branch_after((mx[j] - closest) * scale) == Branch::Retract;
+            }
+        }
+        let mut t = [0.0; GROUP];
+        if let Some((k, i)) = self.common_panel(&d, &retract, hint) {
+            // One panel: its coefficients broadcast to every lane.
+            let table = &law.tables[k];
+            let map = table.map[i];
+            for j in 0..GROUP {
+                t[j] = local_coordinate(d[j], map);
+            }
+            let (a, b, c) = (&table.load[i], &table.r2[i], table.contact[i]);
+            let (p, mut q) = group_values(&t, |_, k| a[k], |_, k| b[k], |_| c);
+            sqrt_lanes(simd, &mut q);
+            return (p, q);
+        }
+        // Each lane its own panel (found by a walk from the last one) or,
+        // outside the table, the wrapped law.
+        let mut map = [[0.0, 1.0]; GROUP];
+        let mut cl = [&ZERO; GROUP];
+        let mut cr = [&ZERO; GROUP];
+        let mut contact = [false; GROUP];
+        let mut outside = [None; GROUP];
+        for j in 0..len {
+            let k = usize::from(retract[j]);
+            let table = &law.tables[k];
+            match table.panel_from(d[j], &mut hint[k]) {
+                Some(i) => {
+                    map[j] = table.map[i];
+                    (cl[j], cr[j]) = (&table.load[i], &table.r2[i]);
+                    contact[j] = table.contact[i];
+                }
+                None => {
+                    let branch = [Branch::Approach, Branch::Retract][k];
+                    outside[j] = Some(law.inner.state(d[j], branch));
+                    d[j] = 0.0;
+                }
+            }
+        }
+        for j in 0..GROUP {
+            t[j] = local_coordinate(d[j], map[j]);
+        }
+        let (mut p, mut q) = group_values(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j]);
+        sqrt_lanes(simd, &mut q);
+        for j in 0..len {
+            if let Some(s) = outside[j] {
+                (p[j], q[j]) = (s.load, s.radius);
+            }
+        }
+        (p, q)
+    }
 }
 
 impl pulp::WithSimd for TableBatch<'_> {
@@ -479,79 +590,39 @@ impl pulp::WithSimd for TableBatch<'_> {
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, simd: S) {
-        const ZERO: [f64; DEG + 1] = [0.0; DEG + 1];
-        let law = self.law;
-        let n = self.delta.len().min(self.load.len()).min(self.radius.len());
-        let n = self.delta_max.map_or(n, |m| n.min(m.len()));
+        let TableBatch { groups, sink } = self;
+        let n = groups.z.len();
+        let n = groups.max.map_or(n, |(m, _)| n.min(m.len()));
         let mut hint = [0usize; 2];
-        let mut start = 0;
-        while start < n {
-            let len = GROUP.min(n - start);
-            // The group's interferences and branches, padded with its
-            // first lane.
-            let mut d = [self.delta[start]; GROUP];
-            d[..len].copy_from_slice(&self.delta[start..start + len]);
-            let mut retract = [false; GROUP];
-            if let Some(m) = self.delta_max {
-                for j in 0..GROUP {
-                    retract[j] = law.branch_after(m[start + j.min(len - 1)]) == Branch::Retract;
+        match sink {
+            Sink::States { load, radius } => {
+                let n = n.min(load.len()).min(radius.len());
+                for start in (0..n).step_by(GROUP) {
+                    let len = GROUP.min(n - start);
+                    let (p, q) = groups.group(simd, start, len, &mut hint);
+                    load[start..start + len].copy_from_slice(&p[..len]);
+                    radius[start..start + len].copy_from_slice(&q[..len]);
                 }
             }
-            let mut t = [0.0; GROUP];
-            let mut inside = [true; GROUP];
-            let common = self.common_panel(&d, &retract, &mut hint);
-            let (p, mut q) = if let Some((k, i)) = common {
-                // One panel: its coefficients broadcast to every lane.
-                let table = &law.tables[k];
-                let (l, r) = (table.edges[i], table.edges[i + 1]);
-                for j in 0..GROUP {
-                    t[j] = local_coordinate(d[j], l, r);
-                }
-                let (a, b, c) = (&table.load[i], &table.r2[i], table.contact[i]);
-                group_values(&t, |_, k| a[k], |_, k| b[k], |_| c)
-            } else {
-                // Each lane its own panel (found by a walk from the last
-                // one) or, outside the table, the wrapped law.
-                let (mut l, mut r) = ([-1.0; GROUP], [1.0; GROUP]);
-                let mut cl = [&ZERO; GROUP];
-                let mut cr = [&ZERO; GROUP];
-                let mut contact = [false; GROUP];
-                for j in 0..len {
-                    let k = usize::from(retract[j]);
-                    let table = &law.tables[k];
-                    match table.panel_from(d[j], &mut hint[k]) {
-                        Some(i) => {
-                            (l[j], r[j]) = (table.edges[i], table.edges[i + 1]);
-                            (cl[j], cr[j]) = (&table.load[i], &table.r2[i]);
-                            contact[j] = table.contact[i];
-                        }
-                        None => {
-                            let branch = [Branch::Approach, Branch::Retract][k];
-                            let s = law.inner.state(d[j], branch);
-                            (self.load[start + j], self.radius[start + j]) = (s.load, s.radius);
-                            (inside[j], d[j]) = (false, 0.0);
+            Sink::Sums(sums) => {
+                // In registers for the whole run.
+                let mut acc = *sums;
+                for start in (0..n).step_by(GROUP) {
+                    let len = GROUP.min(n - start);
+                    let (mut p, mut q) = groups.group(simd, start, len, &mut hint);
+                    // Padding: free states, `+0.0` added to lanes that
+                    // never hold `-0.0` (sums from `+0.0`), which changes
+                    // nothing.
+                    p[len..].fill(0.0);
+                    q[len..].fill(0.0);
+                    for (pl, ql) in p.chunks_exact(STATE_LANES).zip(q.chunks_exact(STATE_LANES)) {
+                        for j in 0..STATE_LANES {
+                            acc.add(j, pl[j], ql[j]);
                         }
                     }
                 }
-                for j in 0..GROUP {
-                    t[j] = local_coordinate(d[j], l[j], r[j]);
-                }
-                group_values(&t, |j, k| cl[j][k], |j, k| cr[j][k], |j| contact[j])
-            };
-            sqrt_lanes(simd, &mut q);
-            if common.is_some() {
-                // every lane inside: whole copies
-                self.load[start..start + len].copy_from_slice(&p[..len]);
-                self.radius[start..start + len].copy_from_slice(&q[..len]);
-            } else {
-                for j in 0..len {
-                    if inside[j] {
-                        self.load[start + j] = p[j];
-                        self.radius[start + j] = q[j];
-                    }
-                }
+                *sums = acc;
             }
-            start += len;
         }
     }
 }
@@ -622,7 +693,7 @@ impl AsperityLaw for InterpolatedLaw {
     }
 
     /// Panels found by walking from the cursor (one walk for ascending
-    /// input), then up to eight Clenshaw sums interleaved; the same panel
+    /// input), then up to eight polynomials interleaved; the same panel
     /// and the same operations as [`load_near`](AsperityLaw::load_near),
     /// so the same bits.
     fn load_near_batch(
@@ -656,7 +727,7 @@ impl AsperityLaw for InterpolatedLaw {
                     None => load[i] = self.inner.load(delta[i], branch),
                 }
             }
-            let v = clenshaw_lanes(&t, |l, j| coef[l][j]);
+            let v = horner_lanes(&t, |l, j| coef[l][j]);
             for l in 0..m {
                 if tabled[l] {
                     load[start + l] = v[l];
@@ -669,7 +740,7 @@ impl AsperityLaw for InterpolatedLaw {
     /// Sorted input (a population's heights) finds each panel by walking
     /// from the previous one (amortised O(1)) instead of a binary search;
     /// the panel found, and so every value, is the one
-    /// [`state`](AsperityLaw::state) finds (bit for bit). The Clenshaw sums
+    /// [`state`](AsperityLaw::state) finds (bit for bit). The polynomials
     /// of a group of asperities run in SIMD lanes (`TableBatch`).
     fn state_batch(
         &self,
@@ -679,12 +750,41 @@ impl AsperityLaw for InterpolatedLaw {
         radius: &mut [f64],
     ) {
         crate::numeric::simd::arch().dispatch(TableBatch {
-            law: self,
-            delta,
-            delta_max,
-            load,
-            radius,
+            groups: Groups {
+                law: self,
+                z: delta,
+                sep: 0.0,
+                max: delta_max.map(|m| (m, 0.0)),
+                scale: 1.0,
+            },
+            sink: Sink::States { load, radius },
         });
+    }
+
+    /// The states of [`state_batch`](AsperityLaw::state_batch) (the same
+    /// groups, panels and operations) added to `sums` group by group, in
+    /// order, each group's interferences computed in the same pass: no
+    /// interference, load or radius arrays (the heights stream from memory
+    /// while the polynomials run).
+    fn add_state_sums(
+        &self,
+        z: &[f64],
+        sep: f64,
+        closest: Option<f64>,
+        scale: f64,
+        sums: &mut StateSums,
+    ) -> bool {
+        crate::numeric::simd::arch().dispatch(TableBatch {
+            groups: Groups {
+                law: self,
+                z,
+                sep,
+                max: closest.map(|c| (z, c)),
+                scale,
+            },
+            sink: Sink::Sums(sums),
+        });
+        true
     }
 
     fn attach_interference(&self) -> f64 {
@@ -737,13 +837,18 @@ mod tests {
     }
 
     #[test]
-    fn clenshaw_reproduces_a_polynomial() {
+    fn coefficients_reproduce_a_polynomial() {
         let x = nodes();
         let f: [f64; DEG + 1] = std::array::from_fn(|k| 3.0 * x[k].powi(5) - x[k] + 0.5);
         let c = chebyshev_coefficients(&f);
+        let a = monomial_coefficients(&c);
         for t in [-1.0, -0.3, 0.0, 0.77, 1.0] {
             let want: f64 = 3.0 * f64::powi(t, 5) - t + 0.5;
-            assert!((clenshaw(&c, t) - want).abs() < 1e-14, "{t}");
+            assert!(
+                (crate::numeric::chebyshev::clenshaw(&c, t) - want).abs() < 1e-14,
+                "{t}"
+            );
+            assert!((horner(&a, t) - want).abs() < 1e-14, "{t}");
         }
     }
 

@@ -307,6 +307,30 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         self.state_batch(delta, Some(delta_max), load, radius);
     }
 
+    /// Adds to `sums` the states of asperities at interferences
+    /// `delta_i = (z_i - sep) scale` (m) on approach, or, after
+    /// `closest`, on retraction from `delta_max_i = (z_i - closest) scale`:
+    /// state `i` is [`state_batch`](AsperityLaw::state_batch)'s (bit for
+    /// bit, interferences computed in that order), added by
+    /// [`StateSums::add`](crate::numeric::lanes::StateSums::add) to lane
+    /// `i mod STATE_LANES`, in order; returns `true`. The Monte Carlo
+    /// sums of a population (heights `z`, flat at `sep`) call it first: a
+    /// law that computes its states inside the sums
+    /// ([`interpolated::InterpolatedLaw`]: no interference, load or radius
+    /// arrays) overrides it. The default adds nothing and returns `false`:
+    /// the caller then calls `state_batch` and sums the arrays itself.
+    fn add_state_sums(
+        &self,
+        z: &[f64],
+        sep: f64,
+        closest: Option<f64>,
+        scale: f64,
+        sums: &mut crate::numeric::lanes::StateSums,
+    ) -> bool {
+        let _ = (z, sep, closest, scale, sums);
+        false
+    }
+
     /// `Some((k, c))` when the state is `P = k d sqrt(d)`, `a = c sqrt(d)`
     /// with `d = max(delta, 0)` on both branches, evaluated in exactly that
     /// order ([`Hertz`]): the Monte Carlo sums then fuse the state into

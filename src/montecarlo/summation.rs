@@ -50,8 +50,9 @@ pub const SUM_BLOCK: usize = 8192;
 /// Summits per law call inside a block (stack buffers, L1-resident).
 pub const CHUNK: usize = 256;
 
-/// Accumulator lanes (fixed: part of the reduction order).
-pub const LANES: usize = 8;
+/// Accumulator lanes (fixed: part of the reduction order;
+/// [`StateSums`](crate::numeric::lanes::StateSums)' lanes).
+pub const LANES: usize = crate::numeric::lanes::STATE_LANES;
 
 /// Law evaluations (summits in range times steps) below which a call runs
 /// serially. Measured (`benches/montecarlo.rs`, `mc_small`): see
@@ -504,6 +505,17 @@ impl MonteCarlo {
                 // sums, one pass over the heights.
                 acc.add_root_monomials(zc, d, scale, k, c);
                 continue;
+            }
+            if let (ChunkFactors::Uniform([scale, 1.0, 1.0]), true, true) = (
+                f,
+                obs.extras().is_empty(),
+                closest.is_none() || prepared.is_none(),
+            ) {
+                if acc.add_law_states(law, zc, d, closest, scale) {
+                    // A law that sums its own states (a table): no
+                    // interference, load or radius buffers.
+                    continue;
+                }
             }
             f.interferences(zc, d, &mut buf.delta[..n]);
             if let Some(m) = closest {

@@ -147,6 +147,52 @@ fn tabulated_batch_on_one_panel_and_across_panels_equals_scalar() {
     }
 }
 
+/// A tabulated law sums its own states (`add_state_sums`: interferences
+/// from the heights, groups on one panel and across panels, summits below
+/// the table, a last group not full): the same bits as `state_batch` at
+/// `(z - sep) s` followed by `StateSums::add` of each state, on approach
+/// and on retraction; a change of one load by the table's tolerance
+/// (1e-9 relative) shows in the sums.
+#[test]
+fn tabulated_state_sums_equal_the_batch_then_the_sums() {
+    use crate::numeric::lanes::{StateSums, STATE_LANES};
+    let md = Arc::new(Maugis::new(R, E_STAR, 0.5, 0.3).unwrap());
+    let law = InterpolatedLaw::new(md, -3e-9, 2e-8, 1e-9).unwrap();
+    let n = 10_003;
+    let z: Vec<f64> = (0..n)
+        .map(|k| -4e-9 + 2.4e-8 * k as f64 / (n - 1) as f64)
+        .collect();
+    let (sep, scale) = (1e-9, 0.9);
+    let bits = |s: &StateSums| s.lanes.map(|l| l.map(f64::to_bits));
+    for closest in [None, Some(-1e-8)] {
+        let delta: Vec<f64> = z.iter().map(|&x| (x - sep) * scale).collect();
+        let delta_max: Option<Vec<f64>> =
+            closest.map(|c| z.iter().map(|&x| (x - c) * scale).collect());
+        let (mut load, mut radius) = (vec![0.0; n], vec![0.0; n]);
+        law.state_batch(&delta, delta_max.as_deref(), &mut load, &mut radius);
+        let sum = |load: &[f64]| {
+            let mut s = StateSums::default();
+            for i in 0..n {
+                s.add(i % STATE_LANES, load[i], radius[i]);
+            }
+            s
+        };
+        let want = sum(&load);
+        let mut got = StateSums::default();
+        assert!(law.add_state_sums(&z, sep, closest, scale, &mut got));
+        assert_eq!(bits(&got), bits(&want), "{closest:?}");
+        assert!(want.lanes[2].iter().sum::<f64>() > 0.0, "no contact");
+        load[n / 2] *= 1.0 + 1e-9;
+        assert_ne!(bits(&got), bits(&sum(&load)), "{closest:?}");
+    }
+    // A law that does not sum its own states adds nothing.
+    let mut s = StateSums::default();
+    assert!(!Hertz::new(R, E_STAR)
+        .unwrap()
+        .add_state_sums(&z, sep, None, scale, &mut s));
+    assert_eq!(s, StateSums::default());
+}
+
 /// The laws that say they are reversible (Monte Carlo then skips their
 /// maximum interferences on retraction) retract along their approach bit
 /// for bit; no hysteretic law says so.

@@ -15,6 +15,39 @@ pub fn sqrt_lanes<S: pulp::Simd>(simd: S, v: &mut [f64]) {
     }
 }
 
+/// Lanes of [`StateSums`] (fixed: part of the reduction order).
+pub const STATE_LANES: usize = 8;
+
+/// Lane sums of contact states: `lanes[k][j]` for `k` = load `P`, area
+/// `pi a^2`, count `[a > 0]` and their squares (the count's square is the
+/// count), lane `j`. A run of states adds state `i` to lane
+/// `i mod STATE_LANES` ([`add`](Self::add)), so the order of the additions
+/// in a lane, and the sums, do not depend on who computes the states (the
+/// Monte Carlo lane sums, or a law adding its own states,
+/// [`AsperityLaw::add_state_sums`](crate::law::AsperityLaw::add_state_sums)).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct StateSums {
+    /// `[P, pi a^2, [a > 0], P^2, (pi a^2)^2, [a > 0]]`, each per lane.
+    pub lanes: [[f64; STATE_LANES]; 6],
+}
+
+impl StateSums {
+    /// Adds load `p` (N), area `pi a^2` and count `[a > 0]` of one state
+    /// (radius `a`, m) and their squares to lane `j` (`j < STATE_LANES`).
+    #[inline(always)]
+    pub fn add(&mut self, j: usize, p: f64, a: f64) {
+        let acc = &mut self.lanes;
+        let area = std::f64::consts::PI * a * a;
+        let c = if a > 0.0 { 1.0 } else { 0.0 };
+        acc[0][j] += p;
+        acc[1][j] += area;
+        acc[2][j] += c;
+        acc[3][j] += p * p;
+        acc[4][j] += area * area;
+        acc[5][j] += c;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,12 +2,13 @@
 //! `[a > 0]` and their squares added to lane `i mod LANES` of its chunk,
 //! the lanes combined in a fixed tree at the end of the block (so the sums
 //! do not depend on the SIMD width or the thread count), and Hertz's state
-//! computed inside the same pass ([`Accumulator::add_root_monomials`]).
+//! computed inside the same pass ([`Accumulator::add_root_monomials`]), a
+//! tabulated law's by the law itself ([`Accumulator::add_law_states`]).
 
 use super::{Partial, CHUNK, LANES};
-use crate::law::ContactState;
+use crate::law::{AsperityLaw, ContactState};
 use crate::loading::{Observables, EXTRA_SLOTS};
-use std::f64::consts::PI;
+use crate::numeric::lanes::StateSums;
 
 /// Stack buffers of one chunk.
 pub(super) struct Buffers {
@@ -33,7 +34,7 @@ impl Buffers {
 /// summit order.
 #[derive(Default)]
 pub(super) struct Accumulator {
-    lanes: [[f64; LANES]; 6],
+    lanes: StateSums,
     extras: Partial,
 }
 
@@ -77,14 +78,30 @@ impl Accumulator {
         });
     }
 
+    /// [`add_chunk`](Self::add_chunk) of `law`'s states at interferences
+    /// `(z - sep) scale` (after `(z - closest) scale`), summed by the law
+    /// in the same lanes and order ([`AsperityLaw::add_state_sums`]), so
+    /// the same bits; `false` (nothing added) when the law does not fuse.
+    #[inline]
+    pub(super) fn add_law_states(
+        &mut self,
+        law: &dyn AsperityLaw,
+        z: &[f64],
+        sep: f64,
+        closest: Option<f64>,
+        scale: f64,
+    ) -> bool {
+        law.add_state_sums(z, sep, closest, scale, &mut self.lanes)
+    }
+
     /// Lanes combined in a fixed tree: `((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7))`.
     pub(super) fn finish(&self) -> Partial {
         let mut p = self.extras;
         let tree =
             |l: &[f64; LANES]| ((l[0] + l[1]) + (l[2] + l[3])) + ((l[4] + l[5]) + (l[6] + l[7]));
         for k in 0..3 {
-            p.sum[k] = tree(&self.lanes[k]);
-            p.sq[k] = tree(&self.lanes[3 + k]);
+            p.sum[k] = tree(&self.lanes.lanes[k]);
+            p.sq[k] = tree(&self.lanes.lanes[3 + k]);
         }
         p
     }
@@ -94,7 +111,7 @@ impl Accumulator {
 /// `i mod LANES` (lengths multiples of [`LANES`]); branch-free, vectorised
 /// at the widest SIMD the CPU has ([`pulp::Arch`]).
 #[inline]
-fn lane_sums(load: &[f64], radius: &[f64], lanes: &mut [[f64; LANES]; 6]) {
+fn lane_sums(load: &[f64], radius: &[f64], lanes: &mut StateSums) {
     crate::numeric::simd::arch().dispatch(LaneSums {
         load,
         radius,
@@ -109,7 +126,7 @@ fn lane_sums(load: &[f64], radius: &[f64], lanes: &mut [[f64; LANES]; 6]) {
 struct LaneSums<'a> {
     load: &'a [f64],
     radius: &'a [f64],
-    lanes: &'a mut [[f64; LANES]; 6],
+    lanes: &'a mut StateSums,
 }
 
 impl pulp::WithSimd for LaneSums<'_> {
@@ -124,7 +141,7 @@ impl pulp::WithSimd for LaneSums<'_> {
             .zip(self.radius.chunks_exact(LANES))
         {
             for j in 0..LANES {
-                add_state(&mut acc, j, l[j], r[j]);
+                acc.add(j, l[j], r[j]);
             }
         }
         *self.lanes = acc;
@@ -138,7 +155,7 @@ struct RootMonomialSums<'a> {
     scale: f64,
     k: f64,
     c: f64,
-    lanes: &'a mut [[f64; LANES]; 6],
+    lanes: &'a mut StateSums,
 }
 
 impl pulp::WithSimd for RootMonomialSums<'_> {
@@ -167,7 +184,7 @@ impl pulp::WithSimd for RootMonomialSums<'_> {
 /// One lane group of [`RootMonomialSums`].
 #[inline(always)]
 fn root_monomial_group(
-    acc: &mut [[f64; LANES]; 6],
+    acc: &mut StateSums,
     z: &[f64; LANES],
     sep: f64,
     scale: f64,
@@ -179,20 +196,6 @@ fn root_monomial_group(
         (p[j], a[j]) = crate::law::hertz::root_monomial_state((z[j] - sep) * scale, k, c);
     }
     for j in 0..LANES {
-        add_state(acc, j, p[j], a[j]);
+        acc.add(j, p[j], a[j]);
     }
-}
-
-/// Adds load `p` (N), area `pi a^2` and count `[a > 0]` of one summit
-/// (radius `a`, m) and their squares to lane `j`.
-#[inline(always)]
-fn add_state(acc: &mut [[f64; LANES]; 6], j: usize, p: f64, a: f64) {
-    let area = PI * a * a;
-    let c = if a > 0.0 { 1.0 } else { 0.0 };
-    acc[0][j] += p;
-    acc[1][j] += area;
-    acc[2][j] += c;
-    acc[3][j] += p * p;
-    acc[4][j] += area * area;
-    acc[5][j] += c;
 }
