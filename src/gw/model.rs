@@ -34,7 +34,7 @@ use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Tota
 use crate::numeric::quadrature::{
     integrate_pieces_batch, kronrod21_batch, kronrod21_pieces, QuadOptions,
 };
-use curve_fit::CURVE_FIT_MIN_STATES;
+use curve_fit::{CURVE_FIT_MIN_RTOL, CURVE_FIT_MIN_STATES};
 use rayon::prelude::*;
 use root_rule::{RootPlan, FIXED_RULE_MIN_RTOL, ROOT_BATCH};
 use std::sync::Arc;
@@ -472,8 +472,15 @@ impl GwModel {
     /// least [`FIXED_RULE_MIN_RTOL`], no closed form, no finite sample of
     /// heights, a law smooth in the root of its interference.
     fn fixed_root_rule(&self, obs: &Observables) -> bool {
+        self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL && self.root_rule_serves(obs)
+    }
+
+    /// Whether the rules in the root (fixed or adaptive) serve approach
+    /// states asking for `obs`: [`Method::Auto`], no closed form, no
+    /// finite sample of heights, a law smooth in the root of its
+    /// interference.
+    fn root_rule_serves(&self, obs: &Observables) -> bool {
         self.accuracy.method == Method::Auto
-            && self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL
             && self.law.smooth_in_root()
             && !self.has_closed_form(obs)
             && self.distribution.sample_points().is_none()
@@ -897,7 +904,10 @@ impl LoadingModel for GwModel {
         // States the fixed rules in the root serve go in batches of
         // ROOT_BATCH (each state's bits are those it has alone).
         let fixed = self.fixed_root_rule(observables);
-        if fixed && steps.len() >= CURVE_FIT_MIN_STATES {
+        if steps.len() >= CURVE_FIT_MIN_STATES
+            && self.accuracy.rel_tol >= CURVE_FIT_MIN_RTOL
+            && self.root_rule_serves(observables)
+        {
             // One trip into the pool: the loops inside then run on its
             // threads without handing work across (none with one thread).
             let fitted = if rayon::current_num_threads() > 1 {

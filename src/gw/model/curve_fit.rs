@@ -25,7 +25,7 @@
 //! relative error), plus the nodes' largest relative estimate times the
 //! Lebesgue constant of the Lobatto nodes, `1 + (2/pi) ln(n + 1)`.
 
-use super::root_rule::{RootPlan, ROOT_BATCH};
+use super::root_rule::{RootPlan, FIXED_RULE_MIN_RTOL, ROOT_BATCH};
 use super::GwModel;
 use crate::error::Result;
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
@@ -35,6 +35,8 @@ use rayon::prelude::*;
 /// Fewest states of a curve worth an interpolant (a panel costs 17 to 65
 /// quadrature states).
 pub(super) const CURVE_FIT_MIN_STATES: usize = 128;
+/// Tightest tolerance the interpolant serves (its nodes then at 1e-11).
+pub(super) const CURVE_FIT_MIN_RTOL: f64 = 1e-10;
 /// Nodes' tolerance as a share of the curve's.
 const NODE_RTOL_SHARE: f64 = 0.1;
 /// Lobatto orders tried on a panel before it is halved.
@@ -67,7 +69,7 @@ enum Fit {
 }
 
 impl GwModel {
-    /// The states of `steps` in order when the fixed rules in the root
+    /// The states of `steps` in order when the rules in the root
     /// serve enough of them for one interpolant of the curve: those from
     /// the interpolant ([`GwModel::fitted_states`]), the others one by one;
     /// `None` when the interpolant does not apply.
@@ -165,7 +167,7 @@ impl GwModel {
                 match fit {
                     Fit::Interpolant(panel) => panel.states(here, mask, share, &mut out),
                     Fit::Direct { .. } => {
-                        for st in self.root_states(here, obs) {
+                        for st in self.root_states_any(here, obs) {
                             out.push(st?);
                         }
                     }
@@ -180,6 +182,20 @@ impl GwModel {
                 .collect::<Result<Vec<Vec<State>>>>()
                 .map(join),
         )
+    }
+
+    /// The states of `plans` by the rules in the root: the fixed rules in
+    /// one batch at tolerances they serve, else the adaptive rule state by
+    /// state (as [`LoadingModel::state`] computes them).
+    fn root_states_any(&self, plans: &[RootPlan], obs: &Observables) -> Vec<Result<State>> {
+        if self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL {
+            self.root_states(plans, obs)
+        } else {
+            plans
+                .iter()
+                .map(|p| self.quadrature_in_root(p.d, p.s_lo, p.s_hi, obs))
+                .collect()
+        }
     }
 
     /// The interpolant of `[lo, hi]` at the first Lobatto order in
@@ -215,7 +231,9 @@ impl GwModel {
                     (s_hi > s_lo && far.is_none()).then_some(RootPlan { d, s_lo, s_hi })
                 })
                 .collect();
-            let states = join(chunks(&plans?, ROOT_BATCH, |c| self.root_states(c, obs)));
+            let states = join(chunks(&plans?, ROOT_BATCH, |c| {
+                self.root_states_any(c, obs)
+            }));
             let mut fresh = Vec::with_capacity(states.len());
             for st in states {
                 let st = st.ok()?;
@@ -455,7 +473,7 @@ mod tests {
                 .with_accuracy(Accuracy::new(1e-12).unwrap())
                 .states(&steps, obs)
                 .unwrap();
-            for tol in [1e-6, 1e-3] {
+            for tol in [1e-8, 1e-6, 1e-3] {
                 let m = m.clone().with_accuracy(Accuracy::new(tol).unwrap());
                 let pool = |n| {
                     rayon::ThreadPoolBuilder::new()
