@@ -152,6 +152,9 @@ fn a_run_reports_progress_on_a_non_terminal_stderr() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(0), "{err}");
     assert!(err.contains("run: 240/240 curve states (100 %)"), "{err}");
+    // Planning (a first-time calibration can take seconds) says when it
+    // ended once the delay has passed.
+    assert!(err.contains("plan: done in "), "{err}");
     let lines = err.lines().filter(|l| l.starts_with("run: ")).count();
     assert!((2..=12).contains(&lines), "{lines} progress lines:\n{err}");
     // Without the override a sub-second run stays quiet.
@@ -163,6 +166,7 @@ fn a_run_reports_progress_on_a_non_terminal_stderr() {
         .unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(!err.contains("run: "), "{err}");
+    assert!(!err.contains("plan: "), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -19,7 +19,7 @@ pub fn run() -> crate::CliResult {
     laws_table()?;
     println!();
     let scene = Scene::from_toml(DEFAULT_STUDY)?;
-    let plan = Plan::new(&scene, PlanMode::Planned)?;
+    let plan = crate::run_cmd::planning(|| Plan::new(&scene, PlanMode::Planned))?;
     let results = plan.run()?;
     separation_table(&scene, &results);
     println!();

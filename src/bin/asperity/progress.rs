@@ -112,3 +112,66 @@ impl Progress {
         }
     }
 }
+
+/// Runs `work`, saying on stderr that `what` is still going once it has
+/// taken longer than `after` (or `ASPERITY_PROGRESS_AFTER` seconds): `note`
+/// says why it can take a while; then an elapsed-time spinner on a
+/// terminal, or a plain line every [`PERIOD`], and one line with its time
+/// when it ends. Work that has no count of units (planning, which may solve
+/// the full sphere law for a first-time calibration) gets this instead of a
+/// bar.
+pub fn waiting<T>(what: &'static str, note: &str, after: Duration, work: impl FnOnce() -> T) -> T {
+    let after = std::env::var("ASPERITY_PROGRESS_AFTER")
+        .ok()
+        .and_then(|s| s.trim().parse::<f64>().ok())
+        .filter(|s| s.is_finite() && *s >= 0.0)
+        .map_or(after, Duration::from_secs_f64);
+    let t0 = Instant::now();
+    let (done, wait) = std::sync::mpsc::channel::<()>();
+    let out = std::thread::scope(|s| {
+        s.spawn(move || {
+            use std::sync::mpsc::RecvTimeoutError::Timeout;
+            if !matches!(wait.recv_timeout(after), Err(Timeout)) {
+                return;
+            }
+            eprintln!(
+                "{what}: still running after {:.1} s ({note})",
+                t0.elapsed().as_secs_f64()
+            );
+            let spinner = std::io::stderr().is_terminal().then(|| {
+                let bar = ProgressBar::new_spinner();
+                if let Ok(style) = ProgressStyle::with_template(&format!(
+                    "{what}: {{spinner}} elapsed {{elapsed}}"
+                )) {
+                    bar.set_style(style);
+                }
+                bar
+            });
+            let tick = if spinner.is_some() {
+                Duration::from_millis(100)
+            } else {
+                PERIOD
+            };
+            while matches!(wait.recv_timeout(tick), Err(Timeout)) {
+                match &spinner {
+                    Some(bar) => bar.tick(),
+                    None => eprintln!(
+                        "{what}: still running, elapsed {:.0} s",
+                        t0.elapsed().as_secs_f64()
+                    ),
+                }
+            }
+            if let Some(bar) = spinner {
+                bar.finish_and_clear();
+            }
+        });
+        let out = work();
+        drop(done);
+        out
+    });
+    let elapsed = t0.elapsed();
+    if elapsed >= after {
+        eprintln!("{what}: done in {:.1} s", elapsed.as_secs_f64());
+    }
+    out
+}

@@ -49,12 +49,26 @@ pub fn run(args: &RunArgs) -> crate::CliResult {
             print!("{}", Plan::preview_in(&scene, mode, base)?);
             return Ok(());
         } else {
-            Plan::new_in(&scene, mode, base)?
+            planning(|| Plan::new_in(&scene, mode, base))?
         };
         let results = plan.run()?;
         return report(&plan, &results, &args.out, args.json);
     }
     execute(&scene, mode, &args.out, args.json, args.plan)
+}
+
+/// `plan` with a note on stderr when it takes longer than
+/// [`QUIET_FOR`](crate::progress::QUIET_FOR): a law calibrated from the full
+/// Lennard-Jones sphere solver is computed on its first run (a few
+/// seconds), then read from the disk cache.
+pub fn planning<T>(plan: impl FnOnce() -> T) -> T {
+    crate::progress::waiting(
+        "plan",
+        "a law calibrated from the full Lennard-Jones sphere solver is computed on its first \
+         run, then read from the cache",
+        crate::progress::QUIET_FOR,
+        plan,
+    )
 }
 
 /// Plans, runs and writes one scene; prints the plan, a summary or JSON.
@@ -73,7 +87,7 @@ pub fn execute(
         }
         return Ok(());
     }
-    let plan = Plan::new(scene, mode)?;
+    let plan = planning(|| Plan::new(scene, mode))?;
     // Runs longer than ~2 s show curve states done on stderr.
     let bar = crate::progress::Progress::new("run", "curve states", crate::progress::QUIET_FOR);
     let results = plan.run_with_progress(&|done, total| bar.update(done, total));
