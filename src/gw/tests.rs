@@ -149,9 +149,49 @@ fn fixed_rule_converges_as_panels_grow() {
     assert!(last < 1e-10, "{last}");
 }
 
+/// Hertz and Kogut–Etsion summits of the gold surface `s` (laws smooth in
+/// the root of their interference), and load, area and count with
+/// [`AreaAgain`] (no closed form).
+pub(crate) fn root_smooth_laws(
+    s: &RoughSurface,
+) -> (Arc<dyn AsperityLaw>, Arc<dyn AsperityLaw>, Observables) {
+    use crate::law::plastic::build;
+    use crate::material::plastic::{Plasticity, Variant};
+    let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
+    let ke = build(Variant::KogutEtsion, s.radius, 4.796e10, Plasticity::gold())
+        .unwrap()
+        .as_law();
+    let extra = Observables::ALL
+        .with(crate::loading::Observable::Custom(Arc::new(AreaAgain)))
+        .unwrap();
+    (hertz, ke, extra)
+}
+
+/// Every total of `st` within `tol` of the reference `r` and within its
+/// own error estimate (plus 1e-13 of the reference, the reference's own
+/// error).
+pub(crate) fn assert_within_tolerance_and_estimate(
+    st: &crate::loading::State,
+    r: &crate::loading::State,
+    tol: f64,
+    law: &str,
+) {
+    let d = st.separation;
+    for k in 0..crate::loading::SLOTS {
+        let (Some(a), Some(b)) = (st.totals.get(k), r.totals.get(k)) else {
+            continue;
+        };
+        let e = st.totals.error(k).unwrap();
+        assert!(
+            (a - b).abs() <= tol * b.abs() && (a - b).abs() <= e + 1e-13 * b.abs(),
+            "{law} tol {tol} d {d:e} slot {k}: {a} vs {b} (estimate {e:e})"
+        );
+    }
+}
+
 /// A per-asperity observable that forces quadrature (`pi a^2` again).
 #[derive(Debug)]
-pub(crate) struct AreaAgain;
+struct AreaAgain;
 
 impl crate::loading::PerAsperity for AreaAgain {
     fn name(&self) -> &str {
@@ -223,17 +263,8 @@ fn root_rule_meets_the_tolerance_against_closed_forms() {
 #[test]
 fn fixed_root_rules_in_batches_are_the_single_states() {
     use crate::heights::Gaussian;
-    use crate::law::plastic::build;
-    use crate::loading::Observable;
-    use crate::material::plastic::{Plasticity, Variant};
     let s = RoughSurface::gold_microswitch();
-    let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
-    let ke = build(Variant::KogutEtsion, s.radius, 4.796e10, Plasticity::gold())
-        .unwrap()
-        .as_law();
-    let extra = Observables::ALL
-        .with(Observable::Custom(Arc::new(AreaAgain)))
-        .unwrap();
+    let (hertz, ke, extra) = root_smooth_laws(&s);
     let steps: Vec<(f64, History)> = (0..75)
         .map(|i| ((-3.0 + 0.1 * i as f64) * s.sigma, History::Approach))
         .collect();
@@ -254,17 +285,7 @@ fn fixed_root_rules_in_batches_are_the_single_states() {
                 assert_eq!(st, &one, "{} tol {tol} d {d:e}", m.law().name());
                 assert_eq!(st.method, MethodUsed::Quadrature);
                 evaluations += st.evaluations;
-                for k in 0..4 {
-                    let (Some(a), Some(b)) = (st.totals.get(k), r.totals.get(k)) else {
-                        continue;
-                    };
-                    let e = st.totals.error(k).unwrap();
-                    assert!(
-                        (a - b).abs() <= tol * b.abs() && (a - b).abs() <= e + 1e-13 * b.abs(),
-                        "{} tol {tol} d {d:e} slot {k}: {a} vs {b} (estimate {e:e})",
-                        m.law().name()
-                    );
-                }
+                assert_within_tolerance_and_estimate(st, r, tol, m.law().name());
             }
             assert!(evaluations < last, "{}: {evaluations}", m.law().name());
             last = evaluations;

@@ -441,12 +441,9 @@ fn lobatto_coefficients(y: &[f64], cos: &[f64]) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gw::tests::AreaAgain;
+    use crate::gw::tests::{assert_within_tolerance_and_estimate, root_smooth_laws};
     use crate::gw::{Accuracy, RoughSurface};
     use crate::heights::{Gaussian, TruncatedGaussian};
-    use crate::law::plastic::build;
-    use crate::law::{AsperityLaw, Hertz};
-    use crate::material::plastic::{Plasticity, Variant};
     use std::sync::Arc;
 
     /// Many approach states of Hertz (with an extra total) and
@@ -458,13 +455,7 @@ mod tests {
     #[test]
     fn interpolated_curves_meet_their_tolerance() {
         let s = RoughSurface::gold_microswitch();
-        let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
-        let ke = build(Variant::KogutEtsion, s.radius, 4.796e10, Plasticity::gold())
-            .unwrap()
-            .as_law();
-        let extra = Observables::ALL
-            .with(crate::loading::Observable::Custom(Arc::new(AreaAgain)))
-            .unwrap();
+        let (hertz, ke, extra) = root_smooth_laws(&s);
         // The bulk, and -6 sigma to 33 sigma, where the density is 1e-237
         // (at 1e-8 the range is halved: 65 and 17 nodes).
         let bulk: Vec<(f64, History)> = (0..CURVE_FIT_MIN_STATES + 72)
@@ -496,19 +487,9 @@ mod tests {
                 let one = pool(1).install(|| m.states(steps, obs).unwrap());
                 let two = pool(2).install(|| m.states(steps, obs).unwrap());
                 assert_eq!(one, two, "{} tol {tol}: threads", law.name());
-                for ((st, r), &(d, _)) in one.iter().zip(&reference).zip(steps) {
+                for (st, r) in one.iter().zip(&reference) {
                     assert_eq!(st.method, MethodUsed::Interpolated);
-                    for k in 0..SLOTS {
-                        let (Some(a), Some(b)) = (st.totals.get(k), r.totals.get(k)) else {
-                            continue;
-                        };
-                        let e = st.totals.error(k).unwrap();
-                        assert!(
-                            (a - b).abs() <= tol * b.abs() && (a - b).abs() <= e + 1e-13 * b.abs(),
-                            "{} tol {tol} d {d:e} slot {k}: {a} vs {b} (estimate {e:e})",
-                            law.name()
-                        );
-                    }
+                    assert_within_tolerance_and_estimate(st, r, tol, law.name());
                 }
             }
             let bounded = GwModel::new(s, Arc::new(TruncatedGaussian::new(3.0).unwrap()), law)
