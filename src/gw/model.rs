@@ -372,14 +372,11 @@ impl GwModel {
             });
         }
         if far.is_none() && self.root_rule_applies(history) {
-            if self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL {
-                let plan = RootPlan { d, s_lo, s_hi };
-                let mut one = self.root_states(&[plan], obs);
-                return one
-                    .pop()
-                    .unwrap_or_else(|| self.quadrature_in_root(d, s_lo, s_hi, obs));
-            }
-            return self.quadrature_in_root(d, s_lo, s_hi, obs);
+            let plan = RootPlan { d, s_lo, s_hi };
+            return self
+                .root_states_any(&[plan], obs)
+                .pop()
+                .unwrap_or_else(|| self.quadrature_in_root(d, s_lo, s_hi, obs));
         }
         let points = self.split_points(d, history, s_lo, s_hi);
         let load_only = obs.load_only();

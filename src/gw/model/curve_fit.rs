@@ -25,7 +25,7 @@
 //! relative error), plus the nodes' largest relative estimate times the
 //! Lebesgue constant of the Lobatto nodes, `1 + (2/pi) ln(n + 1)`.
 
-use super::root_rule::{RootPlan, FIXED_RULE_MIN_RTOL, ROOT_BATCH};
+use super::root_rule::{RootPlan, ROOT_BATCH};
 use super::GwModel;
 use crate::error::Result;
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
@@ -78,6 +78,11 @@ impl GwModel {
         steps: &[(f64, History)],
         obs: &Observables,
     ) -> Option<Result<Vec<State>>> {
+        // Bounded heights: the density has an edge, and `F` a kink.
+        let (lo, hi) = self.distribution.support();
+        if steps.len() < CURVE_FIT_MIN_STATES || lo > f64::MIN || hi < f64::MAX {
+            return None;
+        }
         let plans: Vec<Option<RootPlan>> =
             join(chunks(steps, EVAL_CHUNK, |c| self.root_plans(c, true)));
         let batch: Vec<RootPlan> = plans.iter().flatten().copied().collect();
@@ -97,7 +102,11 @@ impl GwModel {
         let others: Result<Vec<State>> = chunks(&others, 1, |c| self.state(c[0].0, c[0].1, obs))
             .into_iter()
             .collect();
-        let (mut fitted, mut others) = (fitted.into_iter(), others.ok()?.into_iter());
+        let others = match others {
+            Ok(v) => v,
+            Err(e) => return Some(Err(e)),
+        };
+        let (mut fitted, mut others) = (fitted.into_iter(), others.into_iter());
         Some(Ok(plans
             .iter()
             .map(|p| match p {
@@ -111,15 +120,10 @@ impl GwModel {
     /// The states of `plans` (approach, or a reversible law: functions of
     /// `d` alone) from an interpolant of the curve, in order; `None` where
     /// the interpolant does not apply: fewer than [`CURVE_FIT_MIN_STATES`]
-    /// states, heights bounded on either side (the density then has an
-    /// edge, and `F` a kink), or a node whose totals are not all positive.
-    pub(super) fn fitted_states(
-        &self,
-        plans: &[RootPlan],
-        obs: &Observables,
-    ) -> Option<Result<Vec<State>>> {
-        let (lo, hi) = self.distribution.support();
-        if plans.len() < CURVE_FIT_MIN_STATES || lo > f64::MIN || hi < f64::MAX {
+    /// states, or a node whose totals are not all positive. The heights
+    /// are unbounded ([`GwModel::curve_states`] checks).
+    fn fitted_states(&self, plans: &[RootPlan], obs: &Observables) -> Option<Result<Vec<State>>> {
+        if plans.len() < CURVE_FIT_MIN_STATES {
             return None;
         }
         let (a, b) = plans
@@ -182,20 +186,6 @@ impl GwModel {
                 .collect::<Result<Vec<Vec<State>>>>()
                 .map(join),
         )
-    }
-
-    /// The states of `plans` by the rules in the root: the fixed rules in
-    /// one batch at tolerances they serve, else the adaptive rule state by
-    /// state (as [`LoadingModel::state`] computes them).
-    fn root_states_any(&self, plans: &[RootPlan], obs: &Observables) -> Vec<Result<State>> {
-        if self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL {
-            self.root_states(plans, obs)
-        } else {
-            plans
-                .iter()
-                .map(|p| self.quadrature_in_root(p.d, p.s_lo, p.s_hi, obs))
-                .collect()
-        }
     }
 
     /// The interpolant of `[lo, hi]` at the first Lobatto order in
@@ -492,6 +482,11 @@ mod tests {
                     assert_within_tolerance_and_estimate(st, r, tol, law.name());
                 }
             }
+            // A bad separation among many is named, not interpolated over.
+            let mut bad = steps.clone();
+            bad[7].0 = f64::NAN;
+            let e = m.states(&bad, obs).unwrap_err().to_string();
+            assert!(e.contains("separation"), "{e}");
             let bounded = GwModel::new(s, Arc::new(TruncatedGaussian::new(3.0).unwrap()), law)
                 .unwrap()
                 .with_accuracy(Accuracy::new(1e-6).unwrap());

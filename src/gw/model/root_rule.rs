@@ -216,6 +216,24 @@ impl GwModel {
             .collect()
     }
 
+    /// The states of `plans` by the rules in the root: the fixed rules in
+    /// one batch at tolerances they serve, else the adaptive rule state by
+    /// state (as [`LoadingModel::state`] computes them).
+    pub(super) fn root_states_any(
+        &self,
+        plans: &[RootPlan],
+        obs: &Observables,
+    ) -> Vec<Result<State>> {
+        if self.accuracy.rel_tol >= FIXED_RULE_MIN_RTOL {
+            self.root_states(plans, obs)
+        } else {
+            plans
+                .iter()
+                .map(|p| self.quadrature_in_root(p.d, p.s_lo, p.s_hi, obs))
+                .collect()
+        }
+    }
+
     /// One pass of the fixed rules (`n_tol` nodes over a whole range) over
     /// the states `pending` of `plans`: their sums, in order. Compiled for
     /// the CPU's widest vectors ([`pulp::Arch`]; the law, density and
