@@ -43,7 +43,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             &summit_law,
             &program,
             p.first_seed + k,
-            p.draw,
         )?;
         draw += t.elapsed().as_secs_f64();
         let t = Instant::now();

@@ -205,6 +205,35 @@ fn quantile_round_trips() {
         assert!(d.quantile(-0.1).is_nan());
         assert!(d.quantile(1.5).is_nan());
     }
+    // The upper quantile: P(S > s) = q to 1e-12 relative, down to q =
+    // 1e-300 (where 1 - q is 1 and the quantile of it is lost).
+    for d in &dists {
+        for q in [
+            1e-300, 1e-100, 1e-30, 1e-12, 1e-5, 0.01, 0.3, 0.5, 0.7, 0.99,
+        ] {
+            let s = d.quantile_upper(q);
+            assert!(s.is_finite(), "{} q {q}", d.name());
+            let res = 2.0 * s.abs() * f64::EPSILON * d.pdf(s);
+            let upper = d.tail(s);
+            if q <= 0.5 {
+                assert!(
+                    (upper - q).abs() <= 1e-12 * q + res,
+                    "{} q {q}: {upper}",
+                    d.name()
+                );
+            } else {
+                let lower = 1.0 - upper;
+                assert!(
+                    (lower - (1.0 - q)).abs() <= 1e-12 * (1.0 - q) + res + 1e-16,
+                    "{} q {q}: {upper}",
+                    d.name()
+                );
+            }
+        }
+        assert!(d.quantile_upper(f64::NAN).is_nan());
+        assert!(d.quantile_upper(-0.1).is_nan());
+        assert!(d.quantile_upper(1.5).is_nan());
+    }
     // Gaussian lower tail to 1e-300: exact symmetric check.
     let g = Gaussian::new();
     for p in [1e-300, 1e-100, 1e-20] {

@@ -73,6 +73,14 @@ impl HeightDistribution for Exponential {
         -(-p).ln_1p()
     }
 
+    fn quantile_upper(&self, q: f64) -> f64 {
+        if !(0.0..=1.0).contains(&q) {
+            return f64::NAN;
+        }
+        // P(S > s) = exp(-s)
+        -q.ln()
+    }
+
     fn numerical_support(&self, eps: f64) -> (f64, f64) {
         (0.0, -super::gaussian::clamp_eps(eps).ln())
     }

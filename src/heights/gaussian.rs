@@ -80,6 +80,10 @@ impl HeightDistribution for Gaussian {
         normal::quantile(p)
     }
 
+    fn quantile_upper(&self, q: f64) -> f64 {
+        normal::inverse_tail(q)
+    }
+
     fn numerical_support(&self, eps: f64) -> (f64, f64) {
         let s = normal::inverse_tail(clamp_eps(eps));
         (-s, s)

@@ -120,6 +120,15 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     /// Quantile `s` with `P(S <= s) = p`, `p` in `(0, 1)`; used to sample.
     fn quantile(&self, p: f64) -> f64;
 
+    /// Upper quantile `s` with `P(S > s) = q`, `q` in `(0, 1)`: accurate
+    /// for small `q`, where `1 - q` has lost its digits (the highest
+    /// summits of a large draw). Default: `quantile(1 - q)`, which loses
+    /// nothing where `q` is not below ~1e-8 relative to the quantile's own
+    /// slope (distributions with an accurate closed form override it).
+    fn quantile_upper(&self, q: f64) -> f64 {
+        self.quantile(1.0 - q)
+    }
+
     /// Interval outside which the density carries less than `eps` of the
     /// probability in each tail; integrators skip heights beyond it.
     fn numerical_support(&self, eps: f64) -> (f64, f64);

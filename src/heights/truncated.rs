@@ -179,6 +179,18 @@ impl HeightDistribution for TruncatedGaussian {
         }
     }
 
+    fn quantile_upper(&self, q: f64) -> f64 {
+        if !(0.0..=1.0).contains(&q) {
+            return f64::NAN;
+        }
+        // The same nearer-tail solve with the upper mass q Z given exactly.
+        if q <= 0.5 {
+            self.upper_point(q * self.z)
+        } else {
+            -self.upper_point((1.0 - q) * self.z)
+        }
+    }
+
     fn numerical_support(&self, eps: f64) -> (f64, f64) {
         let s = normal::inverse_tail(super::gaussian::clamp_eps(eps));
         (-(s.min(self.k)), s.min(self.k))

@@ -179,6 +179,14 @@ impl HeightDistribution for Weibull {
         self.scale * (-(-p).ln_1p()).powf(1.0 / self.shape)
     }
 
+    fn quantile_upper(&self, q: f64) -> f64 {
+        if !(0.0..=1.0).contains(&q) {
+            return f64::NAN;
+        }
+        // P(S > s) = exp(-(s/scale)^shape)
+        self.scale * (-q.ln()).powf(1.0 / self.shape)
+    }
+
     fn numerical_support(&self, eps: f64) -> (f64, f64) {
         let e = super::gaussian::clamp_eps(eps);
         (0.0, self.scale * (-e.ln()).powf(1.0 / self.shape))

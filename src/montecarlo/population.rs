@@ -1,13 +1,20 @@
 //! Random summit populations: heights from any [`HeightDistribution`],
 //! optionally lognormal radii, drawn reproducibly.
 //!
-//! **Heights** are drawn as sorted uniform order statistics mapped through
-//! the quantile: with `E_1 .. E_(N+1)` independent standard exponentials and
-//! `S_i = E_1 + .. + E_i`, the ratios `U_(i) = S_i / S_(N+1)` are distributed
-//! exactly as the order statistics of `N` uniforms (Devroye, *Non-Uniform
-//! Random Variate Generation*, 1986, §V.2), so `z_i = sigma Q(U_(i))` is an
-//! exact sample of `N` summit heights, already ascending: no sort. Cost:
-//! one logarithm and one quantile per summit.
+//! **Heights** are drawn from the top down as sorted order statistics
+//! (Rényi's representation): with `E_1 .. E_N` independent standard
+//! exponentials and `S_k = E_1/N + E_2/(N - 1) + .. + E_k/(N - k + 1)`,
+//! the `k`-th highest of `N` uniforms is distributed exactly as
+//! `exp(-S_k)` (Rényi 1953; Devroye, *Non-Uniform Random Variate
+//! Generation*, 1986, §V.3), so the `k`-th highest summit is
+//! `z_k = sigma Q_up(1 - exp(-S_k))`, `Q_up` the upper quantile (the
+//! height with that probability above it; its argument `-expm1(-S_k)` is
+//! exact where it is small, the quantile of `exp(-S_k)` is taken in the
+//! lower half). An exact sample of `N` heights, already sorted, and its
+//! highest summits come first: the summits above a height are drawn
+//! without the rest ([`Population::sample_above`]), at a cost that does
+//! not grow with `N`. Cost: a logarithm, an exponential and a quantile
+//! per summit drawn.
 //!
 //! **Radii** (when asked) are lognormal, `R_i = R_med exp(s Z_i)` with `Z_i`
 //! standard normal, independent of the heights (so they may be drawn in
@@ -20,7 +27,8 @@
 //! radius spec, and scale exactly with `sigma`: sweeps over `sigma` or the
 //! radius spread with one seed use common random numbers. The blocks run in
 //! parallel, the prefix sums are combined in block order, so the same seed
-//! gives bit-identical populations for any number of threads. Values can
+//! gives bit-identical populations for any number of threads, and its
+//! highest summits drawn alone are bit for bit those of the full draw. Values can
 //! change only if `rand_distr`'s normal sampler changes (radii) or the
 //! distribution's quantile does.
 
@@ -140,10 +148,13 @@ fn check_count(n: f64) -> Result<()> {
 }
 
 /// A drawn population: summit heights (m) in ascending order and, for
-/// non-fixed radii, each summit's radius (m).
+/// non-fixed radii, each summit's radius (m); when drawn above a height
+/// ([`Population::sample_above`]), the number of summits below it, not
+/// stored.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Population {
     heights: Vec<f64>,
+    omitted: usize,
     radii: Option<Vec<f64>>,
     reference_radius: f64,
 }
@@ -159,13 +170,13 @@ impl Population {
         Population::draw(spec, distribution, f64::NEG_INFINITY)
     }
 
-    /// The population [`Population::sample`] draws, with only the summits
-    /// at or above `min_height` (m) computed: the heights below it are
-    /// stored as `-inf` (their quantiles are never evaluated), everything
-    /// else, the random streams, the order and the radii included, is the
-    /// full draw's. Sums over the summits a flat reaches at separations
-    /// where the lower ones are out of range are bit for bit those of the
-    /// full population.
+    /// The summits of the population [`Population::sample`] draws that are
+    /// at or above `min_height` (m), bit for bit (heights and radii), the
+    /// others only counted ([`Population::omitted`]); at least the highest
+    /// is kept. Only these are drawn: the cost is that of the summits kept,
+    /// whatever `N`. Sums over the summits a flat reaches at separations
+    /// where the lower ones are out of range are those of the full
+    /// population.
     ///
     /// # Errors
     /// As [`Population::sample`].
@@ -184,84 +195,38 @@ impl Population {
     ) -> Result<Self> {
         spec.validate()?;
         let n = spec.summits;
-        let blocks = n.div_ceil(SAMPLING_BLOCK);
         let lognormal = match spec.radius {
             RadiusSpec::LogNormal { log_std, .. } if log_std > 0.0 => Some(log_std),
             _ => None,
         };
-        let mut heights = vec![0.0; n];
-        let mut radii = lognormal.map(|_| vec![0.0; n]);
-        // Per block: local prefix sums of exponentials (and radii), in parallel.
-        let fill = |b: usize, h: &mut [f64], r: Option<&mut [f64]>| -> f64 {
-            let mut rng = block_rng(spec.seed, b as u64);
-            let mut s = 0.0;
-            for hj in h.iter_mut() {
-                s += standard_exponential(&mut rng);
-                *hj = s;
-            }
-            if let Some(r) = r {
-                // Radii from their own stream: the heights do not depend on
-                // the radius spec (common random numbers across sweeps).
-                let mut rng = block_rng(spec.seed ^ RADIUS_STREAM, b as u64);
-                let (med, ls) = (spec.radius.reference(), lognormal.unwrap_or(0.0));
-                for rj in r.iter_mut() {
-                    let z: f64 = StandardNormal.sample(&mut rng);
-                    *rj = med * (ls * z).exp();
-                }
-            }
-            s
-        };
-        let totals: Vec<f64> = match radii.as_mut() {
-            Some(r) => heights
-                .par_chunks_mut(SAMPLING_BLOCK)
-                .zip(r.par_chunks_mut(SAMPLING_BLOCK))
-                .enumerate()
-                .map(|(b, (h, r))| fill(b, h, Some(r)))
-                .collect(),
-            None => heights
-                .par_chunks_mut(SAMPLING_BLOCK)
-                .enumerate()
-                .map(|(b, h)| fill(b, h, None))
-                .collect(),
-        };
-        // Block offsets in block order, then the (N+1)-th exponential from
-        // its own stream (block index `blocks`).
-        let mut offsets = Vec::with_capacity(blocks);
-        let mut acc = 0.0;
-        for t in &totals {
-            offsets.push(acc);
-            acc += t;
-        }
-        let total = acc + standard_exponential(&mut block_rng(spec.seed, blocks as u64));
-        // U_(i) = S_i / S_(N+1) < 1 in exact arithmetic; keep it below 1 in
-        // floating point so the quantile stays finite.
-        const BELOW_ONE: f64 = 1.0 - f64::EPSILON / 2.0;
-        let sigma = spec.sigma;
-        // Summits below `min_height` (u below `u_min`) are not computed;
-        // the margin keeps every summit whose quantile could round to or
-        // above the bound.
-        let u_min = if min_height == f64::NEG_INFINITY {
-            -1.0
+        // A summit is at or above `min_height` when its S is at most
+        // `-ln P(S <= min_height)`; the margin keeps every summit whose
+        // height could round to or above the bound.
+        let s_max = if min_height == f64::NEG_INFINITY {
+            f64::INFINITY
         } else {
-            (1.0 - distribution.tail(min_height / sigma)) * (1.0 - 1e-12) - 1e-300
+            let q = distribution.tail(min_height / spec.sigma);
+            -(-q).ln_1p() * (1.0 + 1e-12) + 1e-300
         };
-        heights
-            .par_chunks_mut(SAMPLING_BLOCK)
-            .zip(offsets.par_iter())
-            .for_each(|(h, &off)| {
+        // S_k of the summits from the top (rank 0 the highest): per block,
+        // its partial sums and the offset of the blocks above it.
+        let (mut top, offsets) = if s_max == f64::INFINITY {
+            every_rank(spec)
+        } else {
+            (ranks_up_to(spec, s_max), Vec::new())
+        };
+        let mut radii = lognormal.map(|ls| radii_from_the_top(spec, ls, top.len()));
+        let sigma = spec.sigma;
+        top.par_chunks_mut(SAMPLING_BLOCK)
+            .enumerate()
+            .for_each(|(b, h)| {
+                // (`S + 0.0 = S`: the partial draw's sums are complete.)
+                let off = offsets.get(b).copied().unwrap_or(0.0);
                 for hj in h.iter_mut() {
-                    let u = ((off + *hj) / total).min(BELOW_ONE);
-                    *hj = if u >= u_min {
-                        sigma * distribution.quantile(u)
-                    } else {
-                        f64::NEG_INFINITY
-                    };
+                    *hj = sigma * height_of_rank(distribution, *hj + off);
                 }
             });
-        if let Some(bad) = heights
-            .iter()
-            .find(|z| !z.is_finite() && **z != f64::NEG_INFINITY)
-        {
+        if let Some(bad) = top.iter().find(|z| !z.is_finite()) {
             return Err(Error::invalid(
                 "distribution",
                 format!(
@@ -270,12 +235,19 @@ impl Population {
                 ),
             ));
         }
+        // Stored ascending.
+        top.reverse();
+        if let Some(r) = radii.as_mut() {
+            r.reverse();
+        }
+        let mut heights = top;
         // A quantile that is not exactly monotone in floating point would
         // break the ordering; restore it (rare, deterministic).
         if !heights.is_sorted() {
             sort_together(&mut heights, radii.as_mut());
         }
         Ok(Population {
+            omitted: n - heights.len(),
             heights,
             radii,
             reference_radius: spec.radius.reference(),
@@ -317,14 +289,22 @@ impl Population {
         sort_together(&mut heights, radii.as_mut());
         Ok(Population {
             heights,
+            omitted: 0,
             radii,
             reference_radius,
         })
     }
 
-    /// Number of summits.
+    /// Number of summits stored (every summit, unless drawn
+    /// [above a height](Population::sample_above)).
     pub fn len(&self) -> usize {
         self.heights.len()
+    }
+
+    /// Summits of the draw below the height it was drawn above, not stored
+    /// (0 for a full draw).
+    pub fn omitted(&self) -> usize {
+        self.omitted
     }
 
     /// Always `false`: a population has at least one summit.
@@ -392,6 +372,90 @@ const RADIUS_STREAM: u64 = 0x5241_4449_5553_0001;
 /// both (distinct `(seed, b)` give unrelated streams).
 pub(crate) fn block_rng(seed: u64, b: u64) -> Xoshiro256PlusPlus {
     Xoshiro256PlusPlus::seed_from_u64(splitmix64(splitmix64(seed) ^ b))
+}
+
+/// `S_k` (see the module notes) of every summit of `spec`, from the top,
+/// as each block's own prefix sums of `E_i/(N - i)` (in parallel) and the
+/// blocks' offsets (their totals added in block order): `S_k` is the
+/// block's sum plus its offset.
+fn every_rank(spec: &PopulationSpec) -> (Vec<f64>, Vec<f64>) {
+    let n = spec.summits;
+    let mut local = vec![0.0; n];
+    let totals: Vec<f64> = local
+        .par_chunks_mut(SAMPLING_BLOCK)
+        .enumerate()
+        .map(|(b, h)| {
+            let mut rng = block_rng(spec.seed, b as u64);
+            let rest = n - b * SAMPLING_BLOCK;
+            let mut s = 0.0;
+            for (j, hj) in h.iter_mut().enumerate() {
+                s += standard_exponential(&mut rng) / (rest - j) as f64;
+                *hj = s;
+            }
+            s
+        })
+        .collect();
+    let mut offsets = Vec::with_capacity(totals.len());
+    let mut acc = 0.0;
+    for t in &totals {
+        offsets.push(acc);
+        acc += t;
+    }
+    (local, offsets)
+}
+
+/// The first `S_k` of [`every_rank`], bit for bit, while they are at most
+/// `s_max` (at least one): the same streams, sums and offsets, stopped
+/// at the first summit below.
+fn ranks_up_to(spec: &PopulationSpec, s_max: f64) -> Vec<f64> {
+    let n = spec.summits;
+    let mut s_k = Vec::new();
+    let mut off = 0.0;
+    for b in 0..n.div_ceil(SAMPLING_BLOCK) {
+        let mut rng = block_rng(spec.seed, b as u64);
+        let rest = n - b * SAMPLING_BLOCK;
+        let mut s = 0.0;
+        for j in 0..rest.min(SAMPLING_BLOCK) {
+            s += standard_exponential(&mut rng) / (rest - j) as f64;
+            let at = s + off;
+            if at > s_max && !s_k.is_empty() {
+                return s_k;
+            }
+            s_k.push(at);
+        }
+        off += s;
+    }
+    s_k
+}
+
+/// Lognormal radii of the `count` highest summits of `spec`, in rank
+/// order: block `b`'s from its own stream (independent of the heights').
+fn radii_from_the_top(spec: &PopulationSpec, log_std: f64, count: usize) -> Vec<f64> {
+    let med = spec.radius.reference();
+    let mut r = vec![0.0; count];
+    r.par_chunks_mut(SAMPLING_BLOCK)
+        .enumerate()
+        .for_each(|(b, rb)| {
+            let mut rng = block_rng(spec.seed ^ RADIUS_STREAM, b as u64);
+            for rj in rb.iter_mut() {
+                let z: f64 = StandardNormal.sample(&mut rng);
+                *rj = med * (log_std * z).exp();
+            }
+        });
+    r
+}
+
+/// The standardised height of the summit whose upper-tail probability is
+/// `1 - exp(-s_k)`: from the upper quantile of `-expm1(-s_k)` in the top
+/// half, from the quantile of `exp(-s_k)` below (each argument exact to
+/// roundoff in its half).
+#[inline]
+fn height_of_rank(distribution: &dyn HeightDistribution, s_k: f64) -> f64 {
+    if s_k <= std::f64::consts::LN_2 {
+        distribution.quantile_upper(-(-s_k).exp_m1())
+    } else {
+        distribution.quantile((-s_k).exp())
+    }
 }
 
 /// Uniform on the open interval `(0, 1)`: `(k + 1/2) 2^-53` from the top 53

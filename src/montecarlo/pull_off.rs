@@ -177,27 +177,6 @@ pub fn retraction_loads_at(
         .collect())
 }
 
-/// How the populations are drawn.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub enum Draw {
-    /// Every one of the `N` summits, exactly as
-    /// [`Population::sample`] draws them for the same seed (only the
-    /// summits the flat can reach have their heights computed,
-    /// [`Population::sample_above`]).
-    Exact,
-    /// Only the upper tail: the highest order statistics of `N` heights,
-    /// from the top down (Rényi's representation), down to the lowest
-    /// height the flat can reach. A fair draw of `N` summits at a cost
-    /// independent of `N`, but not the population
-    /// [`Population::sample`] draws for the same seed.
-    Tail,
-}
-
-/// Largest `N x seeds` drawn [`Draw::Exact`]; beyond it the populations
-/// are drawn [`Draw::Tail`] (a full draw costs about 10 ns per summit).
-pub const EXACT_DRAW_BUDGET: f64 = 2e8;
-
 /// The lowest summit height (m) that can touch or interact with the flat
 /// on the retraction of `program` under `law`; `-inf` for laws without a
 /// cutoff or with a radius spread.
@@ -218,7 +197,9 @@ pub fn lowest_reachable(law: &SummitLaw, radius: &RadiusSpec, program: &LoadingP
 /// The pull-offs (N) of the populations of `spec` with seeds
 /// `first_seed .. first_seed + seeds` (each [`realised_pull_off`] with its
 /// totals scaled by `factor`), in seed order; parallel over seeds,
-/// reproducible for any thread count.
+/// reproducible for any thread count. Population `k` is the population
+/// [`Population::sample`] draws with seed `first_seed + k`, of which only
+/// the summits the flat can reach are drawn ([`population_model`]).
 ///
 /// # Errors
 /// As [`Population::sample`] and [`realised_pull_off`]; [`Error::Invalid`]
@@ -232,7 +213,6 @@ pub fn pull_off_populations(
     factor: f64,
     first_seed: u64,
     seeds: usize,
-    draw: Draw,
 ) -> Result<Vec<f64>> {
     if seeds == 0 {
         return Err(Error::invalid("seeds", "at least one population"));
@@ -240,14 +220,16 @@ pub fn pull_off_populations(
     (0..seeds as u64)
         .into_par_iter()
         .map(|k| {
-            let mc = population_model(spec, distribution, law, program, first_seed + k, draw)?;
+            let mc = population_model(spec, distribution, law, program, first_seed + k)?;
             realised_pull_off(&mc, program, factor)
         })
         .collect()
 }
 
 /// The summed population of seed `seed` as [`pull_off_populations`] draws
-/// it (only the summits the flat can reach on `program`).
+/// it: the summits of [`Population::sample`]'s draw that the flat can reach
+/// on `program` ([`lowest_reachable`], [`Population::sample_above`]), bit
+/// for bit, at a cost independent of `N` for laws with a cutoff.
 ///
 /// # Errors
 /// As [`Population::sample`].
@@ -257,53 +239,13 @@ pub fn population_model(
     law: &SummitLaw,
     program: &LoadingProgram,
     seed: u64,
-    draw: Draw,
 ) -> Result<MonteCarlo> {
     let lowest = lowest_reachable(law, &spec.radius, program);
     let mut s = *spec;
     s.seed = seed;
-    let population = match draw {
-        Draw::Exact => Population::sample_above(&s, distribution, lowest)?,
-        Draw::Tail => tail(&s, distribution, lowest)?,
-    };
+    let population = Population::sample_above(&s, distribution, lowest)?;
     MonteCarlo::new(Arc::new(population), law.clone())
 }
-
-/// The summits of `spec` above `lowest` (m), drawn from the top down: with
-/// `E_i` standard exponentials, the `k`-th highest of `N` uniform order
-/// statistics is `exp(-sum_(i <= k) E_i/(N - i + 1))` (Rényi 1953). At
-/// least one summit (the highest) is kept.
-fn tail(
-    spec: &PopulationSpec,
-    distribution: &dyn HeightDistribution,
-    lowest: f64,
-) -> Result<Population> {
-    let radius = match spec.radius {
-        RadiusSpec::Fixed(r) => r,
-        _ => {
-            return Err(Error::invalid(
-                "radius",
-                "tail draws need one summit radius (fixed radii)",
-            ))
-        }
-    };
-    let n = spec.summits as f64;
-    let mut rng = super::population::block_rng(spec.seed ^ TAIL_STREAM, 0);
-    let mut log_u = 0.0;
-    let mut heights = Vec::new();
-    for i in 0..spec.summits {
-        log_u -= super::population::standard_exponential(&mut rng) / (n - i as f64);
-        let z = spec.sigma * distribution.quantile(log_u.exp().min(1.0 - f64::EPSILON / 2.0));
-        if z < lowest && !heights.is_empty() {
-            break;
-        }
-        heights.push(z);
-    }
-    Population::from_summits(heights, super::Radii::Fixed(radius))
-}
-
-/// Stream of the tail draws (`"TAIL"`), apart from the full draws'.
-const TAIL_STREAM: u64 = 0x5441_494c;
 
 /// The pull-offs of many populations and what they say.
 #[derive(Debug, Clone, PartialEq)]
@@ -366,10 +308,12 @@ impl PullOffStatistics {
 
     /// The `q`-quantile (N), `q` in `[0, 1]`: linear interpolation between
     /// order statistics at `(n - 1) q` (Hyndman & Fan 1996, type 7; numpy's
-    /// default). `q = 0.05` is the more tensile end.
+    /// default). `q = 0.05` is the more tensile end. The rank position
+    /// `(n - 1) q` is rounded to 1e-9 of a rank, so that levels equal but
+    /// for roundoff (`1 - 0.95` and `0.05`) give the same bits.
     pub fn quantile(&self, q: f64) -> f64 {
         let n = self.sorted.len();
-        let h = (n - 1) as f64 * q.clamp(0.0, 1.0);
+        let h = ((n - 1) as f64 * q.clamp(0.0, 1.0) * 1e9).round() / 1e9;
         let lo = h.floor() as usize;
         let hi = (lo + 1).min(n - 1);
         self.sorted[lo] + (h - lo as f64) * (self.sorted[hi] - self.sorted[lo])
@@ -436,17 +380,8 @@ mod tests {
     #[test]
     fn populations_equal_the_full_draws_seed_by_seed() {
         let (spec, law, program) = setup();
-        let values = pull_off_populations(
-            &spec,
-            &Gaussian::new(),
-            &law,
-            &program,
-            1.0,
-            7,
-            3,
-            Draw::Exact,
-        )
-        .unwrap();
+        let values =
+            pull_off_populations(&spec, &Gaussian::new(), &law, &program, 1.0, 7, 3).unwrap();
         for (k, v) in values.iter().enumerate() {
             let mut s = spec;
             s.seed = 7 + k as u64;
@@ -460,34 +395,14 @@ mod tests {
     }
 
     #[test]
-    fn tail_draws_match_the_full_draws_in_distribution() {
-        // Same N, 200 seeds each: the mean pull-offs agree within their
-        // standard errors (a 4-sigma bound fails by chance < 1e-4).
-        let (spec, law, program) = setup();
-        let run = |draw| {
-            PullOffStatistics::new(
-                pull_off_populations(&spec, &Gaussian::new(), &law, &program, 1.0, 1, 200, draw)
-                    .unwrap(),
-            )
-            .unwrap()
-        };
-        let (e, t) = (run(Draw::Exact), run(Draw::Tail));
-        let se = e.mean_standard_error().hypot(t.mean_standard_error());
-        assert!(
-            (e.mean() - t.mean()).abs() < 4.0 * se,
-            "{} {} {se}",
-            e.mean(),
-            t.mean()
-        );
-    }
-
-    #[test]
     fn statistics_match_numpy_and_the_binomial() {
         let s = PullOffStatistics::new(vec![-4.0, -1.0, -3.0, -2.0, 0.0]).unwrap();
         // numpy: mean -2, std(ddof=1) 1.5811388300841898, percentile 5 -3.8
         assert_eq!(s.mean(), -2.0);
         assert!((s.std() - 1.581_138_830_084_189_8).abs() < 1e-15);
         assert!((s.quantile(0.05) + 3.8).abs() < 1e-15);
+        // A level equal to 0.05 but for roundoff gives the same bits.
+        assert_eq!(s.quantile(1.0 - 0.95).to_bits(), s.quantile(0.05).to_bits());
         assert_eq!(s.quantile(0.5), -2.0);
         let (p, (lo, hi)) = s.fraction_beyond(2.5);
         assert_eq!(p, 0.4);

@@ -9,7 +9,7 @@ use crate::law::AsperityLaw;
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables, PullOff};
 use crate::montecarlo::pull_off::{
     candidate_separations, population_model, pull_off_evaluations, pull_off_populations,
-    retraction_loads_at, Draw, PullOffStatistics,
+    retraction_loads_at, PullOffStatistics,
 };
 use crate::montecarlo::{MonteCarlo, RadiusSpec, SummitLaw};
 use std::sync::Arc;
@@ -76,20 +76,17 @@ fn summit_law(
 }
 
 /// Estimated CPU seconds of one population over `program`, priced on the
-/// first one, `first` (with its `candidates`): its draw, and its pull-off
+/// first one, `first` (with its `candidates`): its draw (the summits the
+/// flat can reach), and its pull-off
 /// search's law evaluations
 /// ([`pull_off_evaluations`], deterministic) at the law's batch cost.
 fn cost_per_population(
-    p: &PopulationPlan,
     law: &SummitLaw,
     first: &MonteCarlo,
     candidates: &[f64],
     program: &LoadingProgram,
 ) -> f64 {
-    let draw = match p.draw {
-        Draw::Exact => p.summits as f64 * DRAW_NS,
-        _ => first.population().len() as f64 * DRAW_NS,
-    };
+    let draw = first.population().len() as f64 * DRAW_NS;
     let evaluations = pull_off_evaluations(first, program, candidates) as f64;
     (POPULATION_OVERHEAD_NS + draw + evaluations * law.law().batch_cost_ns()) * 1e-9
 }
@@ -148,14 +145,13 @@ pub fn run(
             &law,
             program,
             p.first_seed + k,
-            p.draw,
         )
     };
     // The first population prices the others (its pruned search is then
     // its example curve's).
     let first_mc = draw_one(0)?;
     let first_candidates = candidate_separations(&first_mc, program);
-    let per = cost_per_population(p, &law, &first_mc, &first_candidates, program);
+    let per = cost_per_population(&law, &first_mc, &first_candidates, program);
     let mut first = Some((first_mc, first_candidates));
     let affordable = (POPULATION_CPU_BUDGET / per.max(1e-12)).floor() as usize;
     let drawn = p.seeds.min(affordable.max(MIN_POPULATIONS));
@@ -212,7 +208,6 @@ pub fn run(
             p.factor,
             p.first_seed + shown as u64,
             drawn - shown,
-            p.draw,
         )?);
     }
     out.drawn = drawn;

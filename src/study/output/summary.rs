@@ -199,8 +199,8 @@ pub struct PopulationSummary {
     pub first_seed: u64,
     /// Summits of each, `eta A_n` rounded.
     pub summits: usize,
-    /// `"exact"` (each the `[montecarlo]` population of its seed) or
-    /// `"tail"` (the summits above the flat's reach, drawn from the top).
+    /// `"exact"`: each the `[montecarlo]` population of its seed (its
+    /// summits within the flat's reach drawn from the top, bit for bit).
     pub draw: &'static str,
     /// Mean pull-off.
     #[serde(rename = "mean_N")]
@@ -247,10 +247,7 @@ impl PopulationSummary {
             seeds: r.drawn,
             first_seed: r.plan.first_seed,
             summits: r.plan.summits,
-            draw: match r.plan.draw {
-                crate::montecarlo::pull_off::Draw::Tail => "tail",
-                _ => "exact",
-            },
+            draw: "exact",
             mean_n: s.map(|s| s.mean()),
             mean_se_n: s.map(|s| s.mean_standard_error()),
             median_n: s.map(|s| s.quantile(0.5)),

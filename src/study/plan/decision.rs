@@ -201,8 +201,6 @@ pub enum Decision {
         seeds: usize,
         /// Summits of each.
         summits: usize,
-        /// How they are drawn (`None`: not drawn).
-        draw: Option<crate::montecarlo::pull_off::Draw>,
         /// Why, in a sentence.
         why: String,
     },
@@ -283,12 +281,9 @@ impl Decision {
             }
             Decision::Topography { choice, .. } => choice.clone(),
             Decision::Sphere { radius, .. } => format!("R = {radius:e} m"),
-            Decision::PullOffPopulation { seeds, draw, .. } => match draw {
-                Some(crate::montecarlo::pull_off::Draw::Tail) => {
-                    format!("{seeds} populations (tails)")
-                }
-                Some(_) => format!("{seeds} populations"),
-                None => "none".into(),
+            Decision::PullOffPopulation { seeds, .. } => match seeds {
+                0 => "none".into(),
+                _ => format!("{seeds} populations"),
             },
         }
     }

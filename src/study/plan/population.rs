@@ -6,7 +6,6 @@ use super::{Decision, LawChoice};
 use crate::error::{Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::montecarlo::pull_off::{Draw, EXACT_DRAW_BUDGET};
 use crate::montecarlo::{PopulationSpec, RadiusSpec, MAX_SUMMITS};
 use crate::study::scene::{Scene, DEFAULT_POPULATIONS, DEFAULT_SEED};
 
@@ -25,8 +24,6 @@ pub struct PopulationPlan {
     pub factor: f64,
     /// The heights' spec (scale, radii; the seed is set per population).
     pub spec: PopulationSpec,
-    /// Every summit as the Monte Carlo mode draws it, or only the tail.
-    pub draw: Draw,
 }
 
 /// Why a scene has no pull-off distribution.
@@ -103,7 +100,6 @@ pub(super) fn plan(
             decisions.push(Decision::PullOffPopulation {
                 seeds: 0,
                 summits: 0,
-                draw: None,
                 why: why.to_string(),
             });
         }
@@ -134,21 +130,15 @@ pub(super) fn plan(
     };
     let spec = PopulationSpec::new(summits, surface.sigma, radius, first_seed)
         .map_err(|e| e.in_table("montecarlo"))?;
-    let exact =
-        n * seeds as f64 <= EXACT_DRAW_BUDGET || matches!(radius, RadiusSpec::LogNormal { .. });
-    let draw = if exact { Draw::Exact } else { Draw::Tail };
     decisions.push(Decision::PullOffPopulation {
         seeds,
         summits,
-        draw: Some(draw),
         why: format!(
             "the pull-off of one switch is the minimum of its own {summits} summits' retraction \
              curve, not the integral's minimum of the mean load: {seeds} populations with seeds \
-             {first_seed}.. ({}), each summed exactly on the retraction leg",
-            match draw {
-                Draw::Exact => "each the population [montecarlo] seed = s draws",
-                _ => "the exact tail of the heights above the flat's reach, drawn from the top",
-            }
+             {first_seed}.. (each the population [montecarlo] seed = s draws, its summits \
+             within the flat's reach drawn from the top), each summed exactly on the \
+             retraction leg"
         ),
     });
     Ok(Ok(PopulationPlan {
@@ -157,6 +147,5 @@ pub(super) fn plan(
         summits,
         factor: surface.summits() / n,
         spec,
-        draw,
     }))
 }
