@@ -126,6 +126,52 @@ fn stated_minima_bound_dense_retraction_curves() {
     }
 }
 
+/// Laws that state a concave tail (`AsperityLaw::concave_tail`): below it
+/// the load is concave in the interference on a dense grid from 1,000
+/// interference scales out to the stated interference, on approach and on
+/// retraction after any maximum (second differences at most roundoff);
+/// the calibrated laws state one.
+#[test]
+fn stated_concave_tails_are_concave() {
+    let s = Jkr::new(R, E_STAR, W).unwrap().scales().interference;
+    let mut answered = 0;
+    for (name, law) in laws() {
+        let Some(top) = law.concave_tail() else {
+            assert!(!name.starts_with("calibrated"), "{name} states no tail");
+            continue;
+        };
+        answered += 1;
+        // Geometric in the gap below the tail's top (the far field decays
+        // like gap^-2): spacing fine where the load changes fast.
+        let grid: Vec<f64> = (0..=4000)
+            .map(|i| top - 1000.0 * s * (1e-6f64).powf(i as f64 / 4000.0))
+            .collect();
+        for dm in [f64::NEG_INFINITY, top, 0.0, 20.0 * s, 2000.0 * s] {
+            let load = |d: f64| {
+                if dm == f64::NEG_INFINITY {
+                    law.state(d, asperity::law::Branch::Approach).load
+                } else {
+                    law.state_after(d, dm.max(d)).load
+                }
+            };
+            let loads: Vec<f64> = grid.iter().map(|&d| load(d)).collect();
+            let scale = loads.iter().fold(0.0f64, |m, l| m.max(l.abs()));
+            for k in 1..grid.len() - 1 {
+                let (x0, x1, x2) = (grid[k - 1], grid[k], grid[k + 1]);
+                // The chord from x0 to x2 at x1 lies below the load.
+                let t = (x1 - x0) / (x2 - x0);
+                let chord = (1.0 - t) * loads[k - 1] + t * loads[k + 1];
+                assert!(
+                    loads[k] >= chord - 1e-12 * scale,
+                    "{name} after {dm}: not concave at {x1}: {} < {chord}",
+                    loads[k]
+                );
+            }
+        }
+    }
+    assert!(answered >= 3, "{answered}");
+}
+
 #[test]
 fn monotone_marker_bounds_by_the_lower_end() {
     let m = RetractionMinimum::MONOTONE;
@@ -170,6 +216,45 @@ fn pruned_pull_off_equals_the_full_curve_minimum() {
     }
     // Most separations are ruled out without being summed.
     assert!(pruned * 2 > total, "{pruned} of {total} pruned");
+}
+
+/// The bounds between coarse separations (`MonteCarlo::retraction_bounds`,
+/// `RetractionBounds::lower_at`, the chord of the concave tail included)
+/// are below the exact load at every program separation in between, for
+/// every law, and the window bound below each of them.
+#[test]
+fn window_bounds_are_below_every_load_inside() {
+    let program = LoadingProgram::new(25e-9, -5e-9, 200).unwrap();
+    let all = program.separations();
+    let coarse: Vec<usize> = (0..all.len()).step_by(10).chain([all.len() - 1]).collect();
+    let at: Vec<f64> = coarse.iter().map(|&i| all[i]).collect();
+    let mut chords = 0;
+    for (name, law) in laws() {
+        let summit = SummitLaw::fixed(law.clone(), R).unwrap();
+        let spec = PopulationSpec::new(2000, 5e-9, RadiusSpec::Fixed(R), 3).unwrap();
+        let pop = Population::sample(&spec, &Gaussian::new()).unwrap();
+        let mc = MonteCarlo::new(Arc::new(pop), summit).unwrap();
+        let Some(b) = mc.retraction_bounds(&at, program.closest) else {
+            continue;
+        };
+        let loads = asperity::montecarlo::pull_off::retraction_loads(&mc, &program, 1.0).unwrap();
+        let slack = 1e-9 * b.magnitude;
+        for j in 0..coarse.len() - 1 {
+            chords += usize::from(b.chord[j] != (0.0, 0.0));
+            for i in coarse[j]..=coarse[j + 1] {
+                let t = (all[i] - at[j]) / (at[j + 1] - at[j]);
+                let exact = loads[i].1;
+                assert!(
+                    b.lower_at(j, t) <= exact + slack,
+                    "{name} window {j} at {i}: {} > {exact}",
+                    b.lower_at(j, t)
+                );
+                assert!(b.lower[j] <= b.lower_at(j, t) + slack, "{name} window {j}");
+            }
+        }
+    }
+    // The calibrated laws' far field is bounded by chords.
+    assert!(chords > 0);
 }
 
 /// The per-summit history prepared once for many separations

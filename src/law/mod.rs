@@ -383,6 +383,18 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         None
     }
 
+    /// An interference (m) below which the load is a concave function of
+    /// the interference on every branch, whatever the history: the far
+    /// field of a long-range law, where a summit's load between two
+    /// separations lies above the chord of its loads there (interference
+    /// is linear in the separation). The pruned pull-off search then bounds
+    /// the sum of these summits' loads inside a window by the chord of the
+    /// sums at its ends, instead of by their least end
+    /// ([`RetractionMinimum::window_minimum`]). Default `None`.
+    fn concave_tail(&self) -> Option<f64> {
+        None
+    }
+
     /// Values of `delta_max` at which [`state_after`](AsperityLaw::state_after)
     /// changes character (default: the attach interference). Integrators
     /// split their quadrature there.

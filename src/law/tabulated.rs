@@ -634,6 +634,25 @@ impl AsperityLaw for Tabulated {
         })
     }
 
+    /// The far field below the retraction branch's first node (and below
+    /// the jump-out): `Pbar = -(8/3)[H^-2 - H^-8/4 + E h1^(7/2) (H^-11/2 -
+    /// H^-23/2/4)]` (`E = E_1 - 1`), whose second derivative in `H` is
+    /// `-(8/3)[6 H^-4 (1 - 3 H^-6) + 35.75 E h1^(7/2) H^-15/2 (1 - 1.0053
+    /// H^-6)]`: negative for `H > 3^(1/6) = 1.2009` when `E >= 0`, so the
+    /// load is concave in `H`, hence in the interference (`H = 1 - s Dbar`
+    /// is linear). `None` when the table's first gap `h1` is below 1.21 or
+    /// the enhancement is negative.
+    fn concave_tail(&self) -> Option<f64> {
+        let far = if self.table.detach_bar.is_some() {
+            &self.detached
+        } else {
+            &self.attached
+        };
+        let first = far.load.x()[0];
+        let below = self.table.detach_bar.map_or(first, |a| a.min(first));
+        (far.far_h1 >= 1.21 && far.far_excess >= 0.0).then_some(below * self.scales.interference)
+    }
+
     fn pull_off(&self, control: Control) -> Option<Instability> {
         let p = match control {
             Control::Load => Some(self.table.pull_off),

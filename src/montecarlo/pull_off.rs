@@ -65,10 +65,11 @@ const BOUND_SLACK: f64 = 1e-7;
 /// The program's retraction separations (m, ascending) at which a
 /// population's load can be most tensile (or negative at all): the loads
 /// at every `m`-th separation (`m ~ sqrt(points/2)`) and, between each
-/// pair, a lower bound ([`MonteCarlo::retraction_bounds`]); only the
-/// intervals whose bound reaches below the least of those loads (and below
-/// zero, since a contact that never pulls has pull-off 0) keep their
-/// separations. All of them when the law gives no bounds or the program is
+/// pair, a lower bound at each separation ([`MonteCarlo::retraction_bounds`],
+/// [`RetractionBounds::lower_at`](super::RetractionBounds::lower_at));
+/// only the separations whose bound reaches below the least of those loads
+/// (and below zero, since a contact that never pulls has pull-off 0) are
+/// kept. All of them when the law gives no bounds or the program is
 /// short (fewer than [`PRUNE_FROM_POINTS`]). Typically a fifth of the
 /// separations are left.
 pub fn candidate_separations(mc: &MonteCarlo, program: &LoadingProgram) -> Vec<f64> {
@@ -86,8 +87,16 @@ pub fn candidate_separations(mc: &MonteCarlo, program: &LoadingProgram) -> Vec<f
     let threshold = least + BOUND_SLACK * b.magnitude;
     let mut keep = vec![false; k];
     for (j, &lower) in b.lower.iter().enumerate() {
-        if lower <= threshold {
-            keep[coarse[j]..=coarse[j + 1]].fill(true);
+        if lower > threshold {
+            continue;
+        }
+        // Each separation of the window against its own bound (the chord
+        // of the concave summits at its place).
+        let (first, last) = (coarse[j], coarse[j + 1]);
+        let width = all[last] - all[first];
+        for i in first..=last {
+            let t = ((all[i] - all[first]) / width).clamp(0.0, 1.0);
+            keep[i] |= b.lower_at(j, t) <= threshold;
         }
     }
     all.into_iter()

@@ -15,17 +15,41 @@ use super::{MonteCarlo, CHUNK};
 
 /// Loads of a population at a few separations on retraction, and lower
 /// bounds of its load between consecutive ones.
+///
+/// Between separations `k` and `k + 1`, the summits whose load is concave
+/// there ([`AsperityLaw::concave_tail`](crate::law::AsperityLaw::concave_tail):
+/// the far field of a long-range law) are bounded by the chord of their
+/// summed loads at the two ends, the others by their least value
+/// ([`RetractionMinimum::window_minimum`](crate::law::RetractionMinimum::window_minimum)):
+/// [`RetractionBounds::lower_at`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct RetractionBounds {
     /// Load (N) at each separation (summed per summit, in another order
     /// than the sums of [`LoadingModel::states`](crate::loading::LoadingModel::states): equal
     /// to them within roundoff).
     pub loads: Vec<f64>,
-    /// Lower bound (N) of the load between separations `k` and `k + 1`.
+    /// Lower bound (N) of the load anywhere between separations `k` and
+    /// `k + 1`.
     pub lower: Vec<f64>,
+    /// The part of `lower[k]` from the summits bounded by their least
+    /// value (N).
+    pub least_part: Vec<f64>,
+    /// The summed loads (N) of the concave summits of window `k` at its
+    /// two ends: `(at separation k, at separation k + 1)`.
+    pub chord: Vec<(f64, f64)>,
     /// Largest sum of absolute per-summit terms (N) behind any of these:
     /// their roundoff is a tiny fraction of it.
     pub magnitude: f64,
+}
+
+impl RetractionBounds {
+    /// Lower bound (N) of the load at the fraction `t` in `[0, 1]` of the
+    /// way from separation `k` to `k + 1`: the least-value part plus the
+    /// chord of the concave part.
+    pub fn lower_at(&self, k: usize, t: f64) -> f64 {
+        let (a, b) = self.chord[k];
+        self.least_part[k] + (1.0 - t) * a + t * b
+    }
 }
 
 impl MonteCarlo {
@@ -49,8 +73,13 @@ impl MonteCarlo {
         let mut out = RetractionBounds {
             loads: vec![0.0; k],
             lower: vec![0.0; k - 1],
+            least_part: vec![0.0; k - 1],
+            chord: vec![(0.0, 0.0); k - 1],
             magnitude: 0.0,
         };
+        // Interference (as the law sees it) below which a summit's load is
+        // concave: `-inf` when the law does not say.
+        let concave_below = law.concave_tail().unwrap_or(f64::NEG_INFINITY);
         let mut abs = vec![0.0; k];
         let (mut delta, mut load) = (vec![0.0; k * CHUNK], vec![0.0; k * CHUNK]);
         let (mut delta_max, mut radius) = ([0.0; CHUNK], [0.0; CHUNK]);
@@ -112,10 +141,21 @@ impl MonteCarlo {
                     // Interferences fall as the separation grows.
                     let (hi, lo) = (delta[j * CHUNK + i], delta[(j + 1) * CHUNK + i]);
                     let (at_hi, at_lo) = (load[j * CHUNK + i], load[(j + 1) * CHUNK + i]);
-                    out.lower[j] += rm.window_minimum(lo, at_lo, hi, at_hi);
+                    if hi < concave_below {
+                        // Concave over the window (interference linear in
+                        // the separation): above its chord.
+                        out.chord[j].0 += at_hi;
+                        out.chord[j].1 += at_lo;
+                    } else {
+                        out.least_part[j] += rm.window_minimum(lo, at_lo, hi, at_hi);
+                    }
                 }
             }
             a += m;
+        }
+        for (j, lower) in out.lower.iter_mut().enumerate() {
+            let (a, b) = out.chord[j];
+            *lower = out.least_part[j] + a.min(b);
         }
         out.magnitude = abs.iter().copied().fold(0.0, f64::max);
         Some(out)
