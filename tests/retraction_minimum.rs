@@ -286,14 +286,24 @@ fn prepared_histories_give_the_same_bits() {
             (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
         law.state_batch(&delta, Some(&delta_max), &mut l0, &mut r0);
         law.state_batch_prepared(&delta, &delta_max, &words, &mut l1, &mut r1);
+        let mut l2 = vec![0.0; n];
+        let mut cursor = asperity::law::LawCursor::default();
+        law.load_near_batch(&delta, Some(&delta_max), &mut l2, &mut cursor);
         for i in 0..n {
-            assert_eq!(
-                (l0[i].to_bits(), r0[i].to_bits()),
-                (l1[i].to_bits(), r1[i].to_bits()),
-                "{name}: delta {:e}, delta_max {:e}",
-                delta[i],
-                delta_max[i]
-            );
+            // The scalar law is the reference of both batches.
+            let st = law.state_after(delta[i], delta_max[i]);
+            let want = (st.load.to_bits(), st.radius.to_bits());
+            for (which, got) in [
+                ("state_batch", (l0[i].to_bits(), r0[i].to_bits())),
+                ("state_batch_prepared", (l1[i].to_bits(), r1[i].to_bits())),
+                ("load_near_batch", (l2[i].to_bits(), want.1)),
+            ] {
+                assert_eq!(
+                    got, want,
+                    "{name} {which}: delta {:e}, delta_max {:e}",
+                    delta[i], delta_max[i]
+                );
+            }
             let (a, b) = (
                 law.retraction_minimum(delta_max[i]),
                 law.retraction_minimum_prepared(delta_max[i], &words[i]),

@@ -29,7 +29,7 @@
 use crate::error::{Allowed, Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::law::{AsperityLaw, Branch, LawCursor};
+use crate::law::{AsperityLaw, Branch, ContactState, LawCursor};
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
 use crate::numeric::quadrature::{
     integrate_pieces_batch, kronrod21_batch, kronrod21_pieces, QuadOptions,
@@ -423,7 +423,26 @@ impl GwModel {
             (value[0], error[0]) = (v[0], e[0]);
             (value, error, n, m)
         } else {
+            // A law that prepares each peak's history (a plastic summit's
+            // unloading shape) takes the panel's retraction states in one
+            // batch (its roots in vector lanes; the same bits).
+            let batch = law.prepares_history() && matches!(history, History::Retract { .. });
             let eval = |x: &[f64; 21], out: &mut [[f64; SLOTS]; 21]| {
+                if let (true, History::Retract { closest }) = (batch, history) {
+                    let delta = x.map(|s| sigma * s - d);
+                    let dm = x.map(|s| sigma * s - closest);
+                    let (mut load, mut radius) = ([0.0; 21], [0.0; 21]);
+                    law.state_batch(&delta, Some(&dm), &mut load, &mut radius);
+                    for k in 0..21 {
+                        let st = ContactState {
+                            load: load[k],
+                            radius: radius[k],
+                        };
+                        let w = weight(x[k]);
+                        out[k] = obs.evaluate(&st).map(|v| v * w);
+                    }
+                    return;
+                }
                 for (o, &s) in out.iter_mut().zip(x) {
                     let st = law.state_near(sigma * s - d, delta_max(s), &mut cursor);
                     let w = weight(s);

@@ -172,6 +172,10 @@ fn pull_off_on(residual: f64, s: &MaugisScales, control: Control) -> Instability
     }
 }
 
+/// States per block of [`AdhesivePlastic`]'s batch on retraction (its
+/// prepared shapes live on the stack).
+const PREPARED_BLOCK: usize = 64;
+
 /// Subintervals of each loading piece scanned for the roots of
 /// [`AsperityLaw::contact_loss_peaks`] (the span need not be monotone).
 const SPAN_SCAN: usize = 8;
@@ -297,6 +301,71 @@ impl AsperityLaw for AdhesivePlastic {
             interference: p.interference,
             load: p.load,
         })
+    }
+
+    /// On retraction the shapes of a block of states prepared at once and
+    /// their JKR roots in SIMD lanes
+    /// ([`state_batch_prepared`](AsperityLaw::state_batch_prepared)), bit
+    /// for bit `state_after`: what a GW quadrature panel's nodes take (each
+    /// node has its own peak, so nothing is shared but the lanes). On
+    /// approach the scalar loop.
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        let n = delta.len().min(load.len()).min(radius.len());
+        let Some(m) = delta_max else {
+            for i in 0..n {
+                let s = self.state(delta[i], Branch::Approach);
+                (load[i], radius[i]) = (s.load, s.radius);
+            }
+            return;
+        };
+        let n = n.min(m.len());
+        let mut words = [[0.0; 4]; PREPARED_BLOCK];
+        for a in (0..n).step_by(PREPARED_BLOCK) {
+            let b = (a + PREPARED_BLOCK).min(n);
+            let w = &mut words[..b - a];
+            self.prepare_after(&m[a..b], w);
+            self.state_batch_prepared(
+                &delta[a..b],
+                &m[a..b],
+                w,
+                &mut load[a..b],
+                &mut radius[a..b],
+            );
+        }
+    }
+
+    /// [`state_batch`](AsperityLaw::state_batch)'s loads (the radii into a
+    /// scratch block), bit for bit `load_after`.
+    fn load_near_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        cursor: &mut crate::law::LawCursor,
+    ) {
+        let Some(m) = delta_max else {
+            for (&d, l) in delta.iter().zip(load.iter_mut()) {
+                *l = self.load_near(d, None, cursor);
+            }
+            return;
+        };
+        let n = delta.len().min(m.len()).min(load.len());
+        let mut radius = [0.0; PREPARED_BLOCK];
+        for a in (0..n).step_by(PREPARED_BLOCK) {
+            let b = (a + PREPARED_BLOCK).min(n);
+            self.state_batch(
+                &delta[a..b],
+                Some(&m[a..b]),
+                &mut load[a..b],
+                &mut radius[..b - a],
+            );
+        }
     }
 
     fn state_batch_prepared(
