@@ -289,6 +289,19 @@ fn prepared_histories_give_the_same_bits() {
         let mut l2 = vec![0.0; n];
         let mut cursor = asperity::law::LawCursor::default();
         law.load_near_batch(&delta, Some(&delta_max), &mut l2, &mut cursor);
+        // On approach both batches are the scalar law's `state`.
+        let (mut l3, mut r3, mut l4) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        law.state_batch(&delta, None, &mut l3, &mut r3);
+        law.load_near_batch(&delta, None, &mut l4, &mut cursor);
+        for i in 0..n {
+            let st = law.state(delta[i], asperity::law::Branch::Approach);
+            assert_eq!(
+                (l3[i].to_bits(), r3[i].to_bits(), l4[i].to_bits()),
+                (st.load.to_bits(), st.radius.to_bits(), st.load.to_bits()),
+                "{name} approach: delta {:e}",
+                delta[i]
+            );
+        }
         for i in 0..n {
             // The scalar law is the reference of both batches.
             let st = law.state_after(delta[i], delta_max[i]);

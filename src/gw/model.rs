@@ -424,15 +424,20 @@ impl GwModel {
             (value, error, n, m)
         } else {
             // A law that prepares each peak's history (a plastic summit's
-            // unloading shape) takes the panel's retraction states in one
-            // batch (its roots in vector lanes; the same bits).
-            let batch = law.prepares_history() && matches!(history, History::Retract { .. });
+            // unloading shape) takes the panel's states in one batch (its
+            // roots in vector lanes; the same bits).
+            let batch = law.prepares_history();
             let eval = |x: &[f64; 21], out: &mut [[f64; SLOTS]; 21]| {
-                if let (true, History::Retract { closest }) = (batch, history) {
+                if batch {
                     let delta = x.map(|s| sigma * s - d);
-                    let dm = x.map(|s| sigma * s - closest);
                     let (mut load, mut radius) = ([0.0; 21], [0.0; 21]);
-                    law.state_batch(&delta, Some(&dm), &mut load, &mut radius);
+                    match history {
+                        History::Approach => law.state_batch(&delta, None, &mut load, &mut radius),
+                        History::Retract { closest } => {
+                            let dm = x.map(|s| sigma * s - closest);
+                            law.state_batch(&delta, Some(&dm), &mut load, &mut radius);
+                        }
+                    }
                     for k in 0..21 {
                         let st = ContactState {
                             load: load[k],

@@ -303,12 +303,14 @@ impl AsperityLaw for AdhesivePlastic {
         })
     }
 
-    /// On retraction the shapes of a block of states prepared at once and
-    /// their JKR roots in SIMD lanes
+    /// The shapes of a block of states prepared at once and their JKR
+    /// roots in SIMD lanes
     /// ([`state_batch_prepared`](AsperityLaw::state_batch_prepared)), bit
-    /// for bit `state_after`: what a GW quadrature panel's nodes take (each
-    /// node has its own peak, so nothing is shared but the lanes). On
-    /// approach the scalar loop.
+    /// for bit `state_after` on retraction and `state` on approach (the
+    /// state after its own interference as peak, `state_after(delta,
+    /// delta)`; for NaN after 0, as `state` takes it): what a GW quadrature
+    /// panel's nodes take (each node has its own peak, so nothing is shared
+    /// but the lanes).
     fn state_batch(
         &self,
         delta: &[f64],
@@ -317,31 +319,28 @@ impl AsperityLaw for AdhesivePlastic {
         radius: &mut [f64],
     ) {
         let n = delta.len().min(load.len()).min(radius.len());
-        let Some(m) = delta_max else {
-            for i in 0..n {
-                let s = self.state(delta[i], Branch::Approach);
-                (load[i], radius[i]) = (s.load, s.radius);
-            }
-            return;
-        };
-        let n = n.min(m.len());
+        let n = delta_max.map_or(n, |m| n.min(m.len()));
         let mut words = [[0.0; 4]; PREPARED_BLOCK];
+        let mut peaks = [0.0; PREPARED_BLOCK];
         for a in (0..n).step_by(PREPARED_BLOCK) {
             let b = (a + PREPARED_BLOCK).min(n);
+            let m = match delta_max {
+                Some(m) => &m[a..b],
+                None => {
+                    for (p, &d) in peaks.iter_mut().zip(&delta[a..b]) {
+                        *p = if d.is_nan() { 0.0 } else { d };
+                    }
+                    &peaks[..b - a]
+                }
+            };
             let w = &mut words[..b - a];
-            self.prepare_after(&m[a..b], w);
-            self.state_batch_prepared(
-                &delta[a..b],
-                &m[a..b],
-                w,
-                &mut load[a..b],
-                &mut radius[a..b],
-            );
+            self.prepare_after(m, w);
+            self.state_batch_prepared(&delta[a..b], m, w, &mut load[a..b], &mut radius[a..b]);
         }
     }
 
     /// [`state_batch`](AsperityLaw::state_batch)'s loads (the radii into a
-    /// scratch block), bit for bit `load_after`.
+    /// scratch block), bit for bit `load_after` and `load`.
     fn load_near_batch(
         &self,
         delta: &[f64],
@@ -349,22 +348,14 @@ impl AsperityLaw for AdhesivePlastic {
         load: &mut [f64],
         cursor: &mut crate::law::LawCursor,
     ) {
-        let Some(m) = delta_max else {
-            for (&d, l) in delta.iter().zip(load.iter_mut()) {
-                *l = self.load_near(d, None, cursor);
-            }
-            return;
-        };
-        let n = delta.len().min(m.len()).min(load.len());
+        let _ = cursor;
+        let n = delta.len().min(load.len());
+        let n = delta_max.map_or(n, |m| n.min(m.len()));
         let mut radius = [0.0; PREPARED_BLOCK];
         for a in (0..n).step_by(PREPARED_BLOCK) {
             let b = (a + PREPARED_BLOCK).min(n);
-            self.state_batch(
-                &delta[a..b],
-                Some(&m[a..b]),
-                &mut load[a..b],
-                &mut radius[..b - a],
-            );
+            let m = delta_max.map(|m| &m[a..b]);
+            self.state_batch(&delta[a..b], m, &mut load[a..b], &mut radius[..b - a]);
         }
     }
 
