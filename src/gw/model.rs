@@ -429,15 +429,7 @@ impl GwModel {
             let batch = law.prepares_history();
             let eval = |x: &[f64; 21], out: &mut [[f64; SLOTS]; 21]| {
                 if batch {
-                    let delta = x.map(|s| sigma * s - d);
-                    let (mut load, mut radius) = ([0.0; 21], [0.0; 21]);
-                    match history {
-                        History::Approach => law.state_batch(&delta, None, &mut load, &mut radius),
-                        History::Retract { closest } => {
-                            let dm = x.map(|s| sigma * s - closest);
-                            law.state_batch(&delta, Some(&dm), &mut load, &mut radius);
-                        }
-                    }
+                    let (load, radius) = panel_states(law, x, sigma, d, history);
                     for k in 0..21 {
                         let st = ContactState {
                             load: load[k],
@@ -1004,4 +996,26 @@ impl LoadingModel for GwModel {
         out.dedup();
         out
     }
+}
+
+/// The states of a quadrature panel's 21 standardised heights `x` at
+/// separation `d` (m) in one [`AsperityLaw::state_batch`] call: `(load,
+/// radius)` (N, m), bit for bit the law's `state` / `state_after`.
+fn panel_states(
+    law: &dyn AsperityLaw,
+    x: &[f64; 21],
+    sigma: f64,
+    d: f64,
+    history: History,
+) -> ([f64; 21], [f64; 21]) {
+    let delta = x.map(|s| sigma * s - d);
+    let (mut load, mut radius) = ([0.0; 21], [0.0; 21]);
+    match history {
+        History::Approach => law.state_batch(&delta, None, &mut load, &mut radius),
+        History::Retract { closest } => {
+            let dm = x.map(|s| sigma * s - closest);
+            law.state_batch(&delta, Some(&dm), &mut load, &mut radius);
+        }
+    }
+    (load, radius)
 }
