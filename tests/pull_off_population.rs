@@ -209,3 +209,30 @@ fn switched_off_populations_leave_the_integral_as_the_basis() {
     );
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// Populations that would cost more than the run's budget (an estimated
+/// `POPULATION_CPU_BUDGET` = 0.5 s of CPU) are cut to what it affords,
+/// never below 20, and the summary says so, naming the key that sets them:
+/// a million JKR summits (160,000 within the flat's reach each) afford
+/// about 25.
+#[test]
+fn populations_beyond_the_cost_budget_are_cut_and_said() {
+    let d = dir("budget");
+    let text = scene("").replacen("nominal_area = 1e-8", "nominal_area = 1e-6", 1);
+    let (code, v, err) = run(&text, &d);
+    assert_eq!(code, 0, "{err}");
+    let p = &v["pull_off_population"];
+    assert_eq!(p["summits"], 1_000_000, "{p}");
+    // (The estimate counts law evaluations, not time: the same on any
+    // machine.)
+    let seeds = p["seeds"].as_u64().unwrap();
+    assert!((20..100).contains(&seeds), "{p}");
+    let note = p["note"].as_str().unwrap_or_default();
+    assert!(
+        note.contains(&format!("{seeds} of the 100 populations asked for drawn"))
+            && note.contains("montecarlo.seeds"),
+        "{note}"
+    );
+    assert!(num(&p["mean_se_N"]) > 0.0);
+    std::fs::remove_dir_all(&d).ok();
+}
