@@ -172,8 +172,8 @@ fn pull_off_on(residual: f64, s: &MaugisScales, control: Control) -> Instability
     }
 }
 
-/// States per block of [`AdhesivePlastic`]'s batch on retraction (its
-/// prepared shapes live on the stack).
+/// States per block of [`AdhesivePlastic`]'s batch (its prepared shapes
+/// live on the stack).
 const PREPARED_BLOCK: usize = 64;
 
 /// Subintervals of each loading piece scanned for the roots of
