@@ -179,12 +179,19 @@ impl Population {
     /// population.
     ///
     /// # Errors
-    /// As [`Population::sample`].
+    /// As [`Population::sample`]; [`Error::Invalid`] naming `min_height`
+    /// for NaN.
     pub fn sample_above(
         spec: &PopulationSpec,
         distribution: &dyn HeightDistribution,
         min_height: f64,
     ) -> Result<Self> {
+        if min_height.is_nan() {
+            return Err(Error::invalid(
+                "min_height",
+                "a height (m) or -inf for every summit, not NaN",
+            ));
+        }
         Population::draw(spec, distribution, min_height)
     }
 

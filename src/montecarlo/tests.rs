@@ -146,6 +146,11 @@ fn summits_drawn_above_a_height_are_the_full_draws_highest() {
         // Above every summit: the highest alone.
         let top = Population::sample_above(&spec, &Gaussian::new(), 100.0 * SIGMA).unwrap();
         assert_eq!(top.heights(), &full.heights()[9_999..]);
+        // A NaN bound is refused, naming it; -inf keeps every summit.
+        let e = Population::sample_above(&spec, &Gaussian::new(), f64::NAN).unwrap_err();
+        assert_eq!(e.field(), Some("min_height"));
+        let all = Population::sample_above(&spec, &Gaussian::new(), f64::NEG_INFINITY).unwrap();
+        assert_eq!(all, full);
     }
 }
 
