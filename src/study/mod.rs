@@ -37,6 +37,7 @@ pub mod run;
 pub mod scene;
 mod sphere;
 pub mod sweep;
+pub mod text;
 pub mod validity;
 
 pub use output::{

@@ -23,6 +23,7 @@ mod spots_cmd;
 mod surface_cmd;
 mod sweep_cmd;
 
+use asperity::study::text::edit_distance;
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
@@ -98,22 +99,6 @@ fn nearest_command(e: &clap::Error) -> Option<String> {
         .filter(|(d, _, _)| *d <= 2)
         .min()
         .map(|(_, _, n)| n)
-}
-
-/// Levenshtein distance between `a` and `b` (characters).
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
 }
 
 /// Result of a subcommand.
