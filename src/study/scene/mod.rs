@@ -6,9 +6,12 @@
 //! [`build_contact`], [`build_surface`] and [`build_distribution`] turn
 //! its values into core objects, mapping the core's errors onto scene
 //! fields. The planner ([`crate::study::plan`]) decides what to compute.
+//! [`scene_schema`] is the scene files' JSON Schema, derived from the same
+//! types.
 
 mod build;
 mod features;
+mod json_schema;
 mod law_name;
 mod parse;
 mod schema;
@@ -19,6 +22,7 @@ pub use build::{
     most_extreme_input, SPHERE_REFERENCE_AREA,
 };
 pub use features::ProgramTarget;
+pub use json_schema::{scene_schema, scene_schema_text, SCHEMA_DIALECT, UNIT_KEYWORD};
 pub use law_name::LawName;
 pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 

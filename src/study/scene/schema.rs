@@ -3,20 +3,33 @@
 //! Every table rejects unknown keys (a typo must not be silently ignored).
 //! Defaults are stated on each field; a scene needs at least `[materials]`,
 //! `[surface]`, `[adhesion]` and `[program]`.
+//!
+//! Each type derives [`JsonSchema`]: the doc comments become the
+//! descriptions of the scene files' JSON Schema
+//! ([`super::scene_schema`]), and each number states its unit (`x-unit`)
+//! and the range the validation enforces (`parse.rs`, `features.rs`; the
+//! bounds are the same constants).
 
+use super::features::{MAX_CURRENT, MAX_TABULATED_POINTS, YIELD_STRENGTH_RANGE};
 use super::law_name::LawName;
+use super::parse::{MAX_LENGTH, MAX_POINTS, MIN_LENGTH};
 use super::topography::SummitSource;
 use crate::axisym::ProfileKind;
-use crate::electrical::{Interaction, Spreading};
+use crate::electrical::heating::{
+    DEFAULT_BULK_TEMPERATURE, GOLD_MELTING_TEMPERATURE, GOLD_SOFTENING_TEMPERATURE,
+};
+use crate::electrical::{Conductor, Interaction, Spreading};
 use crate::heights::DistributionKind;
+use crate::montecarlo::MAX_SUMMITS;
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 /// A whole scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Scene {
     /// Optional title, printed in summaries.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub title: Option<String>,
     /// Elastic constants of both bodies.
     pub materials: MaterialsSpec,
@@ -60,19 +73,24 @@ pub struct Scene {
 /// solution's, so `surface.nominal_area` must not be given; separations are
 /// remote (minus the approach of distant points, as a machine controls
 /// them); every output is a total over the bump.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SphereSpec {
-    /// Sphere radius (m), in `[1e-15, 1]`.
+    /// Sphere radius (m), in `[1e-15, 1]`. With the surface, the rough
+    /// sphere's Greenwood-Tripp mu = (8/3) eta sigma sqrt(2 R beta)
+    /// (`R` this radius, `beta` the summit radius) must lie in
+    /// `[1e-12, 1e4]`.
+    #[schemars(extend("x-unit" = "m"), range(min = MIN_LENGTH, max = MAX_LENGTH))]
     pub radius: f64,
     /// `"paraboloid"` (default: `r^2/(2R)`, Hertz and Greenwood & Tripp)
     /// or `"sphere"` (`R - sqrt(R^2 - r^2)`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("default" = "paraboloid"))]
     pub profile: Option<SphereShape>,
 }
 
 /// The undeformed profile of `[sphere]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum SphereShape {
     /// `r^2/(2R)`.
@@ -85,27 +103,56 @@ pub enum SphereShape {
 /// (Maxwell/Holm, Sharvin, Wexler), optionally with Greenwood's interaction
 /// and a film. Same metal: `resistivity` (and `mean_free_path`); two
 /// metals: `resistivity1`/`resistivity2` (and `mean_free_path1`/`2`).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ElectricalSpec {
-    /// Resistivity of both bodies (Ohm m), > 0.
+    /// Resistivity of both bodies (Ohm m), in `[1e-12, 1e6]`. Give it, or
+    /// both `resistivity1` and `resistivity2`, not both forms.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "Ohm m"),
+        range(min = Conductor::RESISTIVITY.lo, max = Conductor::RESISTIVITY.hi)
+    )]
     pub resistivity: Option<f64>,
-    /// Resistivity of body 1 (Ohm m), > 0 (two metals).
+    /// Resistivity of body 1 (Ohm m), in `[1e-12, 1e6]` (two metals: with
+    /// `resistivity2`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "Ohm m"),
+        range(min = Conductor::RESISTIVITY.lo, max = Conductor::RESISTIVITY.hi)
+    )]
     pub resistivity1: Option<f64>,
-    /// Resistivity of body 2 (Ohm m), > 0 (two metals).
+    /// Resistivity of body 2 (Ohm m), in `[1e-12, 1e6]` (two metals: with
+    /// `resistivity1`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "Ohm m"),
+        range(min = Conductor::RESISTIVITY.lo, max = Conductor::RESISTIVITY.hi)
+    )]
     pub resistivity2: Option<f64>,
-    /// Electron mean free path of both bodies (m), > 0; needed by
-    /// `sharvin` and `wexler`.
+    /// Electron mean free path of both bodies (m), in `[1e-15, 1e-2]`;
+    /// needed by `sharvin` and `wexler`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "m"),
+        range(min = Conductor::MEAN_FREE_PATH.lo, max = Conductor::MEAN_FREE_PATH.hi)
+    )]
     pub mean_free_path: Option<f64>,
-    /// Mean free path of body 1 (m), > 0 (two metals).
+    /// Mean free path of body 1 (m), in `[1e-15, 1e-2]` (two metals: with
+    /// `mean_free_path2`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "m"),
+        range(min = Conductor::MEAN_FREE_PATH.lo, max = Conductor::MEAN_FREE_PATH.hi)
+    )]
     pub mean_free_path1: Option<f64>,
-    /// Mean free path of body 2 (m), > 0 (two metals).
+    /// Mean free path of body 2 (m), in `[1e-15, 1e-2]` (two metals: with
+    /// `mean_free_path1`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "m"),
+        range(min = Conductor::MEAN_FREE_PATH.lo, max = Conductor::MEAN_FREE_PATH.hi)
+    )]
     pub mean_free_path2: Option<f64>,
     /// `"maxwell"` (diffusive, Holm), `"sharvin"` (ballistic) or
     /// `"wexler"` (Mikrajuddin interpolation); default `"maxwell"`.
@@ -116,28 +163,40 @@ pub struct ElectricalSpec {
     /// `sqrt(nominal_area)`).
     #[serde(default = "default_interaction")]
     pub interaction: Interaction,
-    /// Film resistance per unit area (Ohm m^2), >= 0; each spot adds
-    /// `film_resistance / (pi a^2)`. Default 0.
+    /// Film resistance per unit area (Ohm m^2), in `[0, 1e3]`; each spot
+    /// adds `film_resistance / (pi a^2)`. Default 0.
     #[serde(default)]
+    #[schemars(extend("x-unit" = "Ohm m^2"), range(min = 0.0, max = 1e3))]
     pub film_resistance: f64,
-    /// Current through the contact (A), > 0, optional: the summary and the
-    /// listed states then give the contact voltage `I R` and the peak
-    /// contact temperature (Holm's phi-theta relation with the
+    /// Current through the contact (A), in `(0, 1e6]`, optional: the
+    /// summary and the listed states then give the contact voltage `I R`
+    /// and the peak contact temperature (Holm's phi-theta relation with the
     /// Wiedemann–Franz law).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "A", "exclusiveMinimum" = 0.0), range(max = MAX_CURRENT))]
     pub current: Option<f64>,
     /// Bulk temperature (K), in (0, melting_temperature), for the heating;
-    /// default 293.15.
+    /// default 293.15. Only with `current`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "K", "exclusiveMinimum" = 0.0, "default" = DEFAULT_BULK_TEMPERATURE)
+    )]
     pub bulk_temperature: Option<f64>,
     /// Softening temperature of the spots' metal (K), > 0; default gold's
-    /// 373.15 K (Holm): above it a warning says the spot softens.
+    /// 373.15 K (Holm): above it a warning says the spot softens. Only
+    /// with `current`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "K", "exclusiveMinimum" = 0.0, "default" = GOLD_SOFTENING_TEMPERATURE)
+    )]
     pub softening_temperature: Option<f64>,
     /// Melting temperature of the spots' metal (K), > softening_temperature;
     /// default gold's 1337.33 K: above it the spot melts, a warning says so
-    /// and no peak temperature is reported.
+    /// and no peak temperature is reported. Only with `current`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "K", "exclusiveMinimum" = 0.0, "default" = GOLD_MELTING_TEMPERATURE)
+    )]
     pub melting_temperature: Option<f64>,
 }
 
@@ -150,43 +209,60 @@ fn default_interaction() -> Interaction {
 }
 
 /// `[switch]`: the spring that reopens the contact.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SwitchSpec {
     /// Spring constant `k` (N/m), > 0.
+    #[schemars(extend("x-unit" = "N/m", "exclusiveMinimum" = 0.0))]
     pub spring_constant: f64,
     /// Travel (m), > 0: the restoring force is `k x travel`.
+    #[schemars(extend("x-unit" = "m", "exclusiveMinimum" = 0.0))]
     pub travel: f64,
     /// Confidence of the stiction margin, in (0, 1); default 0.95: the
     /// margin uses the pull-off that only the 5 % most tensile
     /// populations exceed (with the population basis).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend(
+        "x-unit" = "1",
+        "exclusiveMinimum" = 0.0,
+        "exclusiveMaximum" = 1.0,
+        "default" = crate::study::run::DEFAULT_CONFIDENCE
+    ))]
     pub confidence: Option<f64>,
 }
 
 /// `[montecarlo]`: an explicit random population of summits drawn from the
 /// surface's height distribution and summed exactly over the same program.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MonteCarloSpec {
-    /// Summits drawn, >= 1; default `eta A_n` (rounded). Fewer than that
-    /// draws a sub-area and scales the totals up (their standard errors
-    /// then measure the distance to the expectation).
-    #[serde(default)]
+    /// Summits drawn, in `[1, 2^30]`; default `eta A_n` (rounded). Fewer
+    /// than that draws a sub-area and scales the totals up (their standard
+    /// errors then measure the distance to the expectation). The
+    /// population must also stay within 2 GB of memory and an estimated
+    /// hour of one core.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "1"), range(min = 1, max = MAX_SUMMITS))]
     pub summits: Option<usize>,
     /// Seed of the population (default 1); sweeps set it per point. The
     /// pull-off populations use seeds `seed, seed + 1, ...`.
     #[serde(default = "default_seed")]
+    #[schemars(extend("x-unit" = "1"))]
     pub seed: u64,
     /// Number of populations of `eta A_n` summits whose pull-offs give the
-    /// pull-off distribution (`pull_off_population` in the summary),
-    /// >= 1; default [`DEFAULT_POPULATIONS`].
+    /// pull-off distribution (`pull_off_population` in the summary), in
+    /// `[1, 1e5]`; default 100 ([`DEFAULT_POPULATIONS`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "1", "default" = DEFAULT_POPULATIONS),
+        range(min = 1, max = MAX_POPULATIONS)
+    )]
     pub seeds: Option<usize>,
     /// Standard deviation of `ln R` (lognormal radii with median
     /// `surface.radius`), >= 0; default 0 (every summit of radius R, as in
     /// GW). Not available for Maugis–Dugdale or calibrated laws.
     #[serde(default)]
+    #[schemars(extend("x-unit" = "1"), range(min = 0.0))]
     pub radius_log_std: f64,
 }
 
@@ -205,16 +281,20 @@ fn default_seed() -> u64 {
 
 /// `[materials]`: Young's moduli (Pa) and Poisson ratios of body 1 (the
 /// rough one) and body 2 (the flat).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialsSpec {
     /// Young's modulus of body 1 (Pa), > 0.
+    #[schemars(extend("x-unit" = "Pa", "exclusiveMinimum" = 0.0))]
     pub e1: f64,
     /// Poisson ratio of body 1, in [0, 0.5).
+    #[schemars(extend("x-unit" = "1", "exclusiveMaximum" = 0.5), range(min = 0.0))]
     pub nu1: f64,
     /// Young's modulus of body 2 (Pa), > 0.
+    #[schemars(extend("x-unit" = "Pa", "exclusiveMinimum" = 0.0))]
     pub e2: f64,
     /// Poisson ratio of body 2, in [0, 0.5).
+    #[schemars(extend("x-unit" = "1", "exclusiveMaximum" = 0.5), range(min = 0.0))]
     pub nu2: f64,
     /// Yield strength of the body that yields (Pa), > 0; required by the
     /// elastic-plastic laws, optional otherwise (it feeds the plasticity
@@ -222,32 +302,48 @@ pub struct MaterialsSpec {
     /// (the lower Young's modulus; body 1 on a tie). Allowed `[1e3, 1e20]`
     /// Pa.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "Pa"),
+        range(min = YIELD_STRENGTH_RANGE.0, max = YIELD_STRENGTH_RANGE.1)
+    )]
     pub yield_strength: Option<f64>,
-    /// Hardness of the body that yields (Pa), >= `yield_strength`, at most
-    /// 1e20 Pa; default `2.8 x yield_strength` (Tabor).
+    /// Hardness of the body that yields (Pa), >= `yield_strength`, in
+    /// `[1e3, 1e20]` Pa; default `2.8 x yield_strength` (Tabor). Only with
+    /// `yield_strength`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "Pa"),
+        range(min = YIELD_STRENGTH_RANGE.0, max = YIELD_STRENGTH_RANGE.1)
+    )]
     pub hardness: Option<f64>,
 }
 
 /// `[surface]`: the summits.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SurfaceSpec {
     /// Summit areal density `eta` (1/m^2), > 0. Required unless
     /// `topography` is given (then it comes from the map and must not be
-    /// given); absent reads as NaN.
+    /// given); absent reads as NaN. The summits on the nominal area,
+    /// `eta A_n`, must number 1 to 1e24.
     #[serde(default = "unset", skip_serializing_if = "is_unset")]
+    #[schemars(extend("x-unit" = "1/m^2", "exclusiveMinimum" = 0.0))]
     pub density: f64,
-    /// Summit radius `R` (m), > 0. Required unless `topography` is given.
+    /// Summit radius `R` (m), in `[1e-15, 1]`. Required unless
+    /// `topography` is given (then it must not be given).
     #[serde(default = "unset", skip_serializing_if = "is_unset")]
+    #[schemars(extend("x-unit" = "m"), range(min = MIN_LENGTH, max = MAX_LENGTH))]
     pub radius: f64,
-    /// Summit-height standard deviation `sigma` (m), > 0 (the decay length
-    /// for the exponential distribution). Required unless `topography` is
-    /// given.
+    /// Summit-height standard deviation `sigma` (m), in `[1e-15, 1]` (the
+    /// decay length for the exponential distribution). Required unless
+    /// `topography` is given (then it must not be given).
     #[serde(default = "unset", skip_serializing_if = "is_unset")]
+    #[schemars(extend("x-unit" = "m"), range(min = MIN_LENGTH, max = MAX_LENGTH))]
     pub sigma: f64,
     /// Height distribution: `"gaussian"` (default), `"exponential"`,
-    /// `"weibull"`, `"truncated-gaussian"`, `"empirical"`.
+    /// `"weibull"` (needs `weibull_shape`), `"truncated-gaussian"` (needs
+    /// `truncation`), `"empirical"` (needs `heights`). With `topography`
+    /// it must stay `"gaussian"`.
     #[serde(default = "default_distribution")]
     pub distribution: DistributionKind,
     /// Nominal area `A_n` (m^2), > 0. Required unless `topography` is
@@ -255,15 +351,22 @@ pub struct SurfaceSpec {
     /// the scene has `[sphere]` (then it must not be given: the bump's
     /// apparent area is the solution's).
     #[serde(default = "unset", skip_serializing_if = "is_unset")]
+    #[schemars(extend("x-unit" = "m^2", "exclusiveMinimum" = 0.0))]
     pub nominal_area: f64,
-    /// Weibull shape `k` (> 0), for `distribution = "weibull"`.
-    #[serde(default)]
+    /// Weibull shape `k` (> 0), for `distribution = "weibull"` only (and
+    /// required there).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0))]
     pub weibull_shape: Option<f64>,
-    /// Truncation at `k sigma` (> 0), for `"truncated-gaussian"`.
-    #[serde(default)]
+    /// Truncation at `k sigma` (> 0), for `"truncated-gaussian"` only (and
+    /// required there).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0))]
     pub truncation: Option<f64>,
-    /// Measured summit heights (m), for `"empirical"`.
-    #[serde(default)]
+    /// Measured summit heights (m), at least 2, for `"empirical"` only (and
+    /// required there).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m"), length(min = 2))]
     pub heights: Option<Vec<f64>>,
     /// A measured height map (`.npy`, or a text matrix `.txt`/`.csv`/`.asc`),
     /// path relative to the scene file's directory. The summits come from
@@ -272,27 +375,33 @@ pub struct SurfaceSpec {
     /// must stay `"gaussian"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub topography: Option<String>,
-    /// Pixel size of the map (m), > 0; required with `topography`.
+    /// Pixel size of the map (m), > 0; required with `topography`, only
+    /// with it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m", "exclusiveMinimum" = 0.0))]
     pub pixel_size: Option<f64>,
     /// Factor from the map's height unit to metres (e.g. `1e-9` for nm),
     /// > 0; default 1. Only with `topography`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0, "default" = 1.0))]
     pub height_scale: Option<f64>,
     /// Treat the map as periodic (remove only the mean, wrap neighbours);
     /// default false. Only with `topography`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("default" = false))]
     pub periodic: Option<bool>,
     /// Which model of the map the study uses: `"measured"` (default: an
     /// exact sum over the measured summits, each with its own height and
     /// radius) or `"moments"` (Gaussian GW with the parameters McCool's
     /// relations give from the measured moments). Only with `topography`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("default" = "measured"))]
     pub summits: Option<SummitSource>,
     /// Also run the other model of the map and report its headline numbers
     /// in the summary's `topography` object; default false. Only with
     /// `topography`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("default" = false))]
     pub compare: Option<bool>,
 }
 
@@ -310,17 +419,20 @@ fn default_distribution() -> DistributionKind {
 }
 
 /// `[adhesion]`: work of adhesion and force range.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct AdhesionSpec {
     /// Work of adhesion `w` (J/m^2), >= 0; 0 switches adhesion off.
+    #[schemars(extend("x-unit" = "J/m^2"), range(min = 0.0))]
     pub w: f64,
-    /// Equilibrium separation `z0` of the Lennard-Jones law (m), > 0.
+    /// Equilibrium separation `z0` of the Lennard-Jones law (m), in
+    /// `[1e-15, 1]`.
+    #[schemars(extend("x-unit" = "m"), range(min = MIN_LENGTH, max = MAX_LENGTH))]
     pub z0: f64,
 }
 
 /// `[law]`: the single-asperity law.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LawSpec {
     /// `"auto"` (default: the planner picks the cheapest law that meets the
@@ -331,29 +443,48 @@ pub struct LawSpec {
     /// `"shaped"` (JKR on the axisymmetric `profile`).
     #[serde(default)]
     pub kind: LawName,
-    /// For `kind = "shaped"`: `"paraboloid"`, `"sphere"` (exact sphere),
-    /// `"cone"`, `"flat"`, `"power"` or `"tabulated"`.
+    /// For `kind = "shaped"` (required there, refused otherwise):
+    /// `"paraboloid"`, `"sphere"` (exact sphere), `"cone"`, `"flat"`,
+    /// `"power"` or `"tabulated"`. The profile keys below apply only to
+    /// `kind = "shaped"`, each to the profiles that use it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub profile: Option<ProfileKind>,
     /// Shaped: sphere/paraboloid radius or flat-punch radius (m), > 0;
-    /// default `surface.radius`.
+    /// default `surface.radius`. The contact radius at an interference of
+    /// `surface.sigma` must lie between `adhesion.z0` and the summit
+    /// spacing.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m", "exclusiveMinimum" = 0.0))]
     pub radius: Option<f64>,
     /// Shaped cone: `tan(beta)` of `f(r) = r tan(beta)`, > 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0))]
     pub tan_angle: Option<f64>,
-    /// Shaped power law `f(r) = A r^n`: the exponent `n`, > 0.
+    /// Shaped power law `f(r) = A r^n`: the exponent `n`, in `(0, 50]`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0), range(max = 50.0))]
     pub exponent: Option<f64>,
     /// Shaped power law: the coefficient `A` (m^(1-n)), > 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m^(1-n)", "exclusiveMinimum" = 0.0))]
     pub coefficient: Option<f64>,
-    /// Shaped tabulated profile: radii `r` (m), ascending from 0; 3 ..=
-    /// 2000 points (`MAX_TABULATED_POINTS`).
+    /// Shaped tabulated profile: radii `r` (m), strictly ascending from 0;
+    /// 3 ..= 2000 points (`MAX_TABULATED_POINTS`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "m"),
+        length(min = 3, max = MAX_TABULATED_POINTS),
+        inner(range(min = 0.0))
+    )]
     pub profile_r: Option<Vec<f64>>,
-    /// Shaped tabulated profile: heights `f(r)` (m) at `profile_r`.
+    /// Shaped tabulated profile: heights `f(r)` (m) at `profile_r` (as
+    /// many), from 0 at the apex, non-decreasing, the last positive.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "m"),
+        length(min = 3, max = MAX_TABULATED_POINTS),
+        inner(range(min = 0.0))
+    )]
     pub profile_f: Option<Vec<f64>>,
 }
 
@@ -377,32 +508,56 @@ impl Default for LawSpec {
 /// separation or a maximum load, `separations` or `loads` list states of
 /// interest: the curve then runs to the closest (most loaded) of them and
 /// each listed state is reported on approach, in the listed order.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ProgramSpec {
     /// Closest separation of the flat from the mean summit plane (m).
-    /// Exactly one of `closest_separation` and `max_load` must be given.
-    #[serde(default)]
+    /// Exactly one of `closest_separation`, `max_load`, `separations` and
+    /// `loads` must be given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m"))]
     pub closest_separation: Option<f64>,
     /// Maximum compressive load on approach (N, > 0).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "N", "exclusiveMinimum" = 0.0))]
     pub max_load: Option<f64>,
     /// Separations (m, from the mean summit height) at which to report the
-    /// approach state, in this order; at most [`MAX_LISTED_STATES`].
+    /// approach state, in this order; 1 to 10,000 of them
+    /// ([`MAX_LISTED_STATES`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m"), length(min = 1, max = MAX_LISTED_STATES))]
     pub separations: Option<Vec<f64>>,
     /// Compressive loads (N, > 0) at which to report the approach state
-    /// (the separation is solved for each), in this order; at most
-    /// [`MAX_LISTED_STATES`].
+    /// (the separation is solved for each), in this order; 1 to 10,000 of
+    /// them ([`MAX_LISTED_STATES`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(
+        extend("x-unit" = "N"),
+        length(min = 1, max = MAX_LISTED_STATES),
+        transform = positive_items
+    )]
     pub loads: Option<Vec<f64>>,
-    /// Separation where the program starts and ends (m); default: where
-    /// the first asperity comes within range of the flat.
-    #[serde(default)]
+    /// Separation where the program starts and ends (m), above the closest
+    /// one; default: where the first asperity comes within range of the
+    /// flat.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m"))]
     pub start_separation: Option<f64>,
-    /// Points per leg (approach, retraction), >= 2; default 200.
+    /// Points per leg (approach, retraction), in `[2, 1e6]`; default 200.
     #[serde(default = "default_points")]
+    #[schemars(extend("x-unit" = "1"), range(min = 2, max = MAX_POINTS))]
     pub points: usize,
+}
+
+/// The schema of a list of positive numbers: each item > 0
+/// (`schemars`' `inner(range(..))` states only inclusive bounds).
+fn positive_items(schema: &mut schemars::Schema) {
+    if let Some(items) = schema
+        .get_mut("items")
+        .and_then(serde_json::Value::as_object_mut)
+    {
+        items.insert("exclusiveMinimum".into(), 0.0.into());
+    }
 }
 
 /// Most listed states a program may ask for.
@@ -413,7 +568,7 @@ fn default_points() -> usize {
 }
 
 /// `[outputs]`: what to compute; everything not asked for is skipped.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct OutputsSpec {
     /// Total load against separation (default true).
@@ -463,13 +618,15 @@ impl Default for OutputsSpec {
     }
 }
 
-/// `[accuracy]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+/// `[accuracy]`: the tolerance of every output, and whether the model
+/// error of the law is measured.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct AccuracySpec {
     /// Relative tolerance of every output, in [1e-12, 0.1] (at least 1e-11
     /// with the calibrated law, whose table stalls below); default 1e-6.
     #[serde(default = "default_rtol")]
+    #[schemars(extend("x-unit" = "1"), range(min = 1e-12, max = 0.1))]
     pub rtol: f64,
     /// Measure the model error of an adhesive law on this surface against
     /// the full Lennard-Jones solver's law (`model_error` in the summary;
