@@ -7,11 +7,12 @@
 //! its values into core objects, mapping the core's errors onto scene
 //! fields. The planner ([`crate::study::plan`]) decides what to compute.
 //! [`scene_schema`] is the scene files' JSON Schema, derived from the same
-//! types.
+//! types; [`keys_at`] and [`nearest_key`] read the allowed keys from it.
 
 mod build;
 mod features;
 mod json_schema;
+mod keys;
 mod law_name;
 mod parse;
 mod schema;
@@ -23,6 +24,7 @@ pub use build::{
 };
 pub use features::ProgramTarget;
 pub use json_schema::{scene_schema, scene_schema_text, SCHEMA_DIALECT, UNIT_KEYWORD};
+pub use keys::{keys_at, nearest_key, scene_keys, suggest_key, SchemaKey};
 pub use law_name::LawName;
 pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
