@@ -39,3 +39,45 @@ fn mistyped_commands_and_flags_keep_the_tip_on_one_line() {
     assert_eq!(err.trim_end().lines().count(), 1, "{err}");
     assert!(err.contains("--outt") && err.contains("'--out'"), "{err}");
 }
+
+#[test]
+fn schema_prints_the_library_schema_and_one_line_per_key() {
+    let (code, out, err) = run(&["schema", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out, asperity::study::scene::scene_schema_text());
+    let (code, out, err) = run(&["schema"]);
+    assert_eq!(code, 0, "{err}");
+    let keys = asperity::study::scene::scene_keys();
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), keys.len(), "{out}");
+    for (line, key) in lines.iter().zip(&keys) {
+        assert!(line.starts_with(&format!("{} ", key.path)), "{line}");
+    }
+    let sigma = lines
+        .iter()
+        .find(|l| l.starts_with("surface.sigma "))
+        .unwrap();
+    let cells: Vec<&str> = sigma.split_whitespace().collect();
+    assert_eq!(
+        &cells[..7],
+        [
+            "surface.sigma",
+            "number",
+            "m",
+            "default",
+            "-",
+            "range",
+            "[1e-15,"
+        ],
+        "{sigma}"
+    );
+    assert!(sigma.contains("standard deviation"), "{sigma}");
+    let rtol = lines
+        .iter()
+        .find(|l| l.starts_with("accuracy.rtol "))
+        .unwrap();
+    assert!(
+        rtol.contains("default 1e-6") && rtol.contains("range [1e-12, 0.1]"),
+        "{rtol}"
+    );
+}

@@ -17,6 +17,7 @@ mod progress;
 mod punch_cmd;
 mod rough_sphere_cmd;
 mod run_cmd;
+mod schema_cmd;
 mod shape_cmd;
 mod sphere_cmd;
 mod spots_cmd;
@@ -78,6 +79,8 @@ enum Command {
     Persson(persson_cmd::PerssonArgs),
     /// Exact elastic contact of a map by FFT boundary elements, beside GW and Persson.
     Bem(bem_cmd::BemArgs),
+    /// The JSON Schema of scene files (draft 2020-12): every key's type, unit, default, range and description.
+    Schema(schema_cmd::SchemaArgs),
 }
 
 /// The subcommand within two edits of the one typed (`rn` -> `run`) when
@@ -198,6 +201,7 @@ fn main() -> ExitCode {
         Some(Command::Shape(args)) => shape_cmd::run(&args),
         Some(Command::Persson(args)) => persson_cmd::run(&args),
         Some(Command::Bem(args)) => bem_cmd::run(&args),
+        Some(Command::Schema(args)) => schema_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
