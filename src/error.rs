@@ -53,6 +53,31 @@ pub enum Error {
         /// What went wrong (the operating system's message).
         reason: String,
     },
+    /// The work needs more memory than the process may still use (estimated
+    /// before anything is allocated). Bad input (the input is too large: the
+    /// CLI exits 2); Python raises `MemoryError`.
+    #[error(
+        "{what}: {doing} needs about {:.1} GB, more than the {:.1} GB of memory available{hint}",
+        needed / 1e9,
+        available / 1e9
+    )]
+    OutOfMemory {
+        /// The input that is too large (an argument, a file).
+        what: String,
+        /// What needs the memory (`reading and characterising a map of ...`).
+        doing: String,
+        /// The estimate (bytes).
+        needed: f64,
+        /// The memory available (bytes).
+        available: f64,
+        /// Advice, starting with `: ` (or empty).
+        hint: String,
+    },
+    /// The computation was cancelled by its caller (Ctrl-C; see
+    /// [`crate::cancel`]). Not bad input: the CLI exits 130, Python raises
+    /// `KeyboardInterrupt`.
+    #[error("interrupted")]
+    Cancelled,
 }
 
 /// A value as a person reads it: plain for moderate magnitudes,
@@ -194,6 +219,19 @@ impl Error {
                 name: name.into(),
                 reason,
             },
+            Error::OutOfMemory {
+                doing,
+                needed,
+                available,
+                hint,
+                ..
+            } => Error::OutOfMemory {
+                what: name.into(),
+                doing,
+                needed,
+                available,
+                hint,
+            },
             other => other,
         }
     }
@@ -214,14 +252,18 @@ impl Error {
     pub fn field(&self) -> Option<&str> {
         match self {
             Error::OutOfRange { name, .. } | Error::Invalid { name, .. } => Some(name),
-            Error::NoConvergence { .. } | Error::Io { .. } => None,
+            Error::OutOfMemory { what, .. } => Some(what),
+            Error::NoConvergence { .. } | Error::Io { .. } | Error::Cancelled => None,
         }
     }
 
     /// Whether the error is the input's fault (CLI exit 2) rather than a
     /// failure of the computation or the system (exit 1).
     pub fn is_bad_input(&self) -> bool {
-        matches!(self, Error::OutOfRange { .. } | Error::Invalid { .. })
+        matches!(
+            self,
+            Error::OutOfRange { .. } | Error::Invalid { .. } | Error::OutOfMemory { .. }
+        )
     }
 
     /// An [`Error::Io`] about `path` from an operating-system error.

@@ -30,6 +30,7 @@
 
 pub mod axisym;
 pub mod bem;
+pub mod cancel;
 #[cfg(feature = "study")]
 pub mod commands;
 pub mod electrical;

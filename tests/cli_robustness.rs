@@ -208,3 +208,112 @@ fn unwritable_outputs_exit_1_everywhere() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Sends SIGINT to `child` after `delay` and waits for it: its status, the
+/// seconds from the signal to its exit, and its stderr.
+fn interrupted(
+    mut child: std::process::Child,
+    delay: std::time::Duration,
+) -> (Option<i32>, f64, String) {
+    std::thread::sleep(delay);
+    let sent = std::time::Instant::now();
+    let kill = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    let status = child.wait().unwrap();
+    let latency = sent.elapsed().as_secs_f64();
+    let mut err = String::new();
+    use std::io::Read;
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    (status.code(), latency, err)
+}
+
+/// Ctrl-C stops a long boundary-element solve at its next iteration: exit
+/// 130 within a second, "interrupted" on stderr, no output directory
+/// half-written.
+#[test]
+fn ctrl_c_stops_a_long_bem_solve_with_130() {
+    let dir = tmp("sigint-bem");
+    // A 512 x 512 map solved at many pressures: minutes of work.
+    let n = 512usize;
+    let mut state = 7u64;
+    let heights: Vec<f64> = (0..n * n)
+        .map(|_| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 1e-9
+        })
+        .collect();
+    let map = asperity::surface::HeightMap::new(n, n, heights).unwrap();
+    std::fs::write(dir.join("map.npy"), asperity::surface::npy::to_bytes(&map)).unwrap();
+    let pressures: Vec<String> = (0..40)
+        .map(|k| format!("{:e}", 1e5 * 1.2f64.powi(k)))
+        .collect();
+    let child = bin()
+        .args([
+            "bem",
+            "map.npy",
+            "--pixel-size",
+            "1e-7",
+            "--estar",
+            "1e9",
+            "--out",
+            "o",
+        ])
+        .arg(format!("--pressures={}", pressures.join(",")))
+        .current_dir(&dir)
+        .stderr(Stdio::piped())
+        .stdout(Stdio::null())
+        .spawn()
+        .unwrap();
+    let (code, latency, err) = interrupted(child, std::time::Duration::from_millis(1500));
+    assert_eq!(code, Some(130), "{err}");
+    assert!(latency < 1.0, "{latency} s: {err}");
+    assert!(err.contains("interrupted"), "{err}");
+    assert!(!dir.join("o").join("bem.json").exists());
+}
+
+/// Ctrl-C stops a sweep between points: exit 130, the rows finished are
+/// whole, and the same command resumes and completes the file.
+#[test]
+fn ctrl_c_stops_a_sweep_and_the_rerun_resumes() {
+    let dir = tmp("sigint-sweep");
+    let scene = scene_path("rf-mems-switch.toml");
+    let args = [
+        "sweep",
+        &scene,
+        "--vary",
+        "surface.sigma=3e-9:8e-9:200",
+        "--threads",
+        "2",
+        "--out",
+        "s",
+    ];
+    let child = bin()
+        .args(args)
+        .current_dir(&dir)
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let (code, latency, err) = interrupted(child, std::time::Duration::from_millis(1500));
+    assert_eq!(code, Some(130), "{err}");
+    assert!(latency < 1.0, "{latency} s: {err}");
+    let partial = std::fs::read_to_string(dir.join("s").join("results.csv")).unwrap_or_default();
+    let rows = partial.lines().count().saturating_sub(1);
+    assert!(rows < 200, "{rows} rows");
+    for line in partial.lines().skip(1) {
+        assert!(line.contains(",ok,"), "{line}");
+    }
+    let (code, _, err) = run(&args, &dir);
+    assert_eq!(code, 0, "{err}");
+    let done = std::fs::read_to_string(dir.join("s").join("results.csv")).unwrap();
+    assert_eq!(done.lines().count(), 201);
+}

@@ -1,14 +1,18 @@
 """asperity: adhesive contact between rough surfaces, from Python.
 
 A thin layer over the Rust library (pyo3 + NumPy; python/README.md): scenes
-run as ``asperity run`` runs them, and every command of the ``asperity``
-program that prints JSON is a function taking the command's flags as
-keyword arguments. SI units throughout. Every call releases the
-GIL while the library computes, so threads run in parallel.
+run as ``asperity run`` runs them (``run``, ``sweep``; every key in
+``scene_schema()``), and every command of the ``asperity`` program that
+prints JSON is a function taking the command's flags as keyword arguments.
+SI units throughout. Every call releases the GIL while the library
+computes, so threads run in parallel; long calls stop within a second of
+Ctrl-C (``KeyboardInterrupt``), leaving nothing half-written.
 
-Errors: bad input raises ``ValueError`` whose message names the field or
-flag exactly as the command line does (``surface.sigma = -1e-9 is out of
-range: ...``, ``--h: ...``); every other failure raises ``RuntimeError``.
+Errors name the parameter or the scene key path: bad input raises
+``ValueError`` (``surface.sigma = -1e-09 is out of range: ...``,
+``pixel_size = -1 is out of range: ...``), an array of the wrong kind
+``TypeError``, work beyond the memory available ``MemoryError`` (before
+anything is allocated), every other failure ``RuntimeError``.
 """
 
 from ._asperity import (  # noqa: F401
@@ -24,6 +28,7 @@ from ._asperity import (  # noqa: F401
     rough_sphere,
     run,
     run_toml,
+    scene_schema,
     shape,
     sphere,
     spots,
@@ -46,6 +51,7 @@ __all__ = [
     "rough_sphere",
     "run",
     "run_toml",
+    "scene_schema",
     "shape",
     "sphere",
     "spots",

@@ -1,12 +1,15 @@
 """Type stubs of asperity (the compiled module asperity._asperity).
 
-SI units throughout. Every function releases the GIL while it computes.
-Bad input raises ValueError naming the field or flag as the command line
-does; every other failure raises RuntimeError.
+SI units throughout. Every function releases the GIL while it computes;
+long calls stop within a second of Ctrl-C (KeyboardInterrupt). Bad input
+raises ValueError (TypeError for an array of the wrong kind) naming the
+parameter or the scene key path; memory beyond what is available raises
+MemoryError before anything is allocated; every other failure raises
+RuntimeError. The full documentation is in each function's docstring.
 """
 
 import os
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -48,17 +51,29 @@ def run_toml(text: str, *, out: Optional[Path] = None) -> RunResult:
 def default_scene() -> Dict[str, Any]:
     """The default study (examples/scenes/rf-mems-switch.toml, what a bare `asperity` runs) as a dict."""
 
+def scene_schema() -> Dict[str, Any]:
+    """The JSON Schema (draft 2020-12) of scene files and dicts: every key's
+    type, unit (`x-unit`), default, range and description (the same as
+    `asperity schema --json`)."""
+
 def sweep(
     scene: Scene,
     vary: Mapping[str, ArrayLike],
     threads: Optional[int] = None,
     *,
     seed: int = 0,
+    max_cpu_seconds: float = 86400.0,
+    progress: bool = False,
+    callback: Optional[Callable[[Dict[str, Any]], Any]] = None,
 ) -> Dict[str, npt.NDArray[Any]]:
     """Grid over every combination of the values of each dotted scene path
     (the first slowest); returns `results.csv`'s columns (`index`, the
     paths, `seed`, `status` as str, the result columns; NaN where a point
-    failed). Point seeds are SplitMix64(seed + index), as `asperity sweep`."""
+    failed). Point seeds are SplitMix64(seed + index), as `asperity sweep`.
+    The first point runs alone; its time times the others' count is the
+    estimate refused beyond `max_cpu_seconds` (ValueError). `progress`
+    shows points done, rate and ETA on sys.stderr; `callback` gets each
+    finished row as a dict."""
 
 def fn(dist: str, n: float, h: ArrayLike) -> npt.NDArray[np.float64]:
     """F_n(h) = int_h^inf (s - h)^n phi(s) ds of the standardised `gaussian`

@@ -1,87 +1,12 @@
-//! Values between Python and the library: scene dicts to TOML, JSON and
-//! TOML values to Python objects, tables to NumPy arrays, errors to
-//! exceptions. No physics here.
+//! Values from the library to Python: JSON values to Python objects,
+//! tables to NumPy arrays. No physics here.
 
-use asperity::commands::CommandError;
 use asperity::study::{Column, Table};
 use numpy::{PyArray1, ToPyArray};
-use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use pyo3::types::{PyBool, PyDict, PyList};
 use serde_json::Value;
-
-/// Bad input as `ValueError`, every other failure as `RuntimeError`; the
-/// message is the command line's.
-pub fn lib_err(e: asperity::Error) -> PyErr {
-    if e.is_bad_input() {
-        PyValueError::new_err(e.to_string())
-    } else {
-        PyRuntimeError::new_err(e.to_string())
-    }
-}
-
-/// A command's failure as `ValueError` (bad input) or `RuntimeError`.
-pub fn cmd_err(e: CommandError) -> PyErr {
-    match e {
-        CommandError::Usage(m) => PyValueError::new_err(m),
-        CommandError::Failed(m) => PyRuntimeError::new_err(m),
-    }
-}
-
-/// A Python value (dict, list, tuple, str, bool, int, float or a NumPy
-/// scalar or array) as a TOML value; `at` is its dotted path for errors.
-pub fn to_toml(obj: &Bound<'_, PyAny>, at: &str) -> PyResult<toml::Value> {
-    if let Ok(d) = obj.cast::<PyDict>() {
-        let mut table = toml::map::Map::new();
-        for (k, v) in d.iter() {
-            let key: String = k
-                .extract()
-                .map_err(|_| PyValueError::new_err(format!("{at}: keys must be str, got {k:?}")))?;
-            let path = if at.is_empty() {
-                key.clone()
-            } else {
-                format!("{at}.{key}")
-            };
-            if v.is_none() {
-                continue; // None means "not given", as a missing key.
-            }
-            table.insert(key, to_toml(&v, &path)?);
-        }
-        return Ok(toml::Value::Table(table));
-    }
-    if obj.is_instance_of::<PyBool>() {
-        return Ok(toml::Value::Boolean(obj.extract()?));
-    }
-    if obj.is_instance_of::<PyString>() {
-        return Ok(toml::Value::String(obj.extract()?));
-    }
-    if obj.is_instance_of::<PyInt>() {
-        let i: i64 = obj.extract()?;
-        return Ok(toml::Value::Integer(i));
-    }
-    if obj.is_instance_of::<PyFloat>() {
-        return Ok(toml::Value::Float(obj.extract()?));
-    }
-    if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() {
-        let items = obj
-            .try_iter()?
-            .enumerate()
-            .map(|(i, v)| to_toml(&v?, &format!("{at}[{i}]")))
-            .collect::<PyResult<Vec<_>>>()?;
-        return Ok(toml::Value::Array(items));
-    }
-    // NumPy scalars and arrays, os.PathLike: through their Python value.
-    if obj.hasattr("tolist")? {
-        return to_toml(&obj.call_method0("tolist")?, at);
-    }
-    if obj.hasattr("__fspath__")? {
-        return to_toml(&obj.call_method0("__fspath__")?, at);
-    }
-    Err(PyTypeError::new_err(format!(
-        "{at}: cannot put a {} into a scene",
-        obj.get_type().name()?
-    )))
-}
 
 /// A JSON value as plain Python objects (dict, list, str, int, float,
 /// bool, None).
@@ -153,6 +78,38 @@ pub fn table_to_py(py: Python<'_>, t: &Table) -> PyResult<Py<PyAny>> {
                 .unbind(),
         };
         d.set_item(name, arr)?;
+    }
+    Ok(d.into_any().unbind())
+}
+
+/// The first row of a table as a dict of Python scalars (float, int, str).
+pub fn row_to_py(py: Python<'_>, t: &Table) -> PyResult<Py<PyAny>> {
+    let d = PyDict::new(py);
+    for (name, col) in &t.columns {
+        let v: Py<PyAny> = match col {
+            Column::Numbers(v) => v
+                .first()
+                .copied()
+                .unwrap_or(f64::NAN)
+                .into_pyobject(py)?
+                .into_any()
+                .unbind(),
+            Column::Integers(v) => v
+                .first()
+                .copied()
+                .unwrap_or_default()
+                .into_pyobject(py)?
+                .into_any()
+                .unbind(),
+            Column::Text(v) => v
+                .first()
+                .cloned()
+                .unwrap_or_default()
+                .into_pyobject(py)?
+                .into_any()
+                .unbind(),
+        };
+        d.set_item(name, v)?;
     }
     Ok(d.into_any().unbind())
 }

@@ -16,6 +16,44 @@ import numpy as np
 import pytest
 
 REPO = Path(__file__).resolve().parents[2]
+
+# Every message an exception provoked under `pytest.raises` carries (and
+# those passed to `record`): test_zz_messages.py checks that none speaks
+# the command line's language (`--flags`).
+MESSAGES = []
+_raises = pytest.raises
+
+
+class _Recording:
+    def __init__(self, ctx):
+        self.ctx = ctx
+
+    def __enter__(self):
+        return self.ctx.__enter__()
+
+    def __exit__(self, kind, value, tb):
+        if value is not None:
+            MESSAGES.append(str(value))
+        return self.ctx.__exit__(kind, value, tb)
+
+
+def _recording_raises(*args, **kwargs):
+    if len(args) > 1:  # the callable form: pytest.raises(E, f, *args)
+        info = _raises(*args, **kwargs)
+        MESSAGES.append(str(info.value))
+        return info
+    return _Recording(_raises(*args, **kwargs))
+
+
+pytest.raises = _recording_raises
+
+
+def record(e):
+    """The message of `e` (an ExceptionInfo, an exception or a str),
+    recorded for test_zz_messages.py."""
+    msg = str(e.value) if hasattr(e, "value") else str(e)
+    MESSAGES.append(msg)
+    return msg
 SCENES = sorted((REPO / "examples" / "scenes").glob("*.toml"))
 # Values that are wall-clock times, not results.
 TIMES = {"seconds", "solve_wall_s"}

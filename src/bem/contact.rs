@@ -55,6 +55,7 @@ pub(crate) fn solve_load(
     let (mut g_old, mut delta) = (1.0, false);
     let mut residual = f64::INFINITY;
     for it in 0..options.max_iterations {
+        crate::cancel::check()?;
         op.displacement(&p, &mut u);
         // g = K p - h, then shifted by its mean over S.
         let [sum_s, count_s] = reduce(n, |rg| {

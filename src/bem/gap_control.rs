@@ -116,6 +116,7 @@ pub(crate) fn solve_gap(
     let (mut g_old, mut delta) = (1.0, false);
     let mut residual = f64::INFINITY;
     for it in 0..options.max_iterations {
+        crate::cancel::check()?;
         u.par_iter_mut()
             .zip(&g)
             .zip(h)

@@ -3,9 +3,8 @@
 //! surface`) and Persson (from the map's radial spectrum) at the same mean
 //! pressures.
 
-use super::persson::positive_list;
-use super::surface::read_map;
-use super::{CommandError as CliError, Report};
+use super::persson::positive_values;
+use super::{param, CommandResult};
 use crate::bem::resistance::cluster_resistance;
 use crate::bem::{
     clusters::size_distribution, memory_estimate, Options, Problem, SizeBin, Solution,
@@ -27,253 +26,324 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Instant;
 
-/// Arguments of `asperity bem`.
+/// What the solves hold fixed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BemTargets {
+    /// Mean pressures (Pa), each > 0: load control.
+    Pressures(Vec<f64>),
+    /// Mean gaps (m), each > 0: mean-gap control.
+    Gaps(Vec<f64>),
+}
+
+impl BemTargets {
+    /// The targets from the two optional inputs, exactly one of which is
+    /// given.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `{pressures}` and `{gaps}`.
+    pub fn from_options(
+        pressures: Option<Vec<f64>>,
+        gaps: Option<Vec<f64>>,
+    ) -> CommandResult<Self> {
+        match (pressures, gaps) {
+            (Some(p), None) => Ok(BemTargets::Pressures(p)),
+            (None, Some(g)) => Ok(BemTargets::Gaps(g)),
+            (Some(_), Some(_)) => Err(Error::invalid(
+                format!("{}, {}", param("pressures"), param("gaps")),
+                "give only one of them",
+            )),
+            (None, None) => Err(Error::invalid(
+                format!("{} or {}", param("pressures"), param("gaps")),
+                "one is needed",
+            )),
+        }
+    }
+}
+
+/// The exponential adhesive interaction `-w exp(-g/rho)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BemAdhesion {
+    /// Work of adhesion w (J/m^2).
+    pub energy: f64,
+    /// Range rho (m).
+    pub range: f64,
+}
+
+impl BemAdhesion {
+    /// The interaction from the two optional inputs, both or neither given.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `{adhesion_energy}` and `{adhesion_range}`.
+    pub fn from_options(energy: Option<f64>, range: Option<f64>) -> CommandResult<Option<Self>> {
+        match (energy, range) {
+            (Some(energy), Some(range)) => Ok(Some(BemAdhesion { energy, range })),
+            (None, None) => Ok(None),
+            _ => Err(Error::invalid(
+                format!("{}, {}", param("adhesion_energy"), param("adhesion_range")),
+                "give both or neither",
+            )),
+        }
+    }
+}
+
+/// The input of [`bem`] besides the map.
 #[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct BemArgs {
-    /// The rigid rough surface: NumPy `.npy` or a text matrix, as for
-    /// `asperity surface` (heights in the file's unit, see --scale).
-    pub map: PathBuf,
+pub struct BemInput {
     /// Pixel size (m), the same along x and y.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub pixel_size: f64,
-    /// Factor from the file's height unit to metres.
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, default_value_t = 1.0)
-    )]
-    pub scale: f64,
     /// Contact modulus E* (Pa).
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub estar: f64,
-    /// Comma-separated mean pressures (Pa): load control.
-    #[cfg_attr(
-        feature = "cli",
-        arg(
-            long,
-            allow_negative_numbers = true,
-            conflicts_with = "gaps",
-            required_unless_present = "gaps"
-        )
-    )]
-    pub pressures: Option<String>,
-    /// Comma-separated mean gaps (m): mean-gap control.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
-    pub gaps: Option<String>,
+    /// Mean pressures or mean gaps.
+    pub targets: BemTargets,
     /// Treat the map as periodic (otherwise padded to twice its size, a
     /// non-periodic half-space; the mean plane is removed either way, only
     /// the mean when periodic).
-    #[cfg_attr(feature = "cli", arg(long))]
     pub periodic: bool,
-    /// Work of adhesion w (J/m^2) of the exponential interaction -w exp(-g/rho).
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, requires = "adhesion_range")
-    )]
-    pub adhesion_energy: Option<f64>,
-    /// Range rho (m) of the exponential interaction.
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, requires = "adhesion_energy")
-    )]
-    pub adhesion_range: Option<f64>,
-    /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap.
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, default_value_t = 1.0)
-    )]
+    /// The adhesive interaction, if any.
+    pub adhesion: Option<BemAdhesion>,
+    /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap
+    /// (default 1).
     pub gamma: f64,
     /// Resistivity (Ohm m, both bodies): adds the contact resistance of the
     /// clusters (Holm/Maxwell spots + Greenwood interaction) and GW's.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub resistivity: Option<f64>,
-    /// Residual at which the solver stops (dimensionless), in [1e-15, 1e-2].
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, default_value_t = 1e-10)
-    )]
+    /// Residual at which the solver stops (dimensionless), in [1e-15, 1e-2];
+    /// default 1e-10.
     pub tolerance: f64,
-    /// Most iterations per solve, at least 1.
-    #[cfg_attr(feature = "cli", arg(long, default_value_t = 10_000))]
+    /// Most iterations per solve, at least 1; default 10,000.
     pub max_iterations: usize,
-    /// Memory the solver may use (MiB); larger maps are refused.
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, default_value_t = 1024.0)
-    )]
+    /// Memory the solver may use (MiB); larger maps are refused. Default
+    /// 1024.
     pub memory_limit_mib: f64,
-    /// Write contact.npy/pressure.npy/gap.npy per state, bem.json and charts here.
-    #[cfg_attr(feature = "cli", arg(long))]
+    /// Write contact/pressure/gap `.npy` per state, `bem.json` and charts
+    /// here.
     pub out: Option<PathBuf>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
 }
 
-#[derive(Serialize, Clone)]
-struct ResistanceJson {
-    bem_parallel_ohm: f64,
-    bem_greenwood_ohm: f64,
-    gw_ohm: Option<f64>,
+impl BemInput {
+    /// Checks every input but the map (before a map is read).
+    ///
+    /// # Errors
+    /// Naming the input and its range.
+    pub fn validate(&self) -> CommandResult<()> {
+        positive(&param("pixel_size"), self.pixel_size)?;
+        positive(&param("estar"), self.estar)?;
+        crate::error::Allowed::closed(1e-15, 1e-2).check(&param("tolerance"), self.tolerance)?;
+        if self.max_iterations == 0 {
+            return Err(Error::invalid(
+                param("max_iterations"),
+                "0: give at least 1",
+            ));
+        }
+        positive(&param("memory_limit_mib"), self.memory_limit_mib)?;
+        match &self.targets {
+            BemTargets::Pressures(p) => positive_values("pressures", p),
+            BemTargets::Gaps(g) => positive_values("gaps", g),
+        }
+    }
+
+    /// The defaults with the required inputs.
+    pub fn new(pixel_size: f64, estar: f64, targets: BemTargets) -> Self {
+        BemInput {
+            pixel_size,
+            estar,
+            targets,
+            periodic: false,
+            adhesion: None,
+            gamma: 1.0,
+            resistivity: None,
+            tolerance: 1e-10,
+            max_iterations: 10_000,
+            memory_limit_mib: 1024.0,
+            out: None,
+        }
+    }
 }
 
-#[derive(Serialize)]
-struct StateJson {
+/// Contact resistances of a state (Ohm).
+#[derive(Serialize, Debug, Clone)]
+pub struct BemResistance {
+    /// The clusters as independent parallel Holm spots.
+    pub bem_parallel_ohm: f64,
+    /// The clusters with Greenwood's interaction.
+    pub bem_greenwood_ohm: f64,
+    /// GW's on the same map's moments, at the same mean pressure.
+    pub gw_ohm: Option<f64>,
+}
+
+/// One solve: the exact boundary-element state.
+#[derive(Serialize, Debug, Clone)]
+pub struct BemState {
+    /// Mean pressure (Pa).
     #[serde(rename = "pressure_Pa")]
-    pressure: f64,
-    mean_gap_m: f64,
-    area_fraction: f64,
-    clusters: usize,
-    iterations: usize,
-    residual: f64,
-    cluster_sizes_px: Vec<SizeBin>,
+    pub pressure: f64,
+    /// Mean gap (m).
+    pub mean_gap_m: f64,
+    /// Real-area fraction `A/A0`.
+    pub area_fraction: f64,
+    /// Contact clusters (8-connected pixels in contact).
+    pub clusters: usize,
+    /// Solver iterations.
+    pub iterations: usize,
+    /// Final residual (dimensionless).
+    pub residual: f64,
+    /// Cluster sizes (pixels) in logarithmic bins.
+    pub cluster_sizes_px: Vec<SizeBin>,
+    /// Contact resistance, with a resistivity.
     #[serde(skip_serializing_if = "Option::is_none")]
-    resistance: Option<ResistanceJson>,
+    pub resistance: Option<BemResistance>,
 }
 
-#[derive(Serialize, Clone, Copy)]
-struct ModelJson {
+/// A model's prediction at a state's mean pressure (null where it has
+/// none).
+#[derive(Serialize, Debug, Clone, Copy)]
+pub struct BemModel {
+    /// Mean pressure (Pa).
     #[serde(rename = "pressure_Pa")]
-    pressure: f64,
-    area_fraction: Option<f64>,
-    mean_gap_m: Option<f64>,
+    pub pressure: f64,
+    /// Real-area fraction.
+    pub area_fraction: Option<f64>,
+    /// Mean gap (m).
+    pub mean_gap_m: Option<f64>,
 }
 
-#[derive(Serialize)]
-struct DiffJson {
+/// Relative differences `model / exact - 1` at a state's mean pressure.
+#[derive(Serialize, Debug, Clone)]
+pub struct BemDifference {
+    /// Mean pressure (Pa).
     #[serde(rename = "pressure_Pa")]
-    pressure: f64,
-    gw_area: Option<f64>,
-    gw_mean_gap: Option<f64>,
-    persson_area: Option<f64>,
-    persson_mean_gap: Option<f64>,
+    pub pressure: f64,
+    /// GW's area against the exact.
+    pub gw_area: Option<f64>,
+    /// GW's mean gap against the exact.
+    pub gw_mean_gap: Option<f64>,
+    /// Persson's area against the exact.
+    pub persson_area: Option<f64>,
+    /// Persson's mean gap against the exact.
+    pub persson_mean_gap: Option<f64>,
 }
 
-#[derive(Serialize)]
-struct BemJson {
-    states: Vec<StateJson>,
-    gw: Vec<ModelJson>,
-    persson: Vec<ModelJson>,
-    relative_differences: Vec<DiffJson>,
-    rows: usize,
-    cols: usize,
-    periodic: bool,
-    memory_estimate_bytes: usize,
-    gamma: f64,
-    solve_wall_s: f64,
-    numerical_error: String,
-    model_error: String,
-    warnings: Vec<String>,
+/// What `asperity bem --json` prints.
+#[derive(Serialize, Debug, Clone)]
+pub struct BemOutput {
+    /// The exact states, in the order of the targets.
+    pub states: Vec<BemState>,
+    /// GW (from the map's moments) at the same mean pressures.
+    pub gw: Vec<BemModel>,
+    /// Persson (from the map's radial spectrum) at the same mean pressures.
+    pub persson: Vec<BemModel>,
+    /// The models against the exact states.
+    pub relative_differences: Vec<BemDifference>,
+    /// Rows of the map.
+    pub rows: usize,
+    /// Columns of the map.
+    pub cols: usize,
+    /// Whether the map was taken as periodic.
+    pub periodic: bool,
+    /// The solver's memory estimate (bytes).
+    pub memory_estimate_bytes: usize,
+    /// The Yang–Persson factor used.
+    pub gamma: f64,
+    /// Wall-clock time of the solves (s).
+    pub solve_wall_s: f64,
+    /// The numerical error of the outputs, in words.
+    pub numerical_error: String,
+    /// The model error of the outputs, in words.
+    pub model_error: String,
+    /// Results outside a model's validity.
+    pub warnings: Vec<String>,
 }
 
 fn opt_rel(model: Option<f64>, exact: f64) -> Option<f64> {
     model.filter(|_| exact != 0.0).map(|m| m / exact - 1.0)
 }
 
-/// Runs `asperity bem` on the map file `args.map` (and writes `--out`).
-pub fn run(args: &BemArgs) -> super::CommandResult<Report> {
-    run_map(args, None)
-}
-
-/// Runs `asperity bem` on `map` (heights in m, named `name` in errors;
-/// `args.map` and `args.scale` are then not used), or on the file
-/// `args.map` when `map` is `None`.
-pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::CommandResult<Report> {
-    positive("--pixel-size", args.pixel_size)?;
-    positive("--scale", args.scale)?;
-    positive("--estar", args.estar)?;
-    crate::error::Allowed::closed(1e-15, 1e-2).check("--tolerance", args.tolerance)?;
-    if args.max_iterations == 0 {
-        return Err(CliError::Usage(
-            "--max-iterations = 0: give at least 1".into(),
-        ));
-    }
-    positive("--memory-limit-mib", args.memory_limit_mib)?;
-    // The command line refuses these combinations while parsing; other
-    // callers get the same errors here.
-    if args.pressures.is_some() && args.gaps.is_some() {
-        return Err(CliError::Usage(
-            "--pressures, --gaps: give only one of them".into(),
-        ));
-    }
-    if args.adhesion_energy.is_some() != args.adhesion_range.is_some() {
-        return Err(CliError::Usage(
-            "--adhesion-energy, --adhesion-range: give both or neither".into(),
-        ));
-    }
-    let (targets, by_gap) = match (&args.pressures, &args.gaps) {
-        (Some(p), _) => (positive_list("--pressures", p)?, false),
-        (None, Some(g)) => (positive_list("--gaps", g)?, true),
-        (None, None) => {
-            return Err(CliError::Usage(
-                "--pressures or --gaps: one is needed".into(),
-            ))
-        }
+/// The exact elastic contact of `map` (heights in m) by FFT boundary
+/// elements, beside GW and Persson at the same mean pressures (`asperity
+/// bem`), and its outputs written to `input.out`.
+///
+/// # Errors
+/// Naming an input (`{pressures[i]}`, `{estar}`, `{heights}` for the map:
+/// flat, too small); a map beyond `{memory_limit_mib}` or the memory
+/// available; a solve that fails at the inputs names the target;
+/// [`Error::Cancelled`].
+pub fn bem(map: &HeightMap, args: &BemInput) -> CommandResult<BemOutput> {
+    args.validate()?;
+    let (targets, by_gap) = match &args.targets {
+        BemTargets::Pressures(p) => (p.as_slice(), false),
+        BemTargets::Gaps(g) => (g.as_slice(), true),
     };
-    let (map, shown) = match map {
-        Some((m, name)) => (m, name.to_string()),
-        None => (
-            read_map(&args.map)?
-                .scaled(args.scale)
-                .map_err(|e| e.renamed("--scale"))?,
-            super::surface::scaled_name(&args.map, args.scale),
-        ),
-    };
+    let shown = param("heights");
     let options = Options {
         tolerance: args.tolerance,
         max_iterations: args.max_iterations,
         memory_limit: (args.memory_limit_mib * 1048576.0) as usize,
     };
     let memory = memory_estimate(map.rows(), map.cols(), args.periodic);
+    let layout = format!(
+        "{} x {} pixels{}",
+        map.rows(),
+        map.cols(),
+        if args.periodic {
+            ""
+        } else {
+            ", padded to twice the size"
+        }
+    );
     if memory as f64 > args.memory_limit_mib * 1048576.0 {
-        return Err(CliError::Usage(format!(
-            "--memory-limit-mib = {}: {shown} ({} x {} pixels{}) needs about {:.1} MiB",
-            args.memory_limit_mib,
-            map.rows(),
-            map.cols(),
-            if args.periodic {
-                ""
-            } else {
-                ", padded to twice the size"
-            },
-            memory as f64 / 1048576.0
-        )));
+        return Err(Error::invalid(
+            param("memory_limit_mib"),
+            format!(
+                "{}: {shown} ({layout}) needs about {:.1} MiB",
+                args.memory_limit_mib,
+                memory as f64 / 1048576.0
+            ),
+        ));
     }
-    let mut problem = Problem::new(&map, args.pixel_size, args.estar, args.periodic, &options)
-        .map_err(|e| match e.field() {
-            Some("topography") => e.renamed(&shown),
-            Some("pixel_size") => e.renamed("--pixel-size"),
-            Some("contact_modulus") => e.renamed("--estar"),
-            _ => e,
+    crate::study::memory::ensure(
+        &shown,
+        &format!("the boundary elements of {layout}"),
+        memory as f64,
+        "crop or downsample the map",
+    )?;
+    let mut problem = Problem::new(map, args.pixel_size, args.estar, args.periodic, &options)
+        .map_err(|e| {
+            super::named(
+                e,
+                &[
+                    ("topography", "heights"),
+                    ("pixel_size", "pixel_size"),
+                    ("contact_modulus", "estar"),
+                ],
+            )
         })?;
-    if let (Some(w), Some(rho)) = (args.adhesion_energy, args.adhesion_range) {
-        problem = problem.with_adhesion(w, rho).map_err(|e| match e.field() {
-            Some("periodic") => e.renamed("--periodic"),
-            Some(f) => {
-                let f = format!("--{}", f.replace('_', "-"));
-                e.renamed(&f)
+    if let Some(a) = args.adhesion {
+        problem = problem.with_adhesion(a.energy, a.range).map_err(|e| {
+            match e.field().map(str::to_string) {
+                Some(f) => e.renamed(&param(&f)),
+                None => e,
             }
-            None => e,
         })?;
     }
     let spot = args
         .resistivity
         .map(|r| {
             SpotResistance::same_metal(Spreading::Maxwell, r, None)
-                .map_err(|e| e.renamed("--resistivity"))
+                .map_err(|e| e.renamed(&param("resistivity")))
         })
         .transpose()?;
     // GW from the finite-difference moments (as `asperity surface`), Persson from the PSD.
     let topo = Topography::new(map.clone(), args.pixel_size).map_err(|e| match e.field() {
-        Some("heights") => e.renamed("--scale"),
-        _ => e.renamed("--pixel-size"),
+        Some("heights") => e.renamed(&param("scale")),
+        _ => e.renamed(&param("pixel_size")),
     })?;
     let charac = topo
         .characterise(args.periodic)
         .map_err(|e| e.renamed(&shown))?;
     let gw = GwOnSpectrum::from_moments(&charac.moments, args.estar).ok();
-    let psd = radial_psd(&map, args.pixel_size, args.periodic).map_err(|e| e.renamed(&shown))?;
-    let persson = Persson::new(psd, args.estar, args.gamma).map_err(|e| e.renamed("--gamma"))?;
+    let psd = radial_psd(map, args.pixel_size, args.periodic).map_err(|e| e.renamed(&shown))?;
+    let persson =
+        Persson::new(psd, args.estar, args.gamma).map_err(|e| e.renamed(&param("gamma")))?;
     let nominal_area = charac.nominal_area_m2();
 
     let start = Instant::now();
@@ -281,31 +351,44 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
     let mut solutions: Vec<Solution> = Vec::new();
     let mut states = Vec::new();
     let (mut gw_list, mut persson_list, mut diffs) = (Vec::new(), Vec::new(), Vec::new());
-    for &t in &targets {
+    for &t in targets {
         let warm = solutions.last();
-        let target = if by_gap { "--gaps" } else { "--pressures" };
+        let target = param(if by_gap { "gaps" } else { "pressures" });
         let solved = if by_gap {
             problem.solve_gap(t, &options, warm)
         } else {
             problem.solve_pressure(t, &options, warm)
         };
-        let s = solved.map_err(|e| -> CliError {
+        let s = solved.map_err(|e| -> Error {
             if e.is_bad_input() {
-                return e.renamed(target).into();
+                return e.renamed(&target);
+            }
+            if matches!(e, Error::Cancelled) {
+                return e;
             }
             // A solve that fails at these inputs: the target, the modulus
             // and the adhesion the user wrote, named with the failure.
-            CliError::Usage(format!(
-                "{target}: {t:e} with --estar {:e} Pa{}: {e}; the inputs are outside what the \
-                 solver reaches (try a target nearer the map's scales, or --tolerance / \
-                 --max-iterations)",
-                args.estar,
-                match (args.adhesion_energy, args.adhesion_range) {
-                    (Some(w), Some(r)) =>
-                        format!(", --adhesion-energy {w:e} J/m^2, --adhesion-range {r:e} m"),
-                    _ => String::new(),
-                }
-            ))
+            Error::invalid(
+                &target,
+                format!(
+                    "{t:e} with {} {:e} Pa{}: {e}; the inputs are outside what the solver \
+                     reaches (try a target nearer the map's scales, or {} / {})",
+                    param("estar"),
+                    args.estar,
+                    match args.adhesion {
+                        Some(a) => format!(
+                            ", {} {:e} J/m^2, {} {:e} m",
+                            param("adhesion_energy"),
+                            a.energy,
+                            param("adhesion_range"),
+                            a.range
+                        ),
+                        None => String::new(),
+                    },
+                    param("tolerance"),
+                    param("max_iterations")
+                ),
+            )
         })?;
         let cl = problem.clusters(&s);
         let singles = cl.iter().filter(|c| c.pixels == 1).count();
@@ -339,8 +422,7 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
         }
         let resistance = match &spot {
             Some(sp) => {
-                let bem = cluster_resistance(&problem, &cl, sp)
-                    .map_err(|e| CliError::Failed(e.to_string()))?;
+                let bem = cluster_resistance(&problem, &cl, sp)?;
                 let gw_r = match (&gw, gw_state) {
                     (Some(g), Some(st)) => {
                         // The engine's one GW integrator: Hertz summits, the
@@ -364,7 +446,7 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
                     }
                     _ => None,
                 };
-                bem.map(|b| ResistanceJson {
+                bem.map(|b| BemResistance {
                     bem_parallel_ohm: b.parallel,
                     bem_greenwood_ohm: b.greenwood,
                     gw_ohm: gw_r,
@@ -372,17 +454,17 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
             }
             None => None,
         };
-        let gw_json = ModelJson {
+        let gw_json = BemModel {
             pressure: p,
             area_fraction: gw_state.map(|g| g.area_fraction),
             mean_gap_m: gw_state.map(|g| g.mean_gap),
         };
-        let pe_json = ModelJson {
+        let pe_json = BemModel {
             pressure: p,
             area_fraction: pe_state.map(|g| g.area_fraction),
             mean_gap_m: pe_state.map(|g| g.mean_gap),
         };
-        diffs.push(DiffJson {
+        diffs.push(BemDifference {
             pressure: p,
             gw_area: opt_rel(gw_json.area_fraction, s.area_fraction()),
             gw_mean_gap: opt_rel(gw_json.mean_gap_m, s.mean_gap),
@@ -391,7 +473,7 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
         });
         gw_list.push(gw_json);
         persson_list.push(pe_json);
-        states.push(StateJson {
+        states.push(BemState {
             pressure: p,
             mean_gap_m: s.mean_gap,
             area_fraction: s.area_fraction(),
@@ -409,12 +491,12 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
                 .into(),
         );
     }
-    if args.adhesion_energy.is_some() {
+    if args.adhesion.is_some() {
         warnings.push(
             "GW and Persson columns are the non-adhesive theories at the same mean pressure".into(),
         );
     }
-    let out = BemJson {
+    let out = BemOutput {
         states,
         gw: gw_list,
         persson: persson_list,
@@ -432,24 +514,31 @@ pub fn run_map(args: &BemArgs, map: Option<(HeightMap, &str)>) -> super::Command
         model_error: "boundary elements: exact linear-elastic, frictionless, small-slope half-space solution of the pixel map (the only error is the discretisation); GW and Persson are approximations of the same problem, see relative_differences".into(),
         warnings,
     };
-    let json = serde_json::to_string(&out).map_err(|e| CliError::Failed(e.to_string()))?;
     if let Some(dir) = &args.out {
-        write_outputs(dir, &json, &out, &solutions, &problem)?;
+        crate::cancel::check()?;
+        write_outputs(dir, &out, &solutions, &problem)?;
     }
-    Report::new(&out, print_table(&out))
+    Ok(out)
+}
+
+impl BemOutput {
+    /// The table `asperity bem` prints.
+    pub fn text(&self) -> String {
+        print_table(self)
+    }
 }
 
 fn write_outputs(
     dir: &Path,
-    json: &str,
-    out: &BemJson,
+    out: &BemOutput,
     sols: &[Solution],
     problem: &Problem,
-) -> super::CommandResult<()> {
-    let io = |p: &Path, e: std::io::Error| CliError::from(Error::io(p.display(), e));
-    std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
-    let p = dir.join("bem.json");
-    crate::study::atomic::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
+) -> CommandResult<()> {
+    super::create_dir(dir)?;
+    super::write_file(
+        &dir.join("bem.json"),
+        format!("{}\n", super::json_line(out)?),
+    )?;
     let (rows, cols) = problem.shape();
     for (k, s) in sols.iter().enumerate() {
         let fields: [(&str, Vec<f64>); 3] = [
@@ -464,14 +553,13 @@ fn write_outputs(
             ("gap", s.gap.clone()),
         ];
         for (name, v) in fields {
-            let m = HeightMap::new(rows, cols, v).map_err(|e| CliError::Failed(e.to_string()))?;
-            let p = dir.join(format!("{name}_{k}.npy"));
-            crate::study::atomic::write(&p, npy::to_bytes(&m)).map_err(|e| io(&p, e))?;
+            let m = HeightMap::new(rows, cols, v)?;
+            super::write_file(&dir.join(format!("{name}_{k}.npy")), npy::to_bytes(&m))?;
         }
     }
     use crate::study::plot::{Chart, Series};
     let series = |label: &str, pts: Vec<(f64, f64)>| Series::leg(label, pts);
-    let pick = |l: &[ModelJson], f: fn(&ModelJson) -> Option<f64>| -> Vec<(f64, f64)> {
+    let pick = |l: &[BemModel], f: fn(&BemModel) -> Option<f64>| -> Vec<(f64, f64)> {
         l.iter()
             .filter_map(|m| f(m).map(|v| (m.pressure, v)))
             .collect()
@@ -512,14 +600,11 @@ fn write_outputs(
         y_range: None,
         y_symlog: false,
     };
-    let chart = |e: Error| CliError::Failed(e.to_string());
-    area.write_svg_loglog(&dir.join("area_vs_pressure.svg"), 800, 560)
-        .map_err(chart)?;
+    area.write_svg_loglog(&dir.join("area_vs_pressure.svg"), 800, 560)?;
     gap.write_svg(&dir.join("gap_vs_pressure.svg"), 800, 560)
-        .map_err(chart)
 }
 
-fn print_table(o: &BemJson) -> String {
+fn print_table(o: &BemOutput) -> String {
     let mut t = String::new();
     let _ = writeln!(
         t,

@@ -2,27 +2,11 @@
 //! `F_n(h) = int_h^inf (s - h)^n phi(s) ds` of a standardised height
 //! distribution (`docs/architecture.md`, height distributions).
 
-use super::{list, CommandError, CommandResult};
-use crate::heights::{Exponential, Gaussian, HeightDistribution};
+use super::{param, CommandResult};
+use crate::error::Error;
+use crate::heights::{DistributionKind, Exponential, Gaussian, HeightDistribution};
+use crate::named::Named;
 use serde::Serialize;
-
-/// Arguments of `asperity fn`.
-#[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct FnArgs {
-    /// Height distribution: gaussian or exponential.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub dist: String,
-    /// Order n in [0, 100] of F_n(h) = int_h^inf (s-h)^n phi(s) ds.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
-    pub n: f64,
-    /// Comma-separated standardised separations h, e.g. -1,0,2.5.
-    #[cfg_attr(feature = "cli", arg(long, allow_hyphen_values = true))]
-    pub h: String,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
-}
 
 /// One value: `{"h": .., "F": ..}`.
 #[derive(Serialize, Debug, Clone, Copy)]
@@ -48,45 +32,82 @@ pub struct FnOutput {
     pub closed_form: bool,
 }
 
-/// The distribution named by `--dist`.
-pub fn distribution(name: &str) -> CommandResult<Box<dyn HeightDistribution>> {
-    match name {
-        "gaussian" => Ok(Box::new(Gaussian::new())),
-        "exponential" => Ok(Box::new(Exponential::new())),
-        other => Err(CommandError::Usage(format!(
-            "--dist: unknown distribution {other:?}; known: gaussian, exponential"
-        ))),
+/// The standardised distribution `dist` (gaussian or exponential: the
+/// distributions whose `F_n` takes no parameter).
+///
+/// # Errors
+/// [`Error::Invalid`] naming `{dist}` for another distribution.
+pub fn distribution(dist: DistributionKind) -> CommandResult<Box<dyn HeightDistribution>> {
+    match dist {
+        DistributionKind::Gaussian => Ok(Box::new(Gaussian::new())),
+        DistributionKind::Exponential => Ok(Box::new(Exponential::new())),
+        other => Err(Error::invalid(
+            param("dist"),
+            format!(
+                "{:?} needs its parameter (a scene's surface table); known here: gaussian, \
+                 exponential",
+                other.name()
+            ),
+        )),
     }
 }
 
-/// `F_n(h)` of the distribution `dist` at every `h` (finite; errors name
-/// `--dist`, `--n` (in [0, 100]) or `--h`, also when a value overflows), in
-/// the order given.
-pub fn values(dist: &str, n: f64, h: &[f64]) -> CommandResult<Vec<f64>> {
+/// The distribution called `name` among those [`distribution`] takes.
+///
+/// # Errors
+/// [`Error::Invalid`] naming `{dist}` and the known names.
+pub fn dist_named(name: &str) -> CommandResult<DistributionKind> {
+    match DistributionKind::parse(name) {
+        Ok(d @ (DistributionKind::Gaussian | DistributionKind::Exponential)) => Ok(d),
+        _ => Err(Error::invalid(
+            param("dist"),
+            format!("unknown distribution {name:?}; known: gaussian, exponential"),
+        )),
+    }
+}
+
+/// Bytes of memory per value of [`values`]: the copy of `h` a caller makes
+/// and the result.
+pub const BYTES_PER_VALUE: f64 = 16.0;
+
+/// `F_n(h)` of the distribution `dist` at every `h` (finite), in the order
+/// given.
+///
+/// # Errors
+/// Naming `{dist}`, `{n}` (in [0, 100]) or the entry `{h[i]}` (also when a
+/// value overflows); [`Error::OutOfMemory`] naming `{h}` when the result
+/// would not fit.
+pub fn values(dist: DistributionKind, n: f64, h: &[f64]) -> CommandResult<Vec<f64>> {
     let d = distribution(dist)?;
-    crate::error::Allowed::closed(0.0, crate::heights::MAX_MOMENT_ORDER).check("--n", n)?;
+    crate::error::Allowed::closed(0.0, crate::heights::MAX_MOMENT_ORDER).check(&param("n"), n)?;
+    crate::study::memory::ensure(
+        &param("h"),
+        &format!("F_n at {} values", h.len()),
+        h.len() as f64 * 8.0,
+        "give fewer values per call",
+    )?;
     h.iter()
-        .map(|&x| {
-            d.moment_above_checked(n, x).map_err(|e| {
-                match e.field() {
-                    Some("n") => e.renamed("--n"),
-                    _ => e.renamed("--h"),
-                }
-                .into()
+        .enumerate()
+        .map(|(i, &x)| {
+            d.moment_above_checked(n, x).map_err(|e| match e.field() {
+                Some("n") => e.renamed(&param("n")),
+                _ => e.renamed(&param(&format!("h[{i}]"))),
             })
         })
         .collect()
 }
 
-/// Runs `asperity fn`.
-pub fn run(args: &FnArgs) -> CommandResult<FnOutput> {
-    let dist = distribution(&args.dist)?;
-    let hs = list::parse("--h", &args.h)?;
-    let f = values(&args.dist, args.n, &hs)?;
+/// The table `asperity fn` prints: `F_n` of `dist` at each `h`.
+///
+/// # Errors
+/// As [`values`].
+pub fn table(dist: DistributionKind, n: f64, h: &[f64]) -> CommandResult<FnOutput> {
+    let d = distribution(dist)?;
+    let f = values(dist, n, h)?;
     Ok(FnOutput {
-        dist: dist.name(),
-        n: args.n,
-        values: hs.iter().zip(f).map(|(&h, f)| Row { h, f }).collect(),
-        closed_form: dist.closed_form_moment(args.n),
+        dist: d.name(),
+        n,
+        values: h.iter().zip(f).map(|(&h, f)| Row { h, f }).collect(),
+        closed_form: d.closed_form_moment(n),
     })
 }

@@ -2,47 +2,68 @@
 //! peak contact temperature from the contact voltage or the reverse
 //! ([`crate::electrical::heating`]).
 
-use super::{CommandError, CommandResult};
+use super::{param, CommandResult};
 use crate::electrical::heating::{
     Heating, SpotCondition, GOLD_MELTING_TEMPERATURE, GOLD_SOFTENING_TEMPERATURE,
 };
+use crate::Error;
 use serde::Serialize;
 
-/// Arguments of `asperity heating`: exactly one of `--voltage`,
-/// `--max-temperature`.
-#[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct HeatingArgs {
-    /// Contact voltage U = I R (V), >= 0: prints the peak temperature.
-    #[cfg_attr(feature = "cli", arg(long, allow_hyphen_values = true))]
-    pub voltage: Option<f64>,
-    /// Peak contact temperature (K), from the bulk temperature to the
-    /// melting temperature: prints the voltage that reaches it.
-    #[cfg_attr(feature = "cli", arg(long, allow_hyphen_values = true))]
-    pub max_temperature: Option<f64>,
-    /// Bulk temperature T0 (K), in (0, melting temperature).
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_hyphen_values = true, default_value_t = crate::electrical::heating::DEFAULT_BULK_TEMPERATURE)
-    )]
+/// What [`heating`] computes: the peak temperature at a contact voltage,
+/// or the voltage that reaches a peak temperature.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HeatingTarget {
+    /// Contact voltage `U = I R` (V), >= 0: the peak temperature.
+    Voltage(f64),
+    /// Peak contact temperature (K), from the bulk to the melting
+    /// temperature: the voltage that reaches it.
+    MaxTemperature(f64),
+}
+
+impl HeatingTarget {
+    /// The target from the two optional inputs, exactly one of which is
+    /// given.
+    ///
+    /// # Errors
+    /// [`crate::Error::Invalid`] naming `{voltage}` and `{max_temperature}`.
+    pub fn from_options(voltage: Option<f64>, max_temperature: Option<f64>) -> CommandResult<Self> {
+        match (voltage, max_temperature) {
+            (Some(u), None) => Ok(HeatingTarget::Voltage(u)),
+            (None, Some(t)) => Ok(HeatingTarget::MaxTemperature(t)),
+            _ => Err(Error::invalid(
+                format!("{}, {}", param("voltage"), param("max_temperature")),
+                "give exactly one of them",
+            )),
+        }
+    }
+}
+
+/// The input of [`heating`].
+#[derive(Debug, Clone, Copy)]
+pub struct HeatingInput {
+    /// What to compute.
+    pub target: HeatingTarget,
+    /// Bulk temperature `T0` (K), in (0, melting temperature); default
+    /// [`crate::electrical::heating::DEFAULT_BULK_TEMPERATURE`].
     pub bulk_temperature: f64,
     /// Softening temperature of the metal (K), > 0; default gold's
     /// (373.15 K, Holm): above it the spot yields and a warning says so.
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_hyphen_values = true, default_value_t = GOLD_SOFTENING_TEMPERATURE)
-    )]
     pub softening_temperature: f64,
     /// Melting temperature of the metal (K), > the softening temperature;
     /// default gold's (1337.33 K): no temperature is given above it.
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_hyphen_values = true, default_value_t = GOLD_MELTING_TEMPERATURE)
-    )]
     pub melting_temperature: f64,
-    /// Print one JSON object instead of a line.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
+}
+
+impl HeatingInput {
+    /// `target` with gold's defaults.
+    pub fn new(target: HeatingTarget) -> Self {
+        HeatingInput {
+            target,
+            bulk_temperature: crate::electrical::heating::DEFAULT_BULK_TEMPERATURE,
+            softening_temperature: GOLD_SOFTENING_TEMPERATURE,
+            melting_temperature: GOLD_MELTING_TEMPERATURE,
+        }
+    }
 }
 
 /// What `asperity heating --json` prints: `{"max_temperature_K": ..}` for a
@@ -68,48 +89,53 @@ pub enum HeatingOutput {
     },
 }
 
-/// Runs `asperity heating`; also returns the bulk temperature used.
-pub fn run(args: &HeatingArgs) -> CommandResult<(HeatingOutput, f64)> {
-    // The pair's order, named by both flags (a huge softening temperature
+/// Holm's phi-theta relation (`asperity heating`); also returns the bulk
+/// temperature used.
+///
+/// # Errors
+/// Naming `{voltage}`, `{max_temperature}`, `{bulk_temperature}`,
+/// `{softening_temperature}` or `{melting_temperature}`.
+pub fn heating(input: &HeatingInput) -> CommandResult<(HeatingOutput, f64)> {
+    // The pair's order, named by both inputs (a huge softening temperature
     // was blamed on the melting temperature alone).
-    if args.softening_temperature >= args.melting_temperature {
-        return Err(CommandError::Usage(format!(
-            "--softening-temperature = {:e} K must be below --melting-temperature = {:e} K",
-            args.softening_temperature, args.melting_temperature
-        )));
+    if input.softening_temperature >= input.melting_temperature {
+        return Err(Error::invalid(
+            param("softening_temperature"),
+            format!(
+                "{:e} K must be below {} = {:e} K",
+                input.softening_temperature,
+                param("melting_temperature"),
+                input.melting_temperature
+            ),
+        ));
     }
     let heating = Heating::for_metal(
-        args.bulk_temperature,
-        args.softening_temperature,
-        args.melting_temperature,
+        input.bulk_temperature,
+        input.softening_temperature,
+        input.melting_temperature,
     )
     .map_err(|e| {
-        let flag = match e.field() {
-            Some("softening_temperature") => "--softening-temperature",
-            Some("melting_temperature") => "--melting-temperature",
-            _ => "--bulk-temperature",
+        let name = match e.field() {
+            Some("softening_temperature") => "softening_temperature",
+            Some("melting_temperature") => "melting_temperature",
+            _ => "bulk_temperature",
         };
-        e.renamed(flag)
+        e.renamed(&param(name))
     })?;
-    let out = match (args.voltage, args.max_temperature) {
-        (Some(u), None) => {
-            let rename = |e: crate::Error| e.renamed("--voltage");
+    let out = match input.target {
+        HeatingTarget::Voltage(u) => {
+            let rename = |e: Error| e.renamed(&param("voltage"));
             HeatingOutput::Temperature {
                 max_temperature: heating.peak_temperature(u).map_err(rename)?,
                 condition: heating.condition(u).map_err(rename)?,
                 warnings: heating.warning(u).map_err(rename)?.into_iter().collect(),
             }
         }
-        (None, Some(t)) => HeatingOutput::Voltage {
+        HeatingTarget::MaxTemperature(t) => HeatingOutput::Voltage {
             voltage: heating
                 .voltage_for(t)
-                .map_err(|e| e.renamed("--max-temperature"))?,
+                .map_err(|e| e.renamed(&param("max_temperature")))?,
         },
-        _ => {
-            return Err(CommandError::Usage(
-                "--voltage, --max-temperature: give exactly one of them".into(),
-            ))
-        }
     };
     Ok((out, heating.bulk_temperature()))
 }

@@ -2,27 +2,20 @@
 //! in Maugis units (load `pi w R`, interference `(pi^2 w^2 R / K^2)^(1/3)`,
 //! radius `(pi w R^2 / K)^(1/3)`).
 
-use super::CommandResult;
+use super::{named, param, CommandResult};
 use crate::law::LawKind;
-use crate::named::Named;
 use crate::prelude::*;
 use serde::Serialize;
 use std::f64::consts::PI;
 
-/// Arguments of `asperity law`.
-#[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct LawArgs {
-    /// The law: hertz, bradley, dmt, jkr, maugis, cos.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub law: String,
-    /// Maugis parameter lambda (> 0) for laws that depend on it (maugis,
-    /// cos); default 1.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
+/// The input of [`facts`].
+#[derive(Debug, Clone, Copy)]
+pub struct LawInput {
+    /// The law (an analytic law of [`LawKind`]).
+    pub law: LawKind,
+    /// Maugis parameter `lambda` (> 0) for laws that depend on it (maugis,
+    /// cos); `None`: 1.
     pub lambda: Option<f64>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
 }
 
 /// The facts printed, in Maugis units; `None` prints as JSON `null`.
@@ -43,13 +36,16 @@ pub struct LawFacts {
     pub contact_radius_zero_load: Option<f64>,
 }
 
-/// Runs `asperity law`.
-pub fn run(args: &LawArgs) -> CommandResult<LawFacts> {
-    let kind = LawKind::parse(&args.law).map_err(|e| super::flagged(e, &[("law", "--law")]))?;
-    if let Some(l) = args.lambda {
-        crate::error::positive("--lambda", l)?;
+/// The pull-off facts of one law in Maugis units (`asperity law`).
+///
+/// # Errors
+/// [`crate::Error::OutOfRange`] naming `{lambda}`.
+pub fn facts(input: &LawInput) -> CommandResult<LawFacts> {
+    let kind = input.law;
+    if let Some(l) = input.lambda {
+        crate::error::positive(&param("lambda"), l)?;
     }
-    let lambda = args.lambda.unwrap_or(1.0);
+    let lambda = input.lambda.unwrap_or(1.0);
     // Units where every Maugis scale is 1: R = 1, K = 1 (E* = 3/4),
     // pi w R = 1; the Dugdale stress sigma0 = lambda/2 then gives lambda,
     // and z0 follows from sigma0 = 1.0264 w / z0.
@@ -60,7 +56,7 @@ pub fn run(args: &LawArgs) -> CommandResult<LawFacts> {
     let scales = contact.scales()?;
     let law = kind
         .build(&contact)
-        .map_err(|e| super::flagged(e, &[("lambda", "--lambda")]))?;
+        .map_err(|e| named(e, &[("lambda", "lambda")]))?;
     let load_pull = law
         .pull_off(Control::Load)
         .map(|p| p.load / scales.load)
@@ -68,7 +64,7 @@ pub fn run(args: &LawArgs) -> CommandResult<LawFacts> {
     let jump = law.pull_off(Control::Displacement);
     Ok(LawFacts {
         law: kind.name(),
-        lambda: args.lambda,
+        lambda: input.lambda,
         pull_off_load_control: load_pull,
         jump_out_load: jump.map(|j| j.load / scales.load),
         jump_out_interference: jump.map(|j| j.interference / scales.interference),

@@ -1,191 +1,222 @@
 //! `asperity persson`: Persson's contact theory on an analytic self-affine
 //! spectrum, with GW on the same spectrum beside it.
 
-use super::{CommandError as CliError, Report};
+use super::{param, CommandResult};
 use crate::error::positive;
 use crate::persson::gw::GwOnSpectrum;
 use crate::persson::{Persson, QUAD_RTOL};
 use crate::spectrum::{Normalisation, Spectrum};
+use crate::Error;
 use serde::Serialize;
 use std::fmt::Write as _;
 
-/// Arguments of `asperity persson`.
+/// The input of [`persson`]: a self-affine spectrum, the modulus and the
+/// mean pressures.
 #[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct PerssonArgs {
+pub struct PerssonInput {
     /// Hurst exponent H, in (0, 1].
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub hurst: f64,
     /// Smallest wavevector q_l (rad/m): the spectrum is zero below.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub q_long: f64,
     /// Roll-off wavevector q_r >= q_l (rad/m): flat between q_l and q_r.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub q_roll: f64,
     /// Largest wavevector q_s > q_r (rad/m): C ~ q^-2(1+H) up to it.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub q_short: f64,
-    /// RMS height (m), to normalise the spectrum (or --slope-rms).
-    #[cfg_attr(
-        feature = "cli",
-        arg(
-            long,
-            allow_negative_numbers = true,
-            conflicts_with = "slope_rms",
-            required_unless_present = "slope_rms"
-        )
-    )]
-    pub h_rms: Option<f64>,
-    /// RMS gradient g = sqrt(<|grad h|^2>), to normalise the spectrum.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
-    pub slope_rms: Option<f64>,
+    /// The spectrum's normalisation: its RMS height (m) or RMS gradient.
+    pub normalisation: Normalisation,
     /// Contact modulus E* (Pa).
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub estar: f64,
-    /// Comma-separated mean pressures (Pa), each > 0.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
-    pub pressures: String,
+    /// Mean pressures (Pa), each > 0.
+    pub pressures: Vec<f64>,
     /// Yang–Persson factor gamma in [0, 1] of the mean separation (1: all
-    /// the elastic energy of the contact regions; Yang & Persson found 0.4-0.45).
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, default_value_t = 1.0)
-    )]
+    /// the elastic energy of the contact regions; Yang & Persson found
+    /// 0.4-0.45). Default 1.
     pub gamma: f64,
-    /// Work of adhesion w (J/m^2): adds the Persson–Tosatti number U_full/w.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
+    /// Work of adhesion w (J/m^2): adds the Persson–Tosatti number
+    /// U_full/w.
     pub adhesion_energy: Option<f64>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
 }
 
-#[derive(Serialize)]
-struct StateJson {
+/// The normalisation from the two optional inputs, exactly one of which is
+/// given: `h_rms` (m) or `slope_rms`.
+///
+/// # Errors
+/// [`crate::Error::Invalid`] naming both when both or neither are given;
+/// out of range naming the one given.
+pub fn normalisation(h_rms: Option<f64>, slope_rms: Option<f64>) -> CommandResult<Normalisation> {
+    match (h_rms, slope_rms) {
+        (Some(h), None) => Ok(Normalisation::HRms(positive(&param("h_rms"), h)?)),
+        (None, Some(g)) => Ok(Normalisation::SlopeRms(positive(&param("slope_rms"), g)?)),
+        (Some(_), Some(_)) => Err(Error::invalid(
+            format!("{}, {}", param("h_rms"), param("slope_rms")),
+            "give only one of them",
+        )),
+        (None, None) => Err(Error::invalid(
+            format!("{} or {}", param("h_rms"), param("slope_rms")),
+            "one is needed",
+        )),
+    }
+}
+
+/// Each of `values` (named `name`, entry by entry) finite and > 0, and at
+/// least one.
+///
+/// # Errors
+/// Naming `{name}` (empty) or `{name[i]}`.
+pub fn positive_values(name: &str, values: &[f64]) -> CommandResult<()> {
+    if values.is_empty() {
+        return Err(Error::invalid(param(name), "empty list"));
+    }
+    for (i, &x) in values.iter().enumerate() {
+        positive(&param(&format!("{name}[{i}]")), x)?;
+    }
+    Ok(())
+}
+
+/// One mean pressure: Persson's and GW's area and gap.
+#[derive(Serialize, Debug, Clone)]
+pub struct PerssonState {
+    /// Mean pressure (Pa).
     #[serde(rename = "pressure_Pa")]
-    pressure: f64,
-    area_fraction: f64,
-    mean_gap_m: f64,
-    gw_area_fraction: f64,
-    gw_mean_gap_m: f64,
+    pub pressure: f64,
+    /// Persson's real-area fraction `A/A0`.
+    pub area_fraction: f64,
+    /// Persson's mean gap (m).
+    pub mean_gap_m: f64,
+    /// GW's real-area fraction on the same spectrum.
+    pub gw_area_fraction: f64,
+    /// GW's mean gap (m).
+    pub gw_mean_gap_m: f64,
 }
 
-#[derive(Serialize)]
-struct GwJson {
-    density_per_m2: f64,
-    radius_m: f64,
-    sigma_m: f64,
-    mean_summit_height_m: f64,
+/// GW's parameters from the spectrum's moments (McCool).
+#[derive(Serialize, Debug, Clone)]
+pub struct PerssonGw {
+    /// Summit density (1/m^2).
+    pub density_per_m2: f64,
+    /// Summit radius (m).
+    pub radius_m: f64,
+    /// Summit-height standard deviation (m).
+    pub sigma_m: f64,
+    /// Mean summit height above the mean plane (m).
+    pub mean_summit_height_m: f64,
 }
 
-#[derive(Serialize)]
-struct PerssonJson {
-    states: Vec<StateJson>,
-    h_rms_m: f64,
-    slope_rms: f64,
-    m0: f64,
-    m2: f64,
-    m4: f64,
-    mean_gap_slope_m: f64,
+/// What `asperity persson --json` prints.
+#[derive(Serialize, Debug, Clone)]
+pub struct PerssonOutput {
+    /// One entry per mean pressure, in the order given.
+    pub states: Vec<PerssonState>,
+    /// The spectrum's RMS height (m).
+    pub h_rms_m: f64,
+    /// The spectrum's RMS gradient.
+    pub slope_rms: f64,
+    /// Spectral moment m0 (m^2).
+    pub m0: f64,
+    /// Spectral moment m2.
+    pub m2: f64,
+    /// Spectral moment m4 (1/m^2).
+    pub m4: f64,
+    /// Persson's `u0` (m): the slope of the mean gap against `ln p`.
+    pub mean_gap_slope_m: f64,
+    /// Elastic energy of full contact per area (J/m^2).
     #[serde(rename = "full_contact_energy_J_per_m2")]
-    full_contact_energy: f64,
-    gamma: f64,
+    pub full_contact_energy: f64,
+    /// The Yang–Persson factor used.
+    pub gamma: f64,
+    /// Persson–Tosatti number `U_full/w`, with an adhesion energy.
     #[serde(skip_serializing_if = "Option::is_none")]
-    persson_tosatti_number: Option<f64>,
-    gw: GwJson,
-    numerical_error: String,
-    model_error: String,
-    warnings: Vec<String>,
+    pub persson_tosatti_number: Option<f64>,
+    /// GW on the same spectrum.
+    pub gw: PerssonGw,
+    /// The numerical error of the outputs, in words.
+    pub numerical_error: String,
+    /// The model error of the outputs, in words.
+    pub model_error: String,
+    /// Results outside a model's validity.
+    pub warnings: Vec<String>,
 }
 
-/// Parses a comma-separated list of numbers given to `flag`, each finite
-/// and > 0.
-pub fn positive_list(flag: &str, text: &str) -> Result<Vec<f64>, CliError> {
-    if text.trim().is_empty() {
-        return Err(CliError::Usage(format!("{flag}: empty list")));
-    }
-    text.split(',')
-        .map(|item| {
-            let t = item.trim();
-            let x: f64 = t
-                .parse()
-                .map_err(|_| CliError::Usage(format!("{flag}: cannot parse {t:?} as a number")))?;
-            Ok(positive(flag, x)?)
-        })
-        .collect()
-}
-
-/// Runs `asperity persson`.
-pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
-    let pressures = positive_list("--pressures", &args.pressures)?;
-    // The wavevectors' order, named by both flags of a pair.
-    if args.q_long > args.q_roll {
-        return Err(CliError::Usage(format!(
-            "--q-long = {:e} must not exceed --q-roll = {:e}",
-            args.q_long, args.q_roll
-        )));
-    }
-    if args.q_roll >= args.q_short {
-        return Err(CliError::Usage(format!(
-            "--q-roll = {:e} must be below --q-short = {:e}",
-            args.q_roll, args.q_short
-        )));
-    }
-    positive("--estar", args.estar)?;
-    // The command line refuses both while parsing; other callers here.
-    if args.h_rms.is_some() && args.slope_rms.is_some() {
-        return Err(CliError::Usage(
-            "--h-rms, --slope-rms: give only one of them".into(),
+/// Persson's theory and GW on a self-affine spectrum (`asperity persson`).
+///
+/// # Errors
+/// Naming an input (`{pressures[i]}`, `{q_long}`, ...); a state the
+/// solvers cannot find at an extreme pressure is bad input naming
+/// `{pressures}`.
+pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
+    positive_values("pressures", &input.pressures)?;
+    // The wavevectors' order, named by both inputs of a pair.
+    if input.q_long > input.q_roll {
+        return Err(Error::invalid(
+            param("q_long"),
+            format!(
+                "{:e} must not exceed {} = {:e}",
+                input.q_long,
+                param("q_roll"),
+                input.q_roll
+            ),
         ));
     }
-    let norm = match (args.h_rms, args.slope_rms) {
-        (Some(h), _) => Normalisation::HRms(positive("--h-rms", h)?),
-        (None, Some(g)) => Normalisation::SlopeRms(positive("--slope-rms", g)?),
-        (None, None) => {
-            return Err(CliError::Usage(
-                "--h-rms or --slope-rms: one is needed".into(),
-            ))
-        }
+    if input.q_roll >= input.q_short {
+        return Err(Error::invalid(
+            param("q_roll"),
+            format!(
+                "{:e} must be below {} = {:e}",
+                input.q_roll,
+                param("q_short"),
+                input.q_short
+            ),
+        ));
+    }
+    positive(&param("estar"), input.estar)?;
+    let norm = input.normalisation;
+    let norm_name = match norm {
+        Normalisation::HRms(_) => param("h_rms"),
+        Normalisation::SlopeRms(_) => param("slope_rms"),
     };
-    let norm_flag = if args.h_rms.is_some() {
-        "--h-rms"
-    } else {
-        "--slope-rms"
-    };
-    let flag = |e: crate::Error| -> CliError {
-        let f = e.field().unwrap_or("").replace('_', "-");
+    let named = |e: Error| -> Error {
+        let f = e.field().unwrap_or("").to_string();
         if f.is_empty() {
-            e.into()
+            e
         } else if matches!(f.as_str(), "m0" | "m2" | "m4") {
-            // A moment of the spectrum: every spectrum flag sets it.
+            // A moment of the spectrum: every spectrum input sets it.
             e.renamed(&format!(
-                "{f} of the spectrum from --hurst, --q-long, --q-roll, --q-short and {norm_flag}"
+                "{f} of the spectrum from {}, {}, {}, {} and {norm_name}",
+                param("hurst"),
+                param("q_long"),
+                param("q_roll"),
+                param("q_short")
             ))
-            .into()
         } else {
-            e.renamed(&format!("--{f}")).into()
+            e.renamed(&param(&f))
         }
     };
     // A state the solvers cannot find at an extreme pressure or modulus is
     // the inputs' fault (p/E* far outside contact mechanics), named.
-    let at_pressure = |p: f64, e: crate::Error| -> CliError {
+    let at_pressure = |p: f64, e: Error| -> Error {
         if e.is_bad_input() {
-            return e.renamed("--pressures").into();
+            return e.renamed(&param("pressures"));
         }
-        CliError::Usage(format!(
-            "--pressures: {p:e} Pa with --estar {:e} Pa (p/E* = {:.3e}): {e}",
-            args.estar,
-            p / args.estar
-        ))
+        Error::invalid(
+            param("pressures"),
+            format!(
+                "{p:e} Pa with {} {:e} Pa (p/E* = {:.3e}): {e}",
+                param("estar"),
+                input.estar,
+                p / input.estar
+            ),
+        )
     };
-    let spectrum = Spectrum::self_affine(args.hurst, args.q_long, args.q_roll, args.q_short, norm)
-        .map_err(flag)?;
-    let model = Persson::new(spectrum.clone(), args.estar, args.gamma).map_err(flag)?;
-    let gw = GwOnSpectrum::new(&spectrum, args.estar).map_err(flag)?;
+    let spectrum =
+        Spectrum::self_affine(input.hurst, input.q_long, input.q_roll, input.q_short, norm)
+            .map_err(named)?;
+    let model = Persson::new(spectrum.clone(), input.estar, input.gamma).map_err(named)?;
+    let gw = GwOnSpectrum::new(&spectrum, input.estar).map_err(named)?;
     let mut states = Vec::new();
     let mut worst_quad: f64 = 0.0;
     let mut warnings = Vec::new();
-    for &p in &pressures {
+    for &p in &input.pressures {
+        crate::cancel::check()?;
         let s = model.state(p).map_err(|e| at_pressure(p, e))?;
         worst_quad = worst_quad.max(s.mean_gap_error / s.mean_gap.abs().max(f64::MIN_POSITIVE));
         let g = gw.state(p).map_err(|e| at_pressure(p, e))?;
@@ -195,7 +226,7 @@ pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
                 g.area_fraction
             ));
         }
-        states.push(StateJson {
+        states.push(PerssonState {
             pressure: p,
             area_fraction: s.area_fraction,
             mean_gap_m: s.mean_gap,
@@ -203,15 +234,15 @@ pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
             gw_mean_gap_m: g.mean_gap,
         });
     }
-    let pt = args
+    let pt = input
         .adhesion_energy
         .map(|w| {
             model
                 .persson_tosatti_number(w)
-                .map_err(|e| e.renamed("--adhesion-energy"))
+                .map_err(|e| e.renamed(&param("adhesion_energy")))
         })
         .transpose()?;
-    let out = PerssonJson {
+    Ok(PerssonOutput {
         states,
         h_rms_m: spectrum.h_rms(),
         slope_rms: spectrum.slope_rms(),
@@ -220,9 +251,9 @@ pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
         m4: spectrum.m4(),
         mean_gap_slope_m: model.mean_gap_slope(),
         full_contact_energy: model.full_contact_energy(),
-        gamma: args.gamma,
+        gamma: input.gamma,
         persson_tosatti_number: pt,
-        gw: GwJson {
+        gw: PerssonGw {
             density_per_m2: gw.params.density_per_m2,
             radius_m: gw.params.radius_m,
             sigma_m: gw.sigma,
@@ -233,14 +264,20 @@ pub fn run(args: &PerssonArgs) -> super::CommandResult<Report> {
         ),
         model_error: format!(
             "Persson (gamma = {}): against exact boundary-element solutions the area is typically underestimated by 10-25 % at small area fractions and the gap is sensitive to gamma (Yang & Persson 2008 recommend about 0.4-0.45); GW neglects elastic interaction between asperities and their coalescence, so its area and gap can be off by tens of per cent on self-affine surfaces (compare with `asperity bem`)",
-            args.gamma
+            input.gamma
         ),
         warnings,
-    };
-    Report::new(&out, print_table(&out))
+    })
 }
 
-fn print_table(o: &PerssonJson) -> String {
+impl PerssonOutput {
+    /// The table `asperity persson` prints.
+    pub fn text(&self) -> String {
+        print_table(self)
+    }
+}
+
+fn print_table(o: &PerssonOutput) -> String {
     let mut t = String::new();
     let _ = writeln!(t,
         "spectrum        h_rms {:.4e} m, slope_rms {:.4e}, m0 {:.4e} m^2, m2 {:.4e}, m4 {:.4e} 1/m^2",

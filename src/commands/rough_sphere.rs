@@ -3,149 +3,157 @@
 //! pressures at given central separations; charts of p(rho) against Hertz and
 //! of load against approach with `--out`.
 
-use super::{CommandError as CliError, Report};
+use super::{param, CommandResult};
 use crate::roughsphere::units::{hertz_approach_gt, hertz_pressure_gt};
 use crate::roughsphere::{GreenwoodTripp, GtState, SolverOptions};
 use crate::study::plot::{Chart, Series};
-use serde_json::{json, Map, Value};
+use crate::Error;
+use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// Arguments of `asperity rough-sphere`.
-#[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct RoughSphereArgs {
-    /// mu = (8/3) eta sigma sqrt(2 R beta) (> 0): summit density eta, summit-height
-    /// standard deviation sigma, sphere radius R, summit radius beta.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
+/// The input of [`rough_sphere`].
+#[derive(Debug, Clone, Default)]
+pub struct RoughSphereInput {
+    /// mu = (8/3) eta sigma sqrt(2 R beta) (> 0): summit density eta,
+    /// summit-height standard deviation sigma, sphere radius R, summit
+    /// radius beta.
     pub mu: f64,
-    /// Comma-separated separations d of the mean planes at the centre, in units of sigma.
-    #[cfg_attr(feature = "cli", arg(long = "d", allow_hyphen_values = true))]
-    pub d: String,
-    /// Comma-separated radii rho = r/sqrt(2 R sigma) (>= 0) where the pressure is reported.
-    #[cfg_attr(feature = "cli", arg(long, allow_hyphen_values = true))]
-    pub rho: Option<String>,
+    /// Separations d of the mean planes at the centre, in units of sigma.
+    pub d: Vec<f64>,
+    /// Radii rho = r/sqrt(2 R sigma) (>= 0) where the pressure is reported.
+    pub rho: Vec<f64>,
     /// Relative error asked of the load (default 1e-6), in [1e-10, 1e-2].
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub tolerance: Option<f64>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
-    /// With --json: add each value's numerical error estimate (keys `*_error`).
-    #[cfg_attr(feature = "cli", arg(long))]
+    /// Add each value's numerical error estimate (keys `*_error`).
     pub errors: bool,
-    /// Write charts (SVG) of p(rho) against Hertz and of load against approach here.
-    #[cfg_attr(feature = "cli", arg(long))]
+    /// Write charts (SVG) of p(rho) against Hertz and of load against
+    /// approach here.
     pub out: Option<PathBuf>,
 }
 
-/// Parses a comma-separated list of finite numbers for `flag`.
-fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>, CliError> {
-    if text.trim().is_empty() {
-        return Err(CliError::Usage(format!("{flag}: empty list")));
-    }
-    text.split(',')
-        .map(|item| {
-            let t = item.trim();
-            let x: f64 = t
-                .parse()
-                .map_err(|_| CliError::Usage(format!("{flag}: cannot parse {t:?} as a number")))?;
-            crate::error::finite(flag, x)?;
-            Ok(x)
-        })
-        .collect()
+/// One pressure of a state of [`RoughSphereOutput`].
+#[derive(Serialize, Debug, Clone)]
+pub struct PressureAt {
+    /// rho = r/sqrt(2 R sigma).
+    pub rho: f64,
+    /// Pressure in units of E* sqrt(sigma/(8R)).
+    pub p: f64,
+    /// Its error estimate (with `errors`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub p_error: Option<f64>,
 }
 
-/// A core error about `mu`, `d`, `rho` or an option, renamed to its flag.
-fn flagged(e: crate::Error) -> CliError {
-    let flag = match e.field() {
-        Some("mu") => Some("--mu"),
-        Some("d") => Some("--d"),
-        Some("rho") => Some("--rho"),
-        Some("tolerance") => Some("--tolerance"),
-        _ => None,
-    };
-    match flag {
-        Some(f) => e.renamed(f).into(),
-        None => e.into(),
-    }
+/// One central separation of [`RoughSphereOutput`].
+#[derive(Serialize, Debug, Clone)]
+pub struct RoughSphereState {
+    /// Central separation of the mean planes (sigma).
+    pub d: f64,
+    /// Load P* in units of E* sqrt(sigma/(8R)) 2R sigma.
+    pub load: f64,
+    /// Central deflection u(0) (sigma).
+    pub central_deflection: f64,
+    /// The load's error estimate (with `errors`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_error: Option<f64>,
+    /// The deflection's error estimate (with `errors`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub central_deflection_error: Option<f64>,
+    /// The pressure at each radius given.
+    pub pressure: Vec<PressureAt>,
 }
 
-/// Runs `asperity rough-sphere`.
-pub fn run(args: &RoughSphereArgs) -> super::CommandResult<Report> {
-    if !(args.mu.is_finite() && args.mu > 0.0) {
-        return Err(CliError::Usage(format!(
-            "--mu = {} is out of range: allowed finite and > 0",
-            args.mu
-        )));
+/// What `asperity rough-sphere --json` prints.
+#[derive(Serialize, Debug, Clone)]
+pub struct RoughSphereOutput {
+    /// One state per separation, in the order given.
+    pub states: Vec<RoughSphereState>,
+    /// States whose load error estimate stayed above the tolerance at the
+    /// node limit (not in the JSON; the command line warns on stderr).
+    #[serde(skip)]
+    pub warnings: Vec<String>,
+    /// The table the command line prints (not in the JSON).
+    #[serde(skip)]
+    pub text: String,
+}
+
+/// A core error about `mu`, `d`, `rho` or an option, naming the input.
+fn named(e: Error) -> Error {
+    super::named(
+        e,
+        &[
+            ("mu", "mu"),
+            ("d", "d"),
+            ("rho", "rho"),
+            ("tolerance", "tolerance"),
+        ],
+    )
+}
+
+/// The Greenwood–Tripp rough sphere at central separations
+/// (`asperity rough-sphere`), and its charts written to `input.out`.
+///
+/// # Errors
+/// Naming `{mu}`, `{d[i]}`, `{rho[i]}`, `{tolerance}`; solver failures;
+/// [`Error::Cancelled`].
+pub fn rough_sphere(args: &RoughSphereInput) -> CommandResult<RoughSphereOutput> {
+    crate::error::positive(&param("mu"), args.mu)?;
+    if args.d.is_empty() {
+        return Err(Error::invalid(param("d"), "empty list"));
     }
-    let ds = parse_list("--d", &args.d)?;
-    let rhos = match &args.rho {
-        Some(t) => parse_list("--rho", t)?,
-        None => Vec::new(),
-    };
-    if let Some(r) = rhos.iter().find(|r| **r < 0.0) {
-        return Err(CliError::Usage(format!(
-            "--rho = {r} is out of range: allowed finite and >= 0"
-        )));
+    for (i, &d) in args.d.iter().enumerate() {
+        crate::error::finite(&param(&format!("d[{i}]")), d)?;
+    }
+    for (i, &r) in args.rho.iter().enumerate() {
+        crate::error::non_negative(&param(&format!("rho[{i}]")), r)?;
     }
     let mut options = SolverOptions::default();
     if let Some(t) = args.tolerance {
         options.tolerance = t;
     }
-    let gt = GreenwoodTripp::with_options(args.mu, options).map_err(flagged)?;
-    let states = gt.states(&ds, &rhos).map_err(flagged)?;
-    for s in states.iter().filter(|s| !s.converged) {
-        eprintln!(
-            "warning: d = {}: load error estimate {:.1e} above the tolerance at the node limit",
-            s.d, s.load.error
-        );
-    }
-    if let Some(dir) = &args.out {
-        write_charts(&gt, &states, dir).map_err(|e| CliError::Failed(e.to_string()))?;
-    }
-    Report::new(
-        &states_json(&states, args.errors),
-        print_table(args.mu, &states),
-    )
-}
-
-fn states_json(states: &[GtState], errors: bool) -> Value {
-    let rows: Vec<Value> = states
+    let gt = GreenwoodTripp::with_options(args.mu, options).map_err(named)?;
+    let states = gt.states(&args.d, &args.rho).map_err(named)?;
+    let warnings = states
         .iter()
+        .filter(|s| !s.converged)
         .map(|s| {
-            let mut o = Map::new();
-            o.insert("d".into(), json!(s.d));
-            o.insert("load".into(), json!(s.load.value));
-            o.insert(
-                "central_deflection".into(),
-                json!(s.central_deflection.value),
-            );
-            if errors {
-                o.insert("load_error".into(), json!(s.load.error));
-                o.insert(
-                    "central_deflection_error".into(),
-                    json!(s.central_deflection.error),
-                );
-            }
-            let p: Vec<Value> = s
-                .pressure
-                .iter()
-                .map(|q| {
-                    let mut m = Map::new();
-                    m.insert("rho".into(), json!(q.rho));
-                    m.insert("p".into(), json!(q.p.value));
-                    if errors {
-                        m.insert("p_error".into(), json!(q.p.error));
-                    }
-                    Value::Object(m)
-                })
-                .collect();
-            o.insert("pressure".into(), Value::Array(p));
-            Value::Object(o)
+            format!(
+                "d = {}: load error estimate {:.1e} above the tolerance at the node limit",
+                s.d, s.load.error
+            )
         })
         .collect();
-    json!({ "states": rows })
+    if let Some(dir) = &args.out {
+        write_charts(&gt, &states, dir)?;
+    }
+    Ok(RoughSphereOutput {
+        states: states_out(&states, args.errors),
+        warnings,
+        text: print_table(args.mu, &states),
+    })
+}
+
+fn states_out(states: &[GtState], errors: bool) -> Vec<RoughSphereState> {
+    let e = |x: f64| errors.then_some(x);
+    states
+        .iter()
+        .map(|s| RoughSphereState {
+            d: s.d,
+            load: s.load.value,
+            central_deflection: s.central_deflection.value,
+            load_error: e(s.load.error),
+            central_deflection_error: e(s.central_deflection.error),
+            pressure: s
+                .pressure
+                .iter()
+                .map(|q| PressureAt {
+                    rho: q.rho,
+                    p: q.p.value,
+                    p_error: e(q.p.error),
+                })
+                .collect(),
+        })
+        .collect()
 }
 
 fn print_table(mu: f64, states: &[GtState]) -> String {

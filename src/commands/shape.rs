@@ -3,107 +3,105 @@
 //! displacement control and, with `--radii`, the curve; with `--stress`,
 //! Maugis–Dugdale instead of JKR. SI units.
 
-use super::{CommandError as CliError, Report};
+use super::{param, CommandResult};
 use crate::axisym::{
     sphere_exact, AxisymJkr, AxisymMd, MdPoint, Profile, ProfileKind, ProfileParams,
 };
 use crate::law::Instability;
 use crate::named::Named;
+use crate::Error;
 use serde::Serialize;
 use std::fmt::Write as _;
 
-/// Arguments of `asperity shape`.
+/// The input of [`shape`]: a profile, the materials and what to compute.
 #[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct ShapeArgs {
-    /// Profile: paraboloid, sphere, cone, flat or power (tabulated only in scenes).
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub profile: String,
+pub struct ShapeInput {
+    /// The profile (tabulated profiles need their table: scenes only).
+    pub profile: ProfileKind,
     /// Sphere radius (paraboloid, sphere) or punch radius (flat), m.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub radius: Option<f64>,
     /// tan(beta) of the cone f(r) = r tan(beta).
-    #[cfg_attr(
-        feature = "cli",
-        arg(long = "tan-angle", allow_negative_numbers = true)
-    )]
     pub tan_angle: Option<f64>,
     /// Exponent n of the power law f(r) = A r^n (JKR needs n > 1/2).
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub exponent: Option<f64>,
     /// Coefficient A of the power law f(r) = A r^n, m^(1-n).
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub coefficient: Option<f64>,
     /// Contact modulus E*, Pa.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub estar: f64,
     /// Work of adhesion w, J/m^2.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub w: f64,
-    /// Contact radii (m, comma-separated) at which to print the curve. For
-    /// the flat punch, radii below the punch radius are the receding-crack
-    /// equilibria.
-    #[cfg_attr(feature = "cli", arg(long, allow_hyphen_values = true))]
-    pub radii: Option<String>,
-    /// Dugdale stress sigma0 (Pa): Maugis–Dugdale adhesion (range w/sigma0)
-    /// instead of JKR; not for the flat punch.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
+    /// Contact radii (m) at which to give the curve. For the flat punch,
+    /// radii below the punch radius are the receding-crack equilibria.
+    pub radii: Option<Vec<f64>>,
+    /// Dugdale stress sigma0 (Pa): Maugis–Dugdale adhesion (range
+    /// w/sigma0) instead of JKR; not for the flat punch.
     pub stress: Option<f64>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
 }
 
+/// An instability of the adhesive contact.
 #[allow(non_snake_case)]
-#[derive(Serialize, Debug)]
-struct Point {
-    load_N: f64,
-    radius_m: f64,
-    interference_m: f64,
+#[derive(Serialize, Debug, Clone)]
+pub struct ShapePoint {
+    /// Load (N), negative tensile.
+    pub load_N: f64,
+    /// Contact radius (m).
+    pub radius_m: f64,
+    /// Interference (m).
+    pub interference_m: f64,
 }
 
+/// A point of the curve at a contact radius given.
 #[allow(non_snake_case)]
-#[derive(Serialize, Debug)]
-struct CurvePoint {
-    radius_m: f64,
-    load_N: f64,
-    interference_m: f64,
+#[derive(Serialize, Debug, Clone)]
+pub struct ShapeCurvePoint {
+    /// Contact radius (m).
+    pub radius_m: f64,
+    /// Load (N).
+    pub load_N: f64,
+    /// Interference (m).
+    pub interference_m: f64,
 }
 
-#[derive(Serialize, Debug)]
-struct Output {
-    pull_off_load_control: Point,
-    jump_out_displacement_control: Point,
+/// What `asperity shape --json` prints.
+#[derive(Serialize, Debug, Clone)]
+pub struct ShapeOutput {
+    /// Pull-off under load control.
+    pub pull_off_load_control: ShapePoint,
+    /// Jump-out under displacement control.
+    pub jump_out_displacement_control: ShapePoint,
+    /// The curve at the radii given.
     #[serde(skip_serializing_if = "Option::is_none")]
-    curve: Option<Vec<CurvePoint>>,
-    warnings: Vec<String>,
+    pub curve: Option<Vec<ShapeCurvePoint>>,
+    /// Results outside a model's validity.
+    pub warnings: Vec<String>,
+    /// The table the command line prints (not in the JSON).
+    #[serde(skip)]
+    pub text: String,
 }
 
-fn point(i: Instability) -> Point {
-    Point {
+fn point(i: Instability) -> ShapePoint {
+    ShapePoint {
         load_N: i.load,
         radius_m: i.radius,
         interference_m: i.interference,
     }
 }
 
-/// Core parameter names to the flags as the command line spells them.
-fn flag(e: crate::Error) -> CliError {
-    let name = match e.field() {
-        Some("radius") => Some("--radius"),
-        Some("tan_angle") => Some("--tan-angle"),
-        Some("exponent") => Some("--exponent"),
-        Some("coefficient") => Some("--coefficient"),
-        Some("contact_modulus") => Some("--estar"),
-        Some("work_of_adhesion") => Some("--w"),
-        Some("stress") => Some("--stress"),
-        Some("profile") => Some("--profile"),
-        _ => None,
-    };
-    match name {
-        Some(n) => e.renamed(n).into(),
-        None => e.into(),
-    }
+/// Core argument names to the command's inputs.
+fn flag(e: Error) -> Error {
+    super::named(
+        e,
+        &[
+            ("radius", "radius"),
+            ("tan_angle", "tan_angle"),
+            ("exponent", "exponent"),
+            ("coefficient", "coefficient"),
+            ("contact_modulus", "estar"),
+            ("work_of_adhesion", "w"),
+            ("stress", "stress"),
+            ("profile", "profile"),
+        ],
+    )
 }
 
 /// An error of the model's scales (instabilities beyond the floating-point
@@ -112,7 +110,7 @@ fn flag(e: crate::Error) -> CliError {
 /// GPa, w 0.1 J/m^2, radius 1 um, tan(beta) 0.3, exponent 2, coefficient
 /// 1e6 m^(1-n), sigma0 100 MPa. Errors naming a single input that is not
 /// about the scales keep their name.
-fn scale_flag(args: &ShapeArgs, e: crate::Error) -> CliError {
+fn scale_flag(args: &ShapeInput, e: Error) -> Error {
     let about_scales = !e.is_bad_input()
         || matches!(&e, crate::Error::Invalid { name, .. }
             if name == "exponent" || name == "work_of_adhesion");
@@ -120,35 +118,53 @@ fn scale_flag(args: &ShapeArgs, e: crate::Error) -> CliError {
         return flag(e);
     }
     let given = [
-        ("--estar", Some(args.estar), 1e9),
-        ("--w", Some(args.w), 0.1),
-        ("--radius", args.radius, 1e-6),
-        ("--tan-angle", args.tan_angle, 0.3),
-        ("--exponent", args.exponent, 2.0),
-        ("--coefficient", args.coefficient, 1e6),
-        ("--stress", args.stress, 1e8),
+        ("estar", Some(args.estar), 1e9),
+        ("w", Some(args.w), 0.1),
+        ("radius", args.radius, 1e-6),
+        ("tan_angle", args.tan_angle, 0.3),
+        ("exponent", args.exponent, 2.0),
+        ("coefficient", args.coefficient, 1e6),
+        ("stress", args.stress, 1e8),
     ];
     let worst = given
         .iter()
         .filter_map(|&(f, x, t)| x.map(|x| (f, (x / t).abs().log10().abs())))
         .fold(
-            ("--w", f64::NEG_INFINITY),
+            ("w", f64::NEG_INFINITY),
             |b, c| if c.1 > b.1 { c } else { b },
         )
         .0;
-    CliError::Usage(format!(
-        "{worst}: {e} ({worst} is the input furthest from typical values: E* 1e9 Pa, w 0.1 \
-         J/m^2, radius 1e-6 m, tan-angle 0.3, exponent 2, coefficient 1e6, stress 1e8 Pa)"
-    ))
+    let worst = param(worst);
+    Error::invalid(
+        &worst,
+        format!(
+            "{e} ({worst} is the input furthest from typical values: {} 1e9 Pa, {} 0.1 \
+             J/m^2, {} 1e-6 m, {} 0.3, {} 2, {} 1e6, {} 1e8 Pa)",
+            param("estar"),
+            param("w"),
+            param("radius"),
+            param("tan_angle"),
+            param("exponent"),
+            param("coefficient"),
+            param("stress")
+        ),
+    )
 }
 
-fn profile(args: &ShapeArgs) -> Result<Profile, CliError> {
-    let kind = ProfileKind::parse(&args.profile).map_err(|e| flag(e.renamed("profile")))?;
+/// The profile called `name`.
+///
+/// # Errors
+/// [`Error::Invalid`] naming `{profile}` and the known names.
+pub fn profile_named(name: &str) -> CommandResult<ProfileKind> {
+    ProfileKind::parse(name).map_err(|e| e.renamed(&param("profile")))
+}
+
+fn profile(args: &ShapeInput) -> CommandResult<Profile> {
+    let kind = args.profile;
     if kind == ProfileKind::Tabulated {
-        return Err(CliError::Usage(
-            "--profile: tabulated profiles need their table (a scene's law.profile_r and \
-             law.profile_f)"
-                .into(),
+        return Err(Error::invalid(
+            param("profile"),
+            "tabulated profiles need their table (a scene's law.profile_r and law.profile_f)",
         ));
     }
     let p = ProfileParams {
@@ -161,24 +177,28 @@ fn profile(args: &ShapeArgs) -> Result<Profile, CliError> {
     kind.build(&p).map_err(flag)
 }
 
-fn parse_radii(text: &str, profile: &Profile) -> Result<Vec<f64>, CliError> {
-    text.split(',')
-        .map(|s| {
-            let a: f64 = s
-                .trim()
-                .parse()
-                .map_err(|_| CliError::Usage(format!("--radii: {s:?} is not a number")))?;
-            crate::error::positive("--radii", a)?;
-            profile.check_radius("--radii", a).map_err(CliError::from)
+fn check_radii(radii: &[f64], profile: &Profile) -> CommandResult<Vec<f64>> {
+    radii
+        .iter()
+        .enumerate()
+        .map(|(i, &a)| {
+            let name = param(&format!("radii[{i}]"));
+            crate::error::positive(&name, a)?;
+            profile.check_radius(&name, a)
         })
         .collect()
 }
 
-/// Runs `asperity shape`.
-pub fn run(args: &ShapeArgs) -> super::CommandResult<Report> {
+/// JKR (or Maugis–Dugdale) adhesion of an axisymmetric profile
+/// (`asperity shape`).
+///
+/// # Errors
+/// Naming the input (`{profile}`, `{radii[i]}`, ...; an error of the
+/// model's scales names the input furthest from typical values).
+pub fn shape(args: &ShapeInput) -> CommandResult<ShapeOutput> {
     let profile = profile(args)?;
     let radii = match &args.radii {
-        Some(t) => Some(parse_radii(t, &profile)?),
+        Some(r) => Some(check_radii(r, &profile)?),
         None => None,
     };
     let model = match args.stress {
@@ -200,32 +220,31 @@ pub fn run(args: &ShapeArgs) -> super::CommandResult<Report> {
                 .map(|&a| {
                     checked.push((format!("curve point a = {a} m"), a));
                     let (load, interference) = model.at(a)?;
-                    Ok(CurvePoint {
+                    Ok(ShapeCurvePoint {
                         radius_m: a,
                         load_N: load,
                         interference_m: interference,
                     })
                 })
-                .collect::<Result<Vec<_>, CliError>>()?,
+                .collect::<CommandResult<Vec<_>>>()?,
         ),
         None => None,
     };
     let named: Vec<(&str, f64)> = checked.iter().map(|(s, a)| (s.as_str(), *a)).collect();
     let warnings = sphere_exact::warnings(model.profile(), &named);
-    for w in &warnings {
-        eprintln!("warning: {w}");
-    }
-    let out = Output {
+    let mut out = ShapeOutput {
         pull_off_load_control: point(po),
         jump_out_displacement_control: point(jo),
         curve,
         warnings,
+        text: String::new(),
     };
     let name = match args.stress {
         Some(s) => format!("Maugis-Dugdale, sigma0 = {s} Pa"),
         None => "JKR".into(),
     };
-    Report::new(&out, print_table(&args.profile, &name, &out))
+    out.text = print_table(args.profile.name(), &name, &out);
+    Ok(out)
 }
 
 /// The adhesion model of the command.
@@ -258,24 +277,25 @@ impl Model {
     }
 
     /// `(load, interference)` at contact radius `a`.
-    fn at(&self, a: f64) -> Result<(f64, f64), CliError> {
+    fn at(&self, a: f64) -> CommandResult<(f64, f64)> {
         match self {
-            Model::Jkr(j) => Ok(j.point(a).map_err(|e| e.renamed("--radii"))?),
+            Model::Jkr(j) => j.point(a).map_err(|e| e.renamed(&param("radii"))),
             Model::Md(m) => {
                 let p = m.point(a);
                 if p.load.is_finite() && p.interference.is_finite() {
                     Ok((p.load, p.interference))
                 } else {
-                    Err(CliError::Usage(format!(
-                        "--radii: at a = {a} m the Dugdale zone would pass the sphere's equator"
-                    )))
+                    Err(Error::invalid(
+                        param("radii"),
+                        format!("at a = {a} m the Dugdale zone would pass the sphere's equator"),
+                    ))
                 }
             }
         }
     }
 }
 
-fn print_table(profile: &str, model: &str, out: &Output) -> String {
+fn print_table(profile: &str, model: &str, out: &ShapeOutput) -> String {
     let mut t = String::new();
     let _ = writeln!(t, "profile {profile} ({model})");
     let _ = writeln!(

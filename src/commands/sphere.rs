@@ -1,55 +1,53 @@
 //! `asperity sphere`: the full Lennard-Jones sphere solver's pull-off facts
 //! (Maugis units) and, on request, the traced load–approach curve as CSV.
 
-use super::{CommandError as CliError, Report};
+use super::{param, CommandResult};
 use crate::sphere::{
     Shape, SolverOptions, SpherePoint, SphereProblem, MAX_RESOLUTION, MAX_TABOR, MIN_RESOLUTION,
     MIN_TABOR,
 };
+use crate::Error;
 use serde::Serialize;
 use std::fmt::Write as _;
 
-/// Arguments of `asperity sphere`.
-#[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct SphereArgs {
+/// The input of [`sphere`].
+#[derive(Debug, Clone, Default)]
+pub struct SphereInput {
     /// Tabor parameter mu = (R w^2/(E*^2 z0^3))^(1/3), in [0.005, 100].
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub mu: f64,
     /// Size ratio rho = R/z0 (>= 10, and >= 100 mu when mu > 10) for a true
     /// sphere; paraboloid if absent.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub rho: Option<f64>,
     /// Mesh resolution multiplier (default 1), in [0.5, 64]; runs estimated
     /// above 120 s or 2 GiB are refused with the estimate.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub resolution: Option<f64>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
     /// Write the traced curve (CSV with a header) to this file.
-    #[cfg_attr(feature = "cli", arg(long))]
     pub curve: Option<std::path::PathBuf>,
 }
 
 /// The facts printed, in Maugis units; `None` prints as JSON `null`.
-#[derive(Serialize, Debug)]
-struct SphereFactsOut {
-    mu: f64,
-    rho: Option<f64>,
+#[derive(Serialize, Debug, Clone)]
+pub struct SphereOutput {
+    /// The Tabor parameter.
+    pub mu: f64,
+    /// The size ratio `R/z0` of a true sphere (null: paraboloid).
+    pub rho: Option<f64>,
     /// Most tensile load, units of `pi w R`.
-    pull_off_load_control: f64,
+    pub pull_off_load_control: f64,
     /// Load where the contact snaps off under displacement control (units
     /// `pi w R`); null when the curve has no S (small mu).
-    jump_out_load: Option<f64>,
+    pub jump_out_load: Option<f64>,
     /// Interference of that snap, units `(pi^2 w^2 R/K^2)^(1/3)`.
-    jump_out_interference: Option<f64>,
+    pub jump_out_interference: Option<f64>,
     /// Interference where the approaching sphere jumps in, same units.
-    jump_in_interference: Option<f64>,
+    pub jump_in_interference: Option<f64>,
     /// Zero-load contact radius, units `(pi w R^2/K)^(1/3)`.
-    contact_radius_zero_load: Option<f64>,
+    pub contact_radius_zero_load: Option<f64>,
     /// Mesh nodes at the pull-off.
-    nodes: usize,
+    pub nodes: usize,
+    /// The table the command line prints (not in the JSON).
+    #[serde(skip)]
+    pub text: String,
 }
 
 /// Estimated run time above which a run is refused (seconds, optimised build).
@@ -110,13 +108,20 @@ impl Progress {
     }
 }
 
-/// Runs `asperity sphere` (and writes `--curve`).
-pub fn run(args: &SphereArgs) -> super::CommandResult<Report> {
-    crate::error::Allowed::closed(MIN_TABOR, MAX_TABOR).check("--mu", args.mu)?;
+/// The full Lennard-Jones sphere solver's pull-off facts (`asperity
+/// sphere`), and its traced curve written to `input.curve`. Progress goes
+/// to stderr for runs longer than 2 s.
+///
+/// # Errors
+/// Naming `{mu}`, `{rho}`, `{resolution}` (also for a run estimated beyond
+/// 120 s or 2 GiB), `{curve}` (the file); solver failures;
+/// [`Error::Cancelled`].
+pub fn sphere(args: &SphereInput) -> CommandResult<SphereOutput> {
+    crate::error::Allowed::closed(MIN_TABOR, MAX_TABOR).check(&param("mu"), args.mu)?;
     let shape = match args.rho {
         Some(rho) => {
             crate::error::Allowed::closed(SphereProblem::min_size_ratio(args.mu), 1e12)
-                .check("--rho", rho)?;
+                .check(&param("rho"), rho)?;
             Shape::Sphere { rho }
         }
         None => Shape::Paraboloid,
@@ -124,29 +129,37 @@ pub fn run(args: &SphereArgs) -> super::CommandResult<Report> {
     let mut opts = SolverOptions::default();
     if let Some(r) = args.resolution {
         opts.resolution = crate::error::Allowed::closed(MIN_RESOLUTION, MAX_RESOLUTION)
-            .check("--resolution", r)?;
+            .check(&param("resolution"), r)?;
     }
-    let problem = SphereProblem::new(args.mu, shape, opts).map_err(|e| {
-        let e = if e.field() == Some("resolution") {
-            e.renamed("--resolution")
-        } else {
-            e
-        };
-        CliError::from(e)
-    })?;
+    let problem = SphereProblem::new(args.mu, shape, opts)
+        .map_err(|e| super::named(e, &[("resolution", "resolution")]))?;
     let cost = problem.cost();
     let mib = cost.memory_bytes / 1048576.0;
     if cost.seconds > MAX_SECONDS || mib > MAX_MIB {
-        return Err(CliError::Usage(format!(
-            "--resolution {}: estimated {} nodes, ~{:.0} s and ~{:.0} MiB at mu = {}; \
-             the bounds are {MAX_SECONDS} s and {MAX_MIB} MiB (lower --resolution)",
-            opts.resolution, cost.nodes, cost.seconds, mib, args.mu
-        )));
+        return Err(Error::invalid(
+            param("resolution"),
+            format!(
+                "{}: estimated {} nodes, ~{:.0} s and ~{:.0} MiB at mu = {}; the bounds are \
+                 {MAX_SECONDS} s and {MAX_MIB} MiB (lower {})",
+                opts.resolution,
+                cost.nodes,
+                cost.seconds,
+                mib,
+                args.mu,
+                param("resolution")
+            ),
+        ));
     }
+    crate::study::memory::ensure(
+        &param("resolution"),
+        &format!("the sphere solver's mesh of {} nodes", cost.nodes),
+        cost.memory_bytes,
+        "",
+    )?;
     let mut progress = Progress::new("sphere facts");
     let f = problem.facts_with_progress(Some(&mut |p: &SpherePoint| progress.tick(p)))?;
     progress.done();
-    let out = SphereFactsOut {
+    let mut out = SphereOutput {
         mu: args.mu,
         rho: args.rho,
         pull_off_load_control: f.pull_off.load_bar,
@@ -155,6 +168,7 @@ pub fn run(args: &SphereArgs) -> super::CommandResult<Report> {
         jump_in_interference: f.jump_in.map(|j| j.interference_bar),
         contact_radius_zero_load: f.zero_load_radius_bar,
         nodes: f.nodes,
+        text: String::new(),
     };
     if let Some(path) = &args.curve {
         let mut progress = Progress::new("sphere curve");
@@ -177,7 +191,7 @@ pub fn run(args: &SphereArgs) -> super::CommandResult<Report> {
             ));
         }
         crate::study::atomic::write(path, text.as_bytes())
-            .map_err(|e| CliError::Failed(format!("--curve {}: {e}", path.display())))?;
+            .map_err(|e| Error::io(format!("{} {}", param("curve"), path.display()), e))?;
     }
     let mut t = String::new();
     {
@@ -214,5 +228,6 @@ pub fn run(args: &SphereArgs) -> super::CommandResult<Report> {
         );
         let _ = writeln!(t, "mesh nodes at pull-off       {}", out.nodes);
     }
-    Report::new(&out, t)
+    out.text = t;
+    Ok(out)
 }

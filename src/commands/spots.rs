@@ -3,33 +3,38 @@
 //! (1966) formula and the exact equal-potential solution
 //! ([`crate::electrical::Spots`]).
 
-use super::{CommandError, CommandResult};
+use super::{param, CommandResult};
 use crate::electrical::{SpotResistance, Spots, Spreading};
 use crate::error::positive;
+use crate::Error;
 use serde::Serialize;
 
-/// Arguments of `asperity spots`.
-#[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct SpotsArgs {
-    /// CSV file with header `x_m,y_m,radius_m` (any column order), one spot
-    /// per line, SI units.
-    pub file: String,
+/// The input of [`resistances`]: spots as columns and their metal.
+#[derive(Debug, Clone, Copy)]
+pub struct SpotsInput<'a> {
+    /// Spot centres x (m), finite.
+    pub x: &'a [f64],
+    /// Spot centres y (m), finite, as many as `x`.
+    pub y: &'a [f64],
+    /// Spot radii (m), > 0, as many as `x`.
+    pub radius: &'a [f64],
     /// Resistivity of the metal (Ohm m), > 0.
-    #[cfg_attr(feature = "cli", arg(long, allow_hyphen_values = true))]
     pub resistivity: f64,
-    /// Electron mean free path (m), > 0: each spot's self resistance is then
-    /// Wexler's instead of Maxwell's.
-    #[cfg_attr(feature = "cli", arg(long, allow_hyphen_values = true))]
+    /// Electron mean free path (m), > 0: each spot's self resistance is
+    /// then Wexler's instead of Maxwell's.
     pub mean_free_path: Option<f64>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
 }
 
 /// What `asperity spots --json` prints (Ohm).
 #[derive(Serialize, Debug, Clone, Copy)]
 pub struct SpotsOutput {
+    /// Number of spots (not in the JSON).
+    #[serde(skip)]
+    pub spots: usize,
+    /// The self resistance used (not in the JSON): Maxwell's, or Wexler's
+    /// with a mean free path.
+    #[serde(skip)]
+    pub spreading: Spreading,
     /// Independent parallel spots (Holm).
     pub parallel_ohm: f64,
     /// Greenwood's (1966) formula.
@@ -40,9 +45,23 @@ pub struct SpotsOutput {
 
 const COLUMNS: [&str; 3] = ["x_m", "y_m", "radius_m"];
 
+/// Columns of spots read from a CSV file: centres and radii (m).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SpotColumns {
+    /// Centres x (m).
+    pub x: Vec<f64>,
+    /// Centres y (m).
+    pub y: Vec<f64>,
+    /// Radii (m).
+    pub radius: Vec<f64>,
+}
+
 /// Parses the spots CSV: a header naming `x_m,y_m,radius_m`, then numbers.
 /// Errors name the column (and line).
-pub fn parse_csv(text: &str) -> CommandResult<Spots> {
+///
+/// # Errors
+/// [`Error::Invalid`] / [`Error::OutOfRange`] naming the column and line.
+pub fn parse_csv(text: &str) -> CommandResult<SpotColumns> {
     // A UTF-8 byte-order mark (spreadsheets write one) before the header,
     // accepted as in scenes.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -50,16 +69,17 @@ pub fn parse_csv(text: &str) -> CommandResult<Spots> {
         .lines()
         .enumerate()
         .filter(|(_, l)| !l.trim().is_empty());
-    let (_, header) = lines.next().ok_or_else(|| {
-        CommandError::Usage("spots file: empty, expected header x_m,y_m,radius_m".into())
-    })?;
+    let (_, header) = lines
+        .next()
+        .ok_or_else(|| Error::invalid("spots file", "empty, expected header x_m,y_m,radius_m"))?;
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
     let mut index = [0usize; 3];
     for (k, col) in COLUMNS.iter().enumerate() {
         index[k] = names.iter().position(|n| n == col).ok_or_else(|| {
-            CommandError::Usage(format!(
-                "{col}: missing column in the spots file header {header:?}"
-            ))
+            Error::invalid(
+                *col,
+                format!("missing column in the spots file header {header:?}"),
+            )
         })?;
     }
     let mut cols: [Vec<f64>; 3] = Default::default();
@@ -69,10 +89,10 @@ pub fn parse_csv(text: &str) -> CommandResult<Spots> {
             let at = format!("{col} (line {})", i + 1);
             let t = fields
                 .get(index[k])
-                .ok_or_else(|| CommandError::Usage(format!("{at}: missing value")))?;
-            let x: f64 = t.parse().map_err(|_| {
-                CommandError::Usage(format!("{at}: cannot parse {t:?} as a number"))
-            })?;
+                .ok_or_else(|| Error::invalid(&at, "missing value"))?;
+            let x: f64 = t
+                .parse()
+                .map_err(|_| Error::invalid(&at, format!("cannot parse {t:?} as a number")))?;
             if k == 2 {
                 positive(&at, x)?;
             } else {
@@ -82,20 +102,21 @@ pub fn parse_csv(text: &str) -> CommandResult<Spots> {
         }
     }
     if cols[0].is_empty() {
-        return Err(CommandError::Usage(
-            "spots file: no spots after the header".into(),
-        ));
+        return Err(Error::invalid("spots file", "no spots after the header"));
     }
-    let [x, y, r] = cols;
-    Ok(Spots::new(x, y, r)?)
+    let [x, y, radius] = cols;
+    Ok(SpotColumns { x, y, radius })
 }
 
 /// Spots from columns: centres `x`, `y` (m, finite) and radii `radius`
-/// (m, > 0); errors name the argument and the index.
-pub fn from_columns(x: Vec<f64>, y: Vec<f64>, radius: Vec<f64>) -> CommandResult<Spots> {
-    for (name, col) in [("x", &x), ("y", &y), ("radius", &radius)] {
+/// (m, > 0), checked against [`MAX_SPOTS`] and the memory available.
+///
+/// # Errors
+/// Naming the input and the entry (`{radius[3]}`), or `{x}` for the count.
+pub fn spots_of(x: &[f64], y: &[f64], radius: &[f64]) -> CommandResult<Spots> {
+    for (name, col) in [("x", x), ("y", y), ("radius", radius)] {
         for (i, &v) in col.iter().enumerate() {
-            let at = format!("{name}[{i}]");
+            let at = param(&format!("{name}[{i}]"));
             if name == "radius" {
                 positive(&at, v)?;
             } else {
@@ -103,45 +124,63 @@ pub fn from_columns(x: Vec<f64>, y: Vec<f64>, radius: Vec<f64>) -> CommandResult
             }
         }
     }
-    if x.is_empty() {
-        return Err(CommandError::Usage("x: no spots".into()));
+    if x.len() != y.len() || x.len() != radius.len() {
+        return Err(Error::invalid(
+            format!("{}, {}, {}", param("x"), param("y"), param("radius")),
+            format!("lengths {}, {}, {} differ", x.len(), y.len(), radius.len()),
+        ));
     }
-    check_cost("x", x.len())?;
-    Ok(Spots::new(x, y, radius)?)
+    if x.is_empty() {
+        return Err(Error::invalid(param("x"), "no spots"));
+    }
+    check_cost(&param("x"), x.len())?;
+    Spots::new(x.to_vec(), y.to_vec(), radius.to_vec())
 }
 
 /// The self resistance: Maxwell's, or Wexler's with a mean free path.
-/// Errors name `--resistivity` or `--mean-free-path`.
+///
+/// # Errors
+/// Naming `{resistivity}` or `{mean_free_path}`.
 pub fn spot_resistance(
     resistivity: f64,
     mean_free_path: Option<f64>,
 ) -> CommandResult<SpotResistance> {
-    positive("--resistivity", resistivity)?;
+    positive(&param("resistivity"), resistivity)?;
     if let Some(l) = mean_free_path {
-        positive("--mean-free-path", l)?;
+        positive(&param("mean_free_path"), l)?;
     }
     let spreading = match mean_free_path {
         Some(_) => Spreading::Wexler,
         None => Spreading::Maxwell,
     };
     SpotResistance::same_metal(spreading, resistivity, mean_free_path).map_err(|e| {
-        super::flagged(
+        super::named(
             e,
             &[
-                ("resistivity", "--resistivity"),
-                ("mean_free_path", "--mean-free-path"),
+                ("resistivity", "resistivity"),
+                ("mean_free_path", "mean_free_path"),
             ],
         )
-        .into()
     })
 }
 
-/// The three resistances of `spots`.
-pub fn resistances(spots: &Spots, spot: &SpotResistance) -> CommandResult<SpotsOutput> {
+/// The three resistances of the spots of `input` (`asperity spots`): the
+/// exact solve polls [`crate::cancel`] before it starts (the solve itself,
+/// at most about 80 s at [`MAX_SPOTS`], runs to its end).
+///
+/// # Errors
+/// Naming an input (see [`spots_of`], [`spot_resistance`]); the exact
+/// solve's failure naming `spots`; [`Error::Cancelled`].
+pub fn resistances(input: &SpotsInput<'_>) -> CommandResult<SpotsOutput> {
+    let spot = spot_resistance(input.resistivity, input.mean_free_path)?;
+    let spots = spots_of(input.x, input.y, input.radius)?;
+    crate::cancel::check()?;
     Ok(SpotsOutput {
-        parallel_ohm: spots.parallel(spot),
-        greenwood_ohm: spots.greenwood(spot),
-        exact_ohm: spots.exact(spot)?,
+        spots: spots.len(),
+        spreading: spot.spreading(),
+        parallel_ohm: spots.parallel(&spot),
+        greenwood_ohm: spots.greenwood(&spot),
+        exact_ohm: spots.exact(&spot)?,
     })
 }
 
@@ -156,7 +195,8 @@ pub const MAX_SPOTS: usize = 20_000;
 /// with the estimate, for stderr).
 ///
 /// # Errors
-/// [`CommandError::Usage`] naming `what`, with the estimate and the bound.
+/// [`Error::Invalid`] naming `what` beyond [`MAX_SPOTS`],
+/// [`Error::OutOfMemory`] beyond the memory available, with the estimate.
 pub fn check_cost(what: &str, n: usize) -> CommandResult<Option<String>> {
     let (seconds, bytes) = Spots::exact_cost(n);
     let estimate = format!(
@@ -165,32 +205,37 @@ pub fn check_cost(what: &str, n: usize) -> CommandResult<Option<String>> {
         bytes / 1e9
     );
     if n > MAX_SPOTS {
-        return Err(CommandError::Usage(format!(
-            "{what}: {estimate}; allowed up to {MAX_SPOTS} spots"
-        )));
+        return Err(Error::invalid(
+            what,
+            format!("{estimate}; allowed up to {MAX_SPOTS} spots"),
+        ));
     }
-    if let Some(free) = crate::study::memory::available() {
-        if bytes > free {
-            return Err(CommandError::Usage(format!(
-                "{what}: {estimate}, more than the {:.3} GB this process may still use",
-                free / 1e9
-            )));
-        }
-    }
+    crate::study::memory::ensure(
+        what,
+        &format!("the exact equal-potential solve of {n} spots"),
+        bytes,
+        "",
+    )?;
     Ok((seconds > 2.0).then(|| format!("spots: {estimate}")))
 }
 
-/// Runs `asperity spots`: also returns the spots read. Spots whose exact
-/// solve is estimated above 2 s are announced on stderr with the estimate.
-pub fn run(args: &SpotsArgs) -> CommandResult<(SpotsOutput, Spots)> {
-    let spot = spot_resistance(args.resistivity, args.mean_free_path)?;
-    let text = super::read_input("spots file", std::path::Path::new(&args.file))?;
-    let spots = parse_csv(&text).map_err(|e| match e {
-        CommandError::Usage(m) => CommandError::Usage(format!("spots file {}: {m}", args.file)),
+/// Reads the spots CSV file `path` (named in every error), announcing on
+/// stderr a solve estimated above 2 s.
+///
+/// # Errors
+/// The file unreadable or malformed, naming it; beyond [`check_cost`].
+pub fn read_file(path: &std::path::Path) -> CommandResult<SpotColumns> {
+    let shown = path.display().to_string();
+    let text = super::read_input("spots file", path)?;
+    let cols = parse_csv(&text).map_err(|e| match e {
+        Error::Invalid { .. } | Error::OutOfRange { .. } => {
+            let field = e.field().unwrap_or("").to_string();
+            e.renamed(&format!("spots file {shown}: {field}"))
+        }
         other => other,
     })?;
-    if let Some(note) = check_cost(&format!("spots file {}", args.file), spots.len())? {
+    if let Some(note) = check_cost(&format!("spots file {shown}"), cols.x.len())? {
         eprintln!("{note}");
     }
-    Ok((resistances(&spots, &spot)?, spots))
+    Ok(cols)
 }

@@ -2,46 +2,25 @@
 //! summits, GW parameters from the moments, plasticity index;
 //! [`crate::surface::Topography`], `docs/surface.md`).
 
-use super::{CommandError, CommandResult};
+use super::{param, CommandResult};
 use crate::error::positive;
 use crate::surface::{npy, text, Characterisation, HeightMap, Topography};
 use crate::Error;
 use serde::Serialize;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-/// Arguments of `asperity surface`.
-#[derive(Debug, Clone)]
-#[cfg_attr(feature = "cli", derive(clap::Args))]
-pub struct SurfaceArgs {
-    /// The height map: NumPy `.npy` (2-D float64/float32, C order) or a text
-    /// matrix (`.txt`, `.csv`, `.asc`; whitespace or comma separated).
-    pub file: PathBuf,
+/// The input of [`characterise`] besides the map.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SurfaceInput {
     /// Pixel size (m), the same along x and y.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
     pub pixel_size: f64,
-    /// Factor from the file's height unit to metres (e.g. 1e-9 for nm).
-    #[cfg_attr(
-        feature = "cli",
-        arg(long, allow_negative_numbers = true, default_value_t = 1.0)
-    )]
-    pub scale: f64,
     /// Treat the map as periodic: remove only the mean, wrap differences and
     /// summit neighbours around every edge.
-    #[cfg_attr(feature = "cli", arg(long))]
     pub periodic: bool,
-    /// Contact modulus E* (Pa), with --hardness for the plasticity index.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
+    /// Contact modulus E* (Pa), with `hardness` for the plasticity index.
     pub estar: Option<f64>,
-    /// Hardness H (Pa), with --estar for the plasticity index.
-    #[cfg_attr(feature = "cli", arg(long, allow_negative_numbers = true))]
+    /// Hardness H (Pa), with `estar` for the plasticity index.
     pub hardness: Option<f64>,
-    /// Print one JSON object instead of a table.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub json: bool,
-    /// Also write `surface.json`, `summit_heights.svg` and `summit_map.svg`
-    /// into this directory.
-    #[cfg_attr(feature = "cli", arg(long))]
-    pub out: Option<PathBuf>,
 }
 
 /// The summits of `asperity surface --json`.
@@ -103,17 +82,25 @@ pub struct SurfaceJson {
     pub plasticity_index: Option<f64>,
 }
 
-/// Reads the map by extension; every content error names the file.
-pub fn read_map(path: &Path) -> CommandResult<HeightMap> {
+/// Reads the height map in `path` by its extension (`.npy`, or a text
+/// matrix `.txt`/`.csv`/`.asc`) and multiplies its heights by `scale` (the
+/// file's height unit in metres); every content error names the file.
+///
+/// # Errors
+/// [`Error::Invalid`] naming the file (unreadable, unknown extension, bad
+/// content), [`Error::OutOfMemory`] naming it beyond the memory available,
+/// `{scale}` out of range.
+pub fn read_map(path: &Path, scale: f64) -> CommandResult<HeightMap> {
+    positive(&param("scale"), scale)?;
     let shown = path.display().to_string();
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase)
         .unwrap_or_default();
-    crate::study::memory::check_map(path).map_err(CommandError::Usage)?;
-    let bytes = std::fs::read(path)
-        .map_err(|e| CommandError::Usage(format!("{shown}: cannot read: {e}")))?;
+    crate::study::memory::check_map(path)?;
+    let bytes =
+        std::fs::read(path).map_err(|e| Error::invalid(&shown, format!("cannot read: {e}")))?;
     let map = match ext.as_str() {
         "npy" => npy::parse(&bytes),
         "txt" | "csv" | "asc" => match std::str::from_utf8(&bytes) {
@@ -125,7 +112,20 @@ pub fn read_map(path: &Path) -> CommandResult<HeightMap> {
             format!("unknown extension '{ext}': expected .npy, .txt, .csv or .asc"),
         )),
     };
-    Ok(map.map_err(|e| e.renamed(&shown))?)
+    map.map_err(|e| e.renamed(&shown))?
+        .scaled(scale)
+        .map_err(|e| e.renamed(&param("scale")))
+}
+
+/// How the command line names a map read from `path` with heights times
+/// `scale`: its path, and the scale when it is not 1 (a flat map may be a
+/// tiny scale's doing).
+pub fn map_name(path: &Path, scale: f64) -> String {
+    if scale == 1.0 {
+        path.display().to_string()
+    } else {
+        format!("{} (heights x --scale {scale:e})", path.display())
+    }
 }
 
 fn plasticity(
@@ -135,55 +135,50 @@ fn plasticity(
 ) -> CommandResult<Option<f64>> {
     match (estar, hardness) {
         (None, None) => Ok(None),
-        (Some(_), None) => Err(CommandError::Usage(
-            "--hardness: needed with --estar".into(),
+        (Some(_), None) => Err(Error::invalid(
+            param("hardness"),
+            format!("needed with {}", param("estar")),
         )),
-        (None, Some(_)) => Err(CommandError::Usage(
-            "--estar: needed with --hardness".into(),
+        (None, Some(_)) => Err(Error::invalid(
+            param("estar"),
+            format!("needed with {}", param("hardness")),
         )),
         (Some(e), Some(h)) => {
-            positive("--estar", e)?;
-            positive("--hardness", h)?;
+            positive(&param("estar"), e)?;
+            positive(&param("hardness"), h)?;
             let psi = c.gw_from_moments().plasticity_index(e, h)?;
             if psi.is_some_and(|p| !p.is_finite()) {
-                return Err(CommandError::Usage(format!(
-                    "--estar = {e:e} Pa and --hardness = {h:e} Pa: the plasticity index \
-                     (E*/H) sqrt(sigma/R) overflows"
-                )));
+                return Err(Error::invalid(
+                    param("estar"),
+                    format!(
+                        "{e:e} Pa with {} = {h:e} Pa: the plasticity index (E*/H) \
+                         sqrt(sigma/R) overflows",
+                        param("hardness")
+                    ),
+                ));
             }
             Ok(psi)
         }
     }
 }
 
-/// How a map is named in messages: its path, and `--scale` when it is not
-/// 1 (a flat map may be a tiny scale's doing).
-pub(crate) fn scaled_name(path: &std::path::Path, scale: f64) -> String {
-    if scale == 1.0 {
-        path.display().to_string()
-    } else {
-        format!("{} (heights x --scale {scale:e})", path.display())
-    }
-}
-
-/// Characterises `map` (heights in m) with pixels of `pixel_size` (m);
-/// errors name `--pixel-size`, `--estar`, `--hardness` or `map_name`.
+/// Characterises `map` (heights in m; `asperity surface`).
+///
+/// # Errors
+/// Naming `{pixel_size}`, `{estar}`, `{hardness}`, `{heights}` (the map:
+/// too small, flat, ...), or `{scale}` when the heights underflow.
 pub fn characterise(
     map: HeightMap,
-    map_name: &str,
-    pixel_size: f64,
-    periodic: bool,
-    estar: Option<f64>,
-    hardness: Option<f64>,
+    input: &SurfaceInput,
 ) -> CommandResult<(SurfaceJson, Characterisation)> {
-    let topo = Topography::new(map, pixel_size).map_err(|e| match e.field() {
-        Some("heights") => e.renamed("--scale"),
-        _ => e.renamed("--pixel-size"),
+    let topo = Topography::new(map, input.pixel_size).map_err(|e| match e.field() {
+        Some("heights") => e.renamed(&param("scale")),
+        _ => e.renamed(&param("pixel_size")),
     })?;
     let c = topo
-        .characterise(periodic)
-        .map_err(|e| e.renamed(map_name))?;
-    let psi = plasticity(estar, hardness, &c)?;
+        .characterise(input.periodic)
+        .map_err(|e| e.renamed(&param("heights")))?;
+    let psi = plasticity(input.estar, input.hardness, &c)?;
     let (s, gw) = (&c.stats, c.gw_from_moments());
     let out = SurfaceJson {
         rows: c.rows,
@@ -214,39 +209,21 @@ pub fn characterise(
     Ok((out, c))
 }
 
-/// Runs `asperity surface` (and writes `--out`).
-pub fn run(args: &SurfaceArgs) -> CommandResult<SurfaceJson> {
-    positive("--pixel-size", args.pixel_size)?;
-    positive("--scale", args.scale)?;
-    let map = read_map(&args.file)?
-        .scaled(args.scale)
-        .map_err(|e| e.renamed("--scale"))?;
-    let (out, c) = characterise(
-        map,
-        &scaled_name(&args.file, args.scale),
-        args.pixel_size,
-        args.periodic,
-        args.estar,
-        args.hardness,
+/// Writes `surface.json` (the output `out` as `--json` prints it),
+/// `summit_heights.svg` and `summit_map.svg` into `dir`.
+///
+/// # Errors
+/// [`Error::Io`] naming the file that could not be written.
+pub fn write_outputs(dir: &Path, out: &SurfaceJson, c: &Characterisation) -> CommandResult<()> {
+    super::create_dir(dir)?;
+    super::write_file(
+        &dir.join("surface.json"),
+        format!("{}\n", super::json_line(out)?),
     )?;
-    if let Some(dir) = &args.out {
-        let json = serde_json::to_string(&out).map_err(|e| CommandError::Failed(e.to_string()))?;
-        write_outputs(dir, &json, &c)?;
-    }
-    Ok(out)
-}
-
-fn write_outputs(dir: &Path, json: &str, c: &Characterisation) -> CommandResult<()> {
-    let io = |p: &Path, e: std::io::Error| CommandError::from(Error::io(p.display(), e));
-    std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
-    let p = dir.join("surface.json");
-    crate::study::atomic::write(&p, format!("{json}\n")).map_err(|e| io(&p, e))?;
     if c.summits.len() < 2 {
         eprintln!("note: fewer than 2 summits, no charts written");
         return Ok(());
     }
-    let chart = |e: Error| CommandError::Failed(e.to_string());
-    crate::study::plot::surface::write_summit_heights(&dir.join("summit_heights.svg"), c)
-        .map_err(chart)?;
-    crate::study::plot::surface::write_summit_map(&dir.join("summit_map.svg"), c).map_err(chart)
+    crate::study::plot::surface::write_summit_heights(&dir.join("summit_heights.svg"), c)?;
+    crate::study::plot::surface::write_summit_map(&dir.join("summit_map.svg"), c)
 }

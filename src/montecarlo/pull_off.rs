@@ -226,9 +226,11 @@ pub fn pull_off_populations(
     if seeds == 0 {
         return Err(Error::invalid("seeds", "at least one population"));
     }
+    let token = crate::cancel::current();
     (0..seeds as u64)
         .into_par_iter()
         .map(|k| {
+            crate::cancel::scope(token.as_ref(), crate::cancel::check)?;
             let mc = population_model(spec, distribution, law, program, first_seed + k)?;
             realised_pull_off(&mc, program, factor)
         })

@@ -85,6 +85,7 @@ impl LoadingModel for RoughSphere {
         });
         let mut out: Vec<Option<State>> = vec![None; steps.len()];
         for i in order {
+            crate::cancel::check()?;
             let (d, h) = steps[i];
             out[i] = Some(self.state(d, h, observables)?);
         }

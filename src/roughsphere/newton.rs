@@ -183,6 +183,7 @@ impl Mesh {
             residual,
         };
         loop {
+            crate::cancel::check()?;
             if ev.norm <= tol.max(floor) {
                 let (dp, factor) = if at_solution {
                     let dp = self.slopes(&h, law);

@@ -271,6 +271,7 @@ impl Discretisation {
         let mut norm = amax(&ev.g);
         let mut iterations = 0;
         loop {
+            crate::cancel::check()?;
             if norm <= tol.max(64.0 * f64::EPSILON * ev.magnitude) {
                 return self.finish(h, ev, con, iterations, factorisations);
             }

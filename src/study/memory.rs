@@ -1,11 +1,14 @@
-//! What a map may cost in memory before it is read: the estimate from the
-//! file's size and the memory this process may still use (the least of
-//! `MemAvailable` in `/proc/meminfo`, the cgroup's `memory.max` less its
-//! `memory.current`, and the address-space limit in `/proc/self/limits`;
-//! no bound where none is readable). A map beyond it is refused with the
-//! estimate instead of aborting on allocation (a 20000 x 20000 `.npy` map
-//! did under an 8 GB limit).
+//! What work may cost in memory before it starts: estimates from the input
+//! sizes (a map from its file's size, an array from its length) against the
+//! memory this process may still use (the least of `MemAvailable` in
+//! `/proc/meminfo`, the cgroup's `memory.max` less its `memory.current`, and
+//! the address-space limit in `/proc/self/limits` less the address space
+//! already mapped, `VmSize`; no bound where none is readable). Work beyond
+//! it is refused with the estimate ([`Error::OutOfMemory`]: exit 2 on the
+//! command line, `MemoryError` in Python) instead of aborting on allocation
+//! (a 20000 x 20000 `.npy` map did under an 8 GB limit).
 
+use crate::error::{Error, Result};
 use std::path::Path;
 
 /// Peak memory of characterising a map, per byte of a `.npy` file: the
@@ -50,10 +53,63 @@ pub fn available() -> Option<f64> {
             .and_then(|l| l.split_whitespace().nth(3))
             .and_then(|v| v.parse::<f64>().ok())
         {
-            take(v);
+            // The limit counts the address space already mapped (the
+            // interpreter, libraries, thread stacks).
+            let mapped = std::fs::read_to_string("/proc/self/status")
+                .ok()
+                .and_then(|s| {
+                    s.lines()
+                        .find(|l| l.starts_with("VmSize:"))
+                        .and_then(|l| l.split_whitespace().nth(1))
+                        .and_then(|v| v.parse::<f64>().ok())
+                })
+                .map_or(0.0, |kb| kb * 1024.0);
+            take((v - mapped).max(1.0));
         }
     }
     best
+}
+
+/// `Ok` when `bytes` fit in the memory [`available`] (or no bound is
+/// known), otherwise [`Error::OutOfMemory`] about `what` (the input that is
+/// too large), saying what needs the memory (`doing`) and with `hint`
+/// (advice, or empty).
+///
+/// # Errors
+/// [`Error::OutOfMemory`].
+pub fn ensure(what: &str, doing: &str, bytes: f64, hint: &str) -> Result<()> {
+    match available() {
+        Some(have) if bytes > have => Err(Error::OutOfMemory {
+            what: what.to_string(),
+            doing: doing.to_string(),
+            needed: bytes,
+            available: have,
+            hint: if hint.is_empty() {
+                String::new()
+            } else {
+                format!(": {hint}")
+            },
+        }),
+        _ => Ok(()),
+    }
+}
+
+/// A vector of `n` zeros allocated without aborting: `Err` naming `what`
+/// when the allocation fails (the memory estimate of the caller missed).
+///
+/// # Errors
+/// [`Error::OutOfMemory`].
+pub fn try_zeros(what: &str, n: usize) -> Result<Vec<f64>> {
+    let mut v: Vec<f64> = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| Error::OutOfMemory {
+        what: what.to_string(),
+        doing: format!("a copy of {n} numbers"),
+        needed: n as f64 * 8.0,
+        available: available().unwrap_or(0.0),
+        hint: String::new(),
+    })?;
+    v.resize(n, 0.0);
+    Ok(v)
 }
 
 /// The estimated peak memory (bytes) of reading and characterising the
@@ -70,26 +126,24 @@ pub fn map_estimate(path: &Path, len: u64) -> f64 {
     per * len as f64
 }
 
-/// `Err(reason)` when the map in `path` would not fit in the memory
-/// available (the reason gives the estimate and the bound); `Ok` when it
-/// fits, when its size cannot be read (the read reports that), or when no
-/// bound is known.
-pub fn check_map(path: &Path) -> std::result::Result<(), String> {
+/// `Ok` when the map in `path` fits in the memory available, when its size
+/// cannot be read (the read reports that), or when no bound is known.
+///
+/// # Errors
+/// [`Error::OutOfMemory`] naming the file, with the estimate and the bound.
+pub fn check_map(path: &Path) -> Result<()> {
     let Ok(meta) = std::fs::metadata(path) else {
         return Ok(());
     };
-    let need = map_estimate(path, meta.len());
-    match available() {
-        Some(have) if need > have => Err(format!(
-            "{}: a map of {:.3e} bytes needs about {:.1} GB to read and characterise, more than \
-             the {:.1} GB of memory available: crop or downsample it",
-            path.display(),
-            meta.len() as f64,
-            need / 1e9,
-            have / 1e9
-        )),
-        _ => Ok(()),
-    }
+    ensure(
+        &path.display().to_string(),
+        &format!(
+            "reading and characterising a map of {:.3e} bytes",
+            meta.len() as f64
+        ),
+        map_estimate(path, meta.len()),
+        "crop or downsample it",
+    )
 }
 
 #[cfg(test)]

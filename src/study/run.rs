@@ -195,6 +195,7 @@ fn curve_with_progress(
     let steps = program.steps();
     let mut states = Vec::with_capacity(steps.len());
     for chunk in steps.chunks(PROGRESS_CHUNK) {
+        crate::cancel::check()?;
         states.extend(model.states(chunk, outputs)?);
         progress(states.len(), steps.len());
     }

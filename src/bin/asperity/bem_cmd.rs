@@ -2,10 +2,93 @@
 //! elements, beside GW and Persson on the same map (computed by
 //! [`asperity::commands::bem`]).
 
-pub use asperity::commands::bem::BemArgs;
+use crate::CliError;
+use asperity::commands::bem::{bem, BemAdhesion, BemInput, BemTargets};
+use asperity::commands::surface::{map_name, read_map};
+use asperity::commands::Vocabulary;
+use clap::Args;
+use std::path::PathBuf;
+
+/// Arguments of `asperity bem`.
+#[derive(Args, Debug)]
+pub struct BemArgs {
+    /// The rigid rough surface: NumPy `.npy` or a text matrix, as for
+    /// `asperity surface` (heights in the file's unit, see --scale).
+    map: PathBuf,
+    /// Pixel size (m), the same along x and y.
+    #[arg(long, allow_negative_numbers = true)]
+    pixel_size: f64,
+    /// Factor from the file's height unit to metres.
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    scale: f64,
+    /// Contact modulus E* (Pa).
+    #[arg(long, allow_negative_numbers = true)]
+    estar: f64,
+    /// Comma-separated mean pressures (Pa): load control.
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        conflicts_with = "gaps",
+        required_unless_present = "gaps"
+    )]
+    pressures: Option<String>,
+    /// Comma-separated mean gaps (m): mean-gap control.
+    #[arg(long, allow_negative_numbers = true)]
+    gaps: Option<String>,
+    /// Treat the map as periodic (otherwise padded to twice its size, a
+    /// non-periodic half-space; the mean plane is removed either way, only
+    /// the mean when periodic).
+    #[arg(long)]
+    periodic: bool,
+    /// Work of adhesion w (J/m^2) of the exponential interaction -w exp(-g/rho).
+    #[arg(long, allow_negative_numbers = true, requires = "adhesion_range")]
+    adhesion_energy: Option<f64>,
+    /// Range rho (m) of the exponential interaction.
+    #[arg(long, allow_negative_numbers = true, requires = "adhesion_energy")]
+    adhesion_range: Option<f64>,
+    /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap.
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    gamma: f64,
+    /// Resistivity (Ohm m, both bodies): adds the contact resistance of the
+    /// clusters (Holm/Maxwell spots + Greenwood interaction) and GW's.
+    #[arg(long, allow_negative_numbers = true)]
+    resistivity: Option<f64>,
+    /// Residual at which the solver stops (dimensionless), in [1e-15, 1e-2].
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1e-10)]
+    tolerance: f64,
+    /// Most iterations per solve, at least 1.
+    #[arg(long, default_value_t = 10_000)]
+    max_iterations: usize,
+    /// Memory the solver may use (MiB); larger maps are refused.
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1024.0)]
+    memory_limit_mib: f64,
+    /// Write contact.npy/pressure.npy/gap.npy per state, bem.json and charts here.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    json: bool,
+}
 
 pub fn run(args: &BemArgs) -> crate::CliResult {
-    let report = asperity::commands::bem::run(args)?;
-    crate::print_report(&report, args.json);
-    Ok(())
+    let targets = BemTargets::from_options(
+        crate::list::parse_opt("--pressures", args.pressures.as_deref())?,
+        crate::list::parse_opt("--gaps", args.gaps.as_deref())?,
+    )?;
+    let mut input = BemInput::new(args.pixel_size, args.estar, targets);
+    input.periodic = args.periodic;
+    input.adhesion = BemAdhesion::from_options(args.adhesion_energy, args.adhesion_range)?;
+    input.gamma = args.gamma;
+    input.resistivity = args.resistivity;
+    input.tolerance = args.tolerance;
+    input.max_iterations = args.max_iterations;
+    input.memory_limit_mib = args.memory_limit_mib;
+    input.out = args.out.clone();
+    // The map's content is named by its file (and the scale).
+    let words = Vocabulary::cli().with("heights", map_name(&args.map, args.scale));
+    let failed = |e| CliError::with(e, &words);
+    input.validate().map_err(failed)?;
+    let map = read_map(&args.map, args.scale).map_err(failed)?;
+    let out = bem(&map, &input).map_err(failed)?;
+    crate::print_output(&out, &out.text(), args.json)
 }

@@ -1,14 +1,34 @@
 //! `asperity law`: dimensionless pull-off facts of one law, in Maugis units
 //! (computed by [`asperity::commands::law`]).
 
-use crate::CliError;
-pub use asperity::commands::law::LawArgs;
+use asperity::commands::law::{facts, LawInput};
+use asperity::law::LawKind;
+use asperity::named::Named;
+use clap::Args;
+
+/// Arguments of `asperity law`.
+#[derive(Args, Debug)]
+pub struct LawArgs {
+    /// The law: hertz, bradley, dmt, jkr, maugis, cos.
+    #[arg(long)]
+    law: String,
+    /// Maugis parameter lambda (> 0) for laws that depend on it (maugis,
+    /// cos); default 1.
+    #[arg(long, allow_negative_numbers = true)]
+    lambda: Option<f64>,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    json: bool,
+}
 
 pub fn run(args: &LawArgs) -> crate::CliResult {
-    let facts = asperity::commands::law::run(args)?;
+    let law = LawKind::parse(&args.law).map_err(|e| e.renamed("{law}"))?;
+    let facts = facts(&LawInput {
+        law,
+        lambda: args.lambda,
+    })?;
     if args.json {
-        let s = serde_json::to_string(&facts).map_err(|e| CliError::Failed(e.to_string()))?;
-        crate::outln!("{s}");
+        crate::outln!("{}", asperity::commands::json_line(&facts)?);
     } else {
         let show =
             |x: Option<f64>| x.map_or("none (nothing snaps)".to_string(), |v| format!("{v:.6}"));

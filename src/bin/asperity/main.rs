@@ -2,14 +2,17 @@
 //! printing and exit codes live here; no physics does.
 //!
 //! Exit codes: 0 success, 2 bad input (one line on stderr naming the
-//! argument), 1 a computation that failed, 141 stdout closed by its reader
-//! (e.g. `| head`; quiet, see `pipe.rs`).
+//! argument), 1 a computation that failed, 130 interrupted (Ctrl-C: the
+//! computation stops at its next step, files are whole or absent), 141
+//! stdout closed by its reader (e.g. `| head`; quiet, see `pipe.rs`).
 
 mod bem_cmd;
 mod default_study;
 mod fn_cmd;
 mod heating_cmd;
+mod interrupt;
 mod law_cmd;
+mod list;
 mod map_cmd;
 mod persson_cmd;
 mod pipe;
@@ -114,41 +117,42 @@ pub enum CliError {
     Usage(String),
     /// The computation failed.
     Failed(String),
+    /// Interrupted by Ctrl-C (exit 130).
+    Interrupted,
     /// Stdout was closed by its reader: exit quietly.
     ClosedPipe,
 }
 
+impl CliError {
+    /// The library's error `e` with its inputs named by `words` (flags).
+    pub fn with(e: asperity::Error, words: &asperity::commands::Vocabulary) -> Self {
+        match e {
+            asperity::Error::Cancelled => CliError::Interrupted,
+            e if e.is_bad_input() => CliError::Usage(words.render(&e)),
+            e => CliError::Failed(words.render(&e)),
+        }
+    }
+}
+
 impl From<asperity::Error> for CliError {
     fn from(e: asperity::Error) -> Self {
-        if e.is_bad_input() {
-            CliError::Usage(e.to_string())
-        } else {
-            CliError::Failed(e.to_string())
-        }
+        CliError::with(e, &asperity::commands::Vocabulary::cli())
     }
 }
 
-impl From<asperity::commands::CommandError> for CliError {
-    fn from(e: asperity::commands::CommandError) -> Self {
-        use asperity::commands::CommandError;
-        match e {
-            CommandError::Usage(m) => CliError::Usage(m),
-            CommandError::Failed(m) => CliError::Failed(m),
-        }
-    }
-}
-
-/// Prints a command's report: its JSON on one line, or its text.
-pub fn print_report(report: &asperity::commands::Report, json: bool) {
+/// Prints a command's output: its JSON on one line (`--json`), or `text`.
+pub fn print_output<T: serde::Serialize>(out: &T, text: &str, json: bool) -> CliResult {
     if json {
-        println!("{}", report.json_text);
+        outln!("{}", asperity::commands::json_line(out)?);
     } else {
-        print!("{}", report.text);
+        out!("{text}");
     }
+    Ok(())
 }
 
 fn main() -> ExitCode {
     pipe::quiet_on_closed_pipe();
+    let token = interrupt::install();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {
@@ -183,7 +187,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let result = match cli.command {
+    let result = token.scope(|| match cli.command {
         None => default_study::run(),
         Some(Command::Law(args)) => law_cmd::run(&args),
         Some(Command::Run(args)) => run_cmd::run(&args),
@@ -202,7 +206,7 @@ fn main() -> ExitCode {
         Some(Command::Persson(args)) => persson_cmd::run(&args),
         Some(Command::Bem(args)) => bem_cmd::run(&args),
         Some(Command::Schema(args)) => schema_cmd::run(&args),
-    };
+    });
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(CliError::Usage(msg)) => {
@@ -212,6 +216,10 @@ fn main() -> ExitCode {
         Err(CliError::Failed(msg)) => {
             eprintln!("error: {msg}");
             ExitCode::from(1)
+        }
+        Err(CliError::Interrupted) => {
+            eprintln!("interrupted");
+            ExitCode::from(interrupt::EXIT)
         }
         Err(CliError::ClosedPipe) => ExitCode::from(pipe::CLOSED_PIPE_EXIT),
     }

@@ -3,62 +3,114 @@
 //! [`asperity::commands::surface`].
 
 use crate::CliError;
-pub use asperity::commands::surface::SurfaceArgs;
-use asperity::commands::surface::SurfaceJson;
+use asperity::commands::surface::{
+    characterise, map_name, read_map, write_outputs, SurfaceInput, SurfaceJson,
+};
+use asperity::commands::Vocabulary;
+use clap::Args;
+use std::path::PathBuf;
+
+/// Arguments of `asperity surface`.
+#[derive(Args, Debug)]
+pub struct SurfaceArgs {
+    /// The height map: NumPy `.npy` (2-D float64/float32, C order) or a text
+    /// matrix (`.txt`, `.csv`, `.asc`; whitespace or comma separated).
+    file: PathBuf,
+    /// Pixel size (m), the same along x and y.
+    #[arg(long, allow_negative_numbers = true)]
+    pixel_size: f64,
+    /// Factor from the file's height unit to metres (e.g. 1e-9 for nm).
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    scale: f64,
+    /// Treat the map as periodic: remove only the mean, wrap differences and
+    /// summit neighbours around every edge.
+    #[arg(long)]
+    periodic: bool,
+    /// Contact modulus E* (Pa), with --hardness for the plasticity index.
+    #[arg(long, allow_negative_numbers = true)]
+    estar: Option<f64>,
+    /// Hardness H (Pa), with --estar for the plasticity index.
+    #[arg(long, allow_negative_numbers = true)]
+    hardness: Option<f64>,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    json: bool,
+    /// Also write `surface.json`, `summit_heights.svg` and `summit_map.svg`
+    /// into this directory.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
 
 pub fn run(args: &SurfaceArgs) -> crate::CliResult {
-    let out = asperity::commands::surface::run(args)?;
+    // The map's content is named by its file (and the scale).
+    let words = Vocabulary::cli().with("heights", map_name(&args.file, args.scale));
+    let failed = |e| CliError::with(e, &words);
+    asperity::error::positive("{pixel_size}", args.pixel_size).map_err(failed)?;
+    let map = read_map(&args.file, args.scale).map_err(failed)?;
+    let input = SurfaceInput {
+        pixel_size: args.pixel_size,
+        periodic: args.periodic,
+        estar: args.estar,
+        hardness: args.hardness,
+    };
+    let (out, c) = characterise(map, &input).map_err(failed)?;
+    if let Some(dir) = &args.out {
+        write_outputs(dir, &out, &c).map_err(failed)?;
+    }
     if args.json {
-        let json = serde_json::to_string(&out).map_err(|e| CliError::Failed(e.to_string()))?;
-        println!("{json}");
+        crate::outln!("{}", asperity::commands::json_line(&out)?);
     } else {
-        print_table(&out);
+        print_table(&out)?;
     }
     Ok(())
 }
 
-fn print_table(o: &SurfaceJson) {
+fn print_table(o: &SurfaceJson) -> crate::CliResult {
     let opt = |x: Option<f64>| x.map_or("none".to_string(), |v| format!("{v:.6e}"));
-    println!("map                        {} x {} pixels", o.rows, o.cols);
-    println!("rms height                 {:.6e} m", o.rms_height_m);
-    println!(
+    crate::outln!("map                        {} x {} pixels", o.rows, o.cols);
+    crate::outln!("rms height                 {:.6e} m", o.rms_height_m);
+    crate::outln!(
         "m0, m2, m4                 {:.6e} m^2, {:.6e}, {:.6e} 1/m^2",
-        o.m0, o.m2, o.m4
+        o.m0,
+        o.m2,
+        o.m4
     );
-    println!(
+    crate::outln!(
         "rms slope (profile)        {:.6e}  = sqrt(m2); surface rms gradient sqrt(2 m2) = {:.6e}",
-        o.rms_slope, o.rms_gradient
+        o.rms_slope,
+        o.rms_gradient
     );
-    println!(
+    crate::outln!(
         "rms curvature (profile)    {:.6e} 1/m = sqrt(m4)",
         o.rms_curvature_per_m
     );
-    println!("bandwidth alpha            {:.6}", o.bandwidth_alpha);
+    crate::outln!("bandwidth alpha            {:.6}", o.bandwidth_alpha);
     let s = &o.summits;
-    println!("summits                    {}", s.count);
-    println!("  density                  {:.6e} 1/m^2", s.density_per_m2);
-    println!(
+    crate::outln!("summits                    {}", s.count);
+    crate::outln!("  density                  {:.6e} 1/m^2", s.density_per_m2);
+    crate::outln!(
         "  mean curvature           {} 1/m",
         opt(s.mean_curvature_per_m)
     );
-    println!("  radius                   {} m", opt(s.radius_m));
-    println!(
+    crate::outln!("  radius                   {} m", opt(s.radius_m));
+    crate::outln!(
         "  height std, mean         {} m, {} m",
         opt(s.height_std_m),
         opt(s.mean_height_m)
     );
     let g = &o.gw_from_moments;
-    println!(
+    crate::outln!(
         "GW from moments            eta {:.6e} 1/m^2, R {:.6e} m, sigma {} m",
         g.density_per_m2,
         g.radius_m,
         opt(g.sigma_m)
     );
-    println!(
+    crate::outln!(
         "plasticity index           {}",
         o.plasticity_index
             .map_or("none (give --estar and --hardness)".into(), |p| format!(
                 "{p:.6}"
             ))
     );
+    Ok(())
 }

@@ -3,7 +3,9 @@
 use crate::progress::Progress;
 use crate::CliError;
 use asperity::study::scene::Scene;
-use asperity::study::sweep::{merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary};
+use asperity::study::sweep::{
+    merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary, DEFAULT_MAX_CPU_SECONDS,
+};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -36,6 +38,11 @@ pub struct SweepArgs {
     /// Worker threads (default: one per core).
     #[arg(long)]
     threads: Option<usize>,
+    /// Most CPU time (s) the sweep may take, estimated from its first
+    /// point's time (which runs alone); beyond it the sweep stops after
+    /// that point with the estimate. Default one CPU-day.
+    #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_MAX_CPU_SECONDS)]
+    max_cpu_seconds: f64,
     /// Results directory (results.csv, sweep.json).
     #[arg(long, default_value = "sweep-out")]
     out: PathBuf,
@@ -58,9 +65,9 @@ fn as_flag(e: asperity::Error) -> asperity::Error {
     match e.field() {
         Some(
             f @ ("vary" | "log" | "samples" | "seed" | "shard" | "shard-from-env" | "threads"
-            | "out"),
+            | "out" | "max_cpu_seconds"),
         ) => {
-            let flag = format!("--{f}");
+            let flag = format!("--{}", f.replace('_', "-"));
             e.renamed(&flag)
         }
         _ => e,
@@ -105,6 +112,7 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     if args.threads == Some(0) {
         return Err(CliError::Usage("--threads = 0: give at least 1".into()));
     }
+    asperity::error::positive("--max-cpu-seconds", args.max_cpu_seconds)?;
     // The estimates: bookkeeping memory before the first point, time after
     // the first (which runs alone).
     spec.validate().map_err(as_flag)?;
@@ -142,6 +150,7 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     let mut options = SweepOptions::default();
     options.shard = shard;
     options.threads = args.threads;
+    options.max_cpu_seconds = Some(args.max_cpu_seconds);
     let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress).map_err(as_flag)?;
     bar.finish();
     eprintln!(

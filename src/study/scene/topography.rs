@@ -203,7 +203,7 @@ pub fn read_map(path: &Path) -> Result<HeightMap> {
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase)
         .unwrap_or_default();
-    crate::study::memory::check_map(path).map_err(|why| Error::invalid(FIELD, why))?;
+    crate::study::memory::check_map(path).map_err(|e| e.renamed(&format!("{FIELD} = {shown}")))?;
     let bytes = std::fs::read(path)
         .map_err(|e| Error::invalid(FIELD, format!("{shown}: cannot read: {e}")))?;
     let map = match ext.as_str() {

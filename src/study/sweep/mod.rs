@@ -17,7 +17,7 @@ mod spec;
 mod store;
 
 pub use edit::set_field;
-pub use run::{run_sweep, sweep_table, PointOutcome, SweepOptions};
+pub use run::{run_sweep, sweep_table, PointOutcome, SweepOptions, DEFAULT_MAX_CPU_SECONDS};
 pub use spec::{
     Design, Shard, SweepPoint, SweepSpec, Vary, BYTES_PER_POINT, BYTES_PER_VALUE, MAX_POINTS,
 };

@@ -23,6 +23,63 @@ pub struct SweepOptions {
     /// Quantities added to every point's plan ([`Plan::with_quantity`]):
     /// each asked one with a headline number gets a column.
     pub quantities: Vec<Quantity>,
+    /// Most CPU time (s) the points still to run may take, estimated from
+    /// the first point's time (it runs alone) times their number; beyond
+    /// it the sweep stops after that first point with an error naming
+    /// `max_cpu_seconds` and the estimate (`None`: no limit). The command
+    /// line and Python default to [`DEFAULT_MAX_CPU_SECONDS`].
+    pub max_cpu_seconds: Option<f64>,
+}
+
+/// Default limit of a sweep's estimated CPU time (s): one CPU-day. A longer
+/// sweep is refused with its estimate unless the limit is raised
+/// (`--max-cpu-seconds`, `max_cpu_seconds=`), or sharded.
+pub const DEFAULT_MAX_CPU_SECONDS: f64 = 86_400.0;
+
+/// The CPU time (s) this process has used (user + system, from
+/// `/proc/self/stat`; `None` where it cannot be read).
+fn process_cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // Fields after the command name (which may hold spaces) in parentheses.
+    let rest = &stat[stat.rfind(')')? + 2..];
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
+    // The kernel reports USER_HZ = 100 ticks per second on Linux.
+    Some(ticks / 100.0)
+}
+
+/// The estimate of a sweep's remaining CPU time from its first point's
+/// (`seconds`, the larger of its wall and CPU time), checked against
+/// `limit`.
+///
+/// # Errors
+/// [`Error::Invalid`] naming `max_cpu_seconds` with the estimate.
+fn check_estimate(seconds: f64, remaining: usize, limit: Option<f64>) -> Result<()> {
+    let estimate = seconds * remaining as f64;
+    match limit {
+        Some(max) if estimate > max => Err(Error::invalid(
+            "max_cpu_seconds",
+            format!(
+                "the first point took {seconds:.3e} s, so the {remaining} others need an \
+                 estimated {estimate:.3e} s of CPU, more than the limit {max:e} s: raise the \
+                 limit, run fewer points, or shard the sweep"
+            ),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// Runs `first` alone and returns its result with its time (s): the larger
+/// of the wall-clock and the process CPU time it took.
+fn timed<R>(first: impl FnOnce() -> R) -> (R, f64) {
+    let (wall, cpu) = (std::time::Instant::now(), process_cpu_seconds());
+    let r = first();
+    let wall = wall.elapsed().as_secs_f64();
+    let cpu = match (cpu, process_cpu_seconds()) {
+        (Some(a), Some(b)) => b - a,
+        _ => 0.0,
+    };
+    (r, wall.max(cpu))
 }
 
 /// `plan` with the sweep's extra quantities.
@@ -129,14 +186,19 @@ fn check_fields(base: &toml::Value, paths: &[String], points: &[SweepPoint]) -> 
     Ok(())
 }
 
-/// Computes one point's row: `index, values.., seed, status, outputs..`.
+/// Computes one point's row: `index, values.., seed, status, outputs..`
+/// and whether it is `ok` (a failed scene is a row saying why).
+///
+/// # Errors
+/// [`Error::Cancelled`] only: a cancelled point has no row.
 fn point_row(
     base: &toml::Value,
     paths: &[String],
     options: &SweepOptions,
     cols: &[String],
     p: &SweepPoint,
-) -> (String, bool) {
+) -> Result<(String, bool)> {
+    crate::cancel::check()?;
     let mut row: Vec<String> = vec![p.index.to_string()];
     row.extend(p.values.iter().map(|v| format!("{v:e}")));
     row.push(p.seed.to_string());
@@ -172,6 +234,9 @@ fn point_row(
             _ => Ok(s),
         }
     });
+    if let Err(Error::Cancelled) = outcome {
+        return Err(Error::Cancelled);
+    }
     let ok = outcome.is_ok();
     match outcome {
         Ok(s) => {
@@ -196,7 +261,7 @@ fn point_row(
             row.extend(cols.iter().map(|_| String::new()));
         }
     }
-    (row.join(","), ok)
+    Ok((row.join(","), ok))
 }
 
 /// The header of `results.csv`: `index`, the varied paths, `seed`,
@@ -229,17 +294,24 @@ fn base_value(base: &Scene, paths: &[String], first: &[f64]) -> Result<(String, 
 /// returned as the table `results.csv` would hold (`index`, the paths,
 /// `seed`, `status`, the plan's result columns), without any file. Each row
 /// is computed exactly as [`run_sweep`] computes it, so a point with the same
-/// values and seed gives the same numbers.
+/// values and seed gives the same numbers. `on_row(done, total, header,
+/// row)` is called as each point finishes (`row` a line of `results.csv`
+/// under `header`, in the order points finish; the table is in index
+/// order). The first point runs
+/// alone: its time gives the estimate checked against
+/// `options.max_cpu_seconds`.
 ///
 /// # Errors
 /// Invalid scenes or paths (naming the field), an empty or duplicated
 /// `vary` (naming `vary`), non-finite values, more than
-/// 10^8 points (the limit of [`SweepSpec::validate`]).
+/// 10^8 points (the limit of [`SweepSpec::validate`]), an estimate beyond
+/// `options.max_cpu_seconds` (naming it), [`Error::Cancelled`].
 pub fn sweep_table(
     base: &Scene,
     vary: &[(String, Vec<f64>)],
     seed: u64,
     options: &SweepOptions,
+    on_row: &(dyn Fn(usize, usize, &str, &str) + Sync),
 ) -> Result<Table> {
     if vary.is_empty() {
         return Err(Error::invalid("vary", "give at least one path"));
@@ -281,21 +353,41 @@ pub fn sweep_table(
         .collect();
     // As `asperity sweep`: a bad path or value fails before any point runs.
     check_fields(&base_value, &paths, &points)?;
-    let work = || -> Vec<String> {
-        points
-            .par_iter()
-            .map(|p| point_row(&base_value, &paths, options, &cols, p).0)
-            .collect()
+    let header = results_header(&paths, &cols);
+    let token = crate::cancel::current();
+    let done = AtomicUsize::new(0);
+    let row_of = |p: &SweepPoint| -> Result<String> {
+        let (row, _) = crate::cancel::scope(token.as_ref(), || {
+            point_row(&base_value, &paths, options, &cols, p)
+        })?;
+        on_row(
+            done.fetch_add(1, Ordering::Relaxed) + 1,
+            total,
+            &header,
+            &row,
+        );
+        Ok(row)
+    };
+    let work = || -> Result<Vec<String>> {
+        let Some((first, rest)) = points.split_first() else {
+            return Ok(Vec::new());
+        };
+        let (first_row, seconds) = timed(|| row_of(first));
+        let first_row = first_row?;
+        check_estimate(seconds, rest.len(), options.max_cpu_seconds)?;
+        let mut rows = vec![first_row];
+        rows.extend(rest.par_iter().map(row_of).collect::<Result<Vec<_>>>()?);
+        Ok(rows)
     };
     let rows = match options.threads {
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
             .build()
             .map_err(|e| Error::invalid("threads", e.to_string()))?
-            .install(work),
-        None => work(),
+            .install(work)?,
+        None => work()?,
     };
-    let mut text = results_header(&paths, &cols);
+    let mut text = header;
     text.push('\n');
     for r in rows {
         text.push_str(&r);
@@ -310,9 +402,11 @@ pub fn sweep_table(
 /// comes after one point's time, the estimate of the others').
 ///
 /// # Errors
-/// Invalid specs or scenes (naming the field) and I/O failures (naming
-/// `--out`). A point whose scene fails does not stop the sweep: its row
-/// records the error.
+/// Invalid specs or scenes (naming the field), I/O failures (naming
+/// `out`), an estimate beyond `options.max_cpu_seconds` (naming it, after
+/// the first point), [`Error::Cancelled`] (the rows of the points finished
+/// are kept: a rerun resumes). A point whose scene fails does not stop the
+/// sweep: its row records the error.
 pub fn run_sweep(
     base: &Scene,
     spec: &SweepSpec,
@@ -360,8 +454,11 @@ pub fn run_sweep(
     let failed = AtomicUsize::new(0);
     progress(resumed, total);
     let file = Mutex::new(file);
+    let token = crate::cancel::current();
     let step = |p: &&SweepPoint| -> Result<()> {
-        let (row, ok) = point_row(&base_value, &paths, options, &cols, p);
+        let (row, ok) = crate::cancel::scope(token.as_ref(), || {
+            point_row(&base_value, &paths, options, &cols, p)
+        })?;
         if !ok {
             failed.fetch_add(1, Ordering::Relaxed);
         }
@@ -375,7 +472,9 @@ pub fn run_sweep(
     // call past `resumed`, is the per-point estimate of the rest.
     let work = || match todo.split_first() {
         Some((first, rest)) => {
-            step(first)?;
+            let (r, seconds) = timed(|| step(first));
+            r?;
+            check_estimate(seconds, rest.len(), options.max_cpu_seconds)?;
             rest.par_iter().try_for_each(step)
         }
         None => Ok(()),
