@@ -23,17 +23,15 @@
 //! - `phi(h)` with an exact exponent ([`normal::pdf`]); past its underflow
 //!   (`h ~ 38.6`) every `F_n` is 0. `h = -inf` gives `F_0 = 1`, others `inf`.
 
-use super::gaussian_tables::{NEG_F12, NEG_F32, POS_R1, POS_R2, POS_R32, POS_R52};
+use super::gaussian_tables::{NEG_F12, NEG_F32};
 use super::normal;
+#[cfg(test)]
+use super::scaled::TABLE_HI;
+use super::scaled::{half_top, integer_top};
 use crate::numeric::chebyshev::piecewise;
 
-/// Upper end of the Chebyshev pieces for `h >= 0`.
-pub(crate) const TABLE_HI: f64 = 20.0;
 /// Lower end of the Chebyshev pieces for `h < 0`.
 const TABLE_LO: f64 = -20.0;
-/// `Gamma(5/2)`, `Gamma(7/2)`.
-const GAMMA_5_2: f64 = 1.329_340_388_179_137_020_473_625_612_506;
-const GAMMA_7_2: f64 = 3.323_350_970_447_842_551_184_064_031_264;
 
 /// The orders with closed forms here.
 pub const CLOSED_ORDERS: [f64; 6] = [0.0, 0.5, 1.0, 1.5, 2.0, 2.5];
@@ -67,60 +65,6 @@ pub fn gaussian_fn(n: f64, h: f64) -> Option<f64> {
         return None;
     };
     Some(v)
-}
-
-/// `(R_1(h), R_2(h))` from the Chebyshev pieces, `0 <= h < TABLE_HI`.
-#[inline]
-pub(crate) fn scaled_integer_top(h: f64) -> (f64, f64) {
-    (piecewise(&POS_R1, 0.0, h), piecewise(&POS_R2, 0.0, h))
-}
-
-/// `(R_1(h), R_2(h))`, `0 <= h < inf`.
-#[inline]
-fn integer_top(h: f64) -> (f64, f64) {
-    if h < TABLE_HI {
-        scaled_integer_top(h)
-    } else {
-        let h2 = h * h;
-        (
-            r_asymptotic(1.0, 1.0, h, h2),
-            r_asymptotic(2.0, 2.0, h, h2 * h),
-        )
-    }
-}
-
-/// `(R_3/2(h), R_5/2(h))`, `0 <= h < inf`.
-#[inline]
-fn half_top(h: f64) -> (f64, f64) {
-    if h < TABLE_HI {
-        (piecewise(&POS_R32, 0.0, h), piecewise(&POS_R52, 0.0, h))
-    } else {
-        let p = h * h * h.sqrt();
-        (
-            r_asymptotic(1.5, GAMMA_5_2, h, p),
-            r_asymptotic(2.5, GAMMA_7_2, h, p * h),
-        )
-    }
-}
-
-/// Asymptotic series of `R_nu(h)` for large `h` (>= 20 here), with
-/// `gamma_nu1 = Gamma(nu+1)` and `h_pow = h^(nu+1)`: relative error < 1e-17
-/// for `h >= 20`, `nu <= 5/2` (about 11 terms at 20, 6 at 37).
-#[inline]
-pub(crate) fn r_asymptotic(nu: f64, gamma_nu1: f64, h: f64, h_pow: f64) -> f64 {
-    let x = 0.5 / (h * h);
-    let (mut term, mut sum) = (1.0_f64, 1.0_f64);
-    let mut k = 0.0;
-    while k < 40.0 {
-        let a = nu + 1.0 + 2.0 * k;
-        term *= -a * (a + 1.0) / (k + 1.0) * x;
-        sum += term;
-        if term.abs() < 1e-17 * sum {
-            break;
-        }
-        k += 1.0;
-    }
-    gamma_nu1 * sum / h_pow
 }
 
 /// For `h < 0`: `(phi(h), F_0(h))` with `F_0 = 1 - phi(a) R_0(a)`, `a = -h`.

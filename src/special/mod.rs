@@ -17,6 +17,7 @@ pub mod gaussian_fn;
 #[allow(missing_docs)]
 mod gaussian_tables;
 pub mod normal;
+mod scaled;
 pub mod struve;
 #[allow(missing_docs)]
 mod struve_tables;

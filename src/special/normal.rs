@@ -8,7 +8,7 @@
 //! exactly (Dekker's exact product gives the rounding error of `h*h`), so `phi(h)` keeps
 //! full relative accuracy up to its underflow at `h ~ 38.6`.
 
-use super::gaussian_fn::{r_asymptotic, scaled_integer_top};
+use super::scaled::{r_asymptotic, scaled_integer_top, TABLE_HI};
 
 /// `1/sqrt(2 pi)`.
 pub const FRAC_1_SQRT_2PI: f64 = 0.398_942_280_401_432_677_939_946_059_934_381_868;
@@ -155,7 +155,7 @@ pub(crate) fn scaled_r0(h: f64) -> f64 {
     if h == f64::INFINITY {
         return 0.0;
     }
-    if h < super::gaussian_fn::TABLE_HI {
+    if h < TABLE_HI {
         let (r1, r2) = scaled_integer_top(h);
         h * r1 + r2
     } else {

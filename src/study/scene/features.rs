@@ -4,7 +4,11 @@
 //! naming the dotted field, and built into core objects.
 
 use super::law_name::LawName;
-use super::schema::{ElectricalSpec, LawSpec, Scene, MAX_LISTED_STATES};
+use super::limits::{
+    MAX_CURRENT, MAX_LISTED_STATES, MAX_TABULATED_POINTS, TABULATED_CPU_S_PER_POINT,
+    YIELD_STRENGTH_RANGE,
+};
+use super::schema::{ElectricalSpec, LawSpec, Scene};
 use crate::axisym::Profile;
 use crate::axisym::{ProfileKind, ProfileParams};
 use crate::electrical::heating::{
@@ -14,16 +18,6 @@ use crate::electrical::{Conductor, Heating, Interaction, SpotResistance, Switch}
 use crate::error::{finite, positive, Allowed, Error, Result};
 use crate::material::plastic::Plasticity;
 use crate::named::Named;
-
-/// Most points of a tabulated profile (`law.profile_r`): the shaped law's
-/// cost grows with the table (about [`TABULATED_CPU_S_PER_POINT`] each: a
-/// 100,000-point profile ran for many minutes without a word).
-pub const MAX_TABULATED_POINTS: usize = 2000;
-
-/// CPU seconds per point of a tabulated profile's shaped-law run, measured
-/// on `conical-summits.toml` with a 400-point paraboloid table (3.05 s, a
-/// release build; 0.55 s at 100 points).
-pub const TABULATED_CPU_S_PER_POINT: f64 = 7.6e-3;
 
 /// Where the program's approach stops, as the scene gives it.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,11 +31,6 @@ pub enum ProgramTarget {
     /// `loads` (N), in the listed order.
     Loads(Vec<f64>),
 }
-
-/// Allowed yield strengths and hardnesses in scenes (Pa): from the softest
-/// gels (~1e3 Pa) to far beyond diamond (~1e11 Pa), so a vanishing
-/// plasticity (1e16 Pa) stays expressible.
-pub(crate) const YIELD_STRENGTH_RANGE: (f64, f64) = (1e3, 1e20);
 
 impl LawSpec {
     /// The profile keys, as the core's [`ProfileParams`] (`law.profile_r`
@@ -396,9 +385,6 @@ impl Scene {
         Ok(())
     }
 }
-
-/// Largest `electrical.current` (A).
-pub const MAX_CURRENT: f64 = 1e6;
 
 impl ElectricalSpec {
     /// The per-spot resistance law.

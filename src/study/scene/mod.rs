@@ -14,8 +14,10 @@ mod features;
 mod json_schema;
 mod keys;
 mod law_name;
+mod limits;
 mod parse;
 mod schema;
+mod summit_source;
 mod topography;
 
 pub use build::{
@@ -28,10 +30,10 @@ pub use keys::{keys_at, nearest_key, scene_keys, suggest_key, SchemaKey};
 pub use law_name::LawName;
 pub use topography::{read_map, resolve, Resolved, SummitSource, TopographySpec};
 
+pub use limits::{DEFAULT_POPULATIONS, DEFAULT_SEED, MAX_LISTED_STATES, MAX_POPULATIONS};
 pub use schema::{
     AccuracySpec, AdhesionSpec, ElectricalSpec, LawSpec, MaterialsSpec, MonteCarloSpec,
     OutputsSpec, ProgramSpec, Scene, SphereShape, SphereSpec, SurfaceSpec, SwitchSpec,
-    DEFAULT_POPULATIONS, DEFAULT_SEED, MAX_LISTED_STATES, MAX_POPULATIONS,
 };
 
 /// The reference scene of the tests and examples

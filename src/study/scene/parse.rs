@@ -1,6 +1,10 @@
 //! Reading a scene from TOML text: parse errors carry the line number and the
 //! field; values are then validated with the field's dotted path.
 
+use super::limits::{
+    MAX_LENGTH, MAX_POINTS, MAX_POPULATION_BYTES, MAX_POPULATION_SECONDS, MAX_SURFACE_SUMMITS,
+    MIN_LENGTH,
+};
 use super::schema::{Scene, SurfaceSpec};
 use crate::error::{finite, non_negative, positive, Allowed, Error, Result};
 use crate::heights::DistributionKind;
@@ -102,7 +106,7 @@ impl Scene {
             }
             non_negative("montecarlo.radius_log_std", mc.radius_log_std)?;
             if let Some(n) = mc.seeds {
-                let max = super::schema::MAX_POPULATIONS;
+                let max = super::limits::MAX_POPULATIONS;
                 if n == 0 || n > max {
                     return Err(Error::OutOfRange {
                         name: "montecarlo.seeds".into(),
@@ -116,28 +120,6 @@ impl Scene {
         Ok(())
     }
 }
-
-/// Largest `program.points` (per leg).
-pub const MAX_POINTS: usize = 1_000_000;
-
-/// Smallest summit radius, height scale and interaction range (m): below a
-/// femtometre no length of a contact means anything.
-pub const MIN_LENGTH: f64 = 1e-15;
-
-/// Largest summit radius, height scale and interaction range (m).
-pub const MAX_LENGTH: f64 = 1.0;
-
-/// Largest number of summits `eta A_n` on the nominal area (totals stay
-/// far from overflow).
-pub const MAX_SURFACE_SUMMITS: f64 = 1e24;
-
-/// Largest memory (bytes) a Monte Carlo population may take (heights, radii
-/// and the sorted suffix), so that a scene never aborts on allocation.
-pub const MAX_POPULATION_BYTES: f64 = 2.0 * (1u64 << 30) as f64;
-
-/// Largest estimated single-core time (s) of summing a population over the
-/// program.
-pub const MAX_POPULATION_SECONDS: f64 = 3600.0;
 
 /// Bytes per summit of a population: height, radius and working copies.
 const BYTES_PER_SUMMIT: f64 = 32.0;

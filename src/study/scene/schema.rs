@@ -10,10 +10,12 @@
 //! and the range the validation enforces (`parse.rs`, `features.rs`; the
 //! bounds are the same constants).
 
-use super::features::{MAX_CURRENT, MAX_TABULATED_POINTS, YIELD_STRENGTH_RANGE};
 use super::law_name::LawName;
-use super::parse::{MAX_LENGTH, MAX_POINTS, MIN_LENGTH};
-use super::topography::SummitSource;
+use super::limits::{
+    DEFAULT_POPULATIONS, DEFAULT_SEED, MAX_CURRENT, MAX_LENGTH, MAX_LISTED_STATES, MAX_POINTS,
+    MAX_POPULATIONS, MAX_TABULATED_POINTS, MIN_LENGTH, YIELD_STRENGTH_RANGE,
+};
+use super::summit_source::SummitSource;
 use crate::axisym::ProfileKind;
 use crate::electrical::heating::{
     DEFAULT_BULK_TEMPERATURE, GOLD_MELTING_TEMPERATURE, GOLD_SOFTENING_TEMPERATURE,
@@ -265,15 +267,6 @@ pub struct MonteCarloSpec {
     #[schemars(extend("x-unit" = "1"), range(min = 0.0))]
     pub radius_log_std: f64,
 }
-
-/// Default `montecarlo.seed`.
-pub const DEFAULT_SEED: u64 = 1;
-
-/// Default number of pull-off populations (`montecarlo.seeds`).
-pub const DEFAULT_POPULATIONS: usize = 100;
-
-/// Most pull-off populations a scene may ask for.
-pub const MAX_POPULATIONS: usize = 100_000;
 
 fn default_seed() -> u64 {
     DEFAULT_SEED
@@ -559,9 +552,6 @@ fn positive_items(schema: &mut schemars::Schema) {
         items.insert("exclusiveMinimum".into(), 0.0.into());
     }
 }
-
-/// Most listed states a program may ask for.
-pub const MAX_LISTED_STATES: usize = 10_000;
 
 fn default_points() -> usize {
     200
