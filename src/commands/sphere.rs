@@ -171,63 +171,75 @@ pub fn sphere(args: &SphereInput) -> CommandResult<SphereOutput> {
         text: String::new(),
     };
     if let Some(path) = &args.curve {
-        let mut progress = Progress::new("sphere curve");
-        let curve = problem.trace_with_progress(Some(&mut |p: &SpherePoint| progress.tick(p)))?;
-        progress.done();
-        let mut text = String::from(
-            "central_gap,approach,load_bar,interference_bar,radius,radius_bar,d_approach,d_load\n",
-        );
-        for p in &curve {
-            text.push_str(&format!(
-                "{},{},{},{},{},{},{},{}\n",
-                p.central_gap,
-                p.approach,
-                p.load_bar,
-                p.interference_bar,
-                p.radius,
-                p.radius_bar,
-                p.d_approach,
-                p.d_load
-            ));
-        }
-        crate::study::atomic::write(path, text.as_bytes())
-            .map_err(|e| Error::io(format!("{} {}", param("curve"), path.display()), e))?;
+        write_curve(&problem, path)?;
     }
-    let mut t = String::new();
-    {
-        let show =
-            |x: Option<f64>| x.map_or("none (no S-curve)".to_string(), |v| format!("{v:.6}"));
-        let shape = args
-            .rho
-            .map_or("paraboloid".to_string(), |r| format!("sphere, rho = {r}"));
-        let _ = writeln!(t, "full LJ sphere solver        mu = {}, {shape}", out.mu);
-        let _ = writeln!(
-            t,
-            "pull-off, load control       {:.6}  [pi w R]",
-            out.pull_off_load_control
-        );
-        let _ = writeln!(
-            t,
-            "jump-out load                {}  [pi w R]",
-            show(out.jump_out_load)
-        );
-        let _ = writeln!(
-            t,
-            "jump-out interference        {}  [(pi^2 w^2 R/K^2)^(1/3)]",
-            show(out.jump_out_interference)
-        );
-        let _ = writeln!(
-            t,
-            "jump-in interference         {}  [(pi^2 w^2 R/K^2)^(1/3)]",
-            show(out.jump_in_interference)
-        );
-        let _ = writeln!(
-            t,
-            "contact radius at zero load  {}  [(pi w R^2/K)^(1/3)]",
-            show(out.contact_radius_zero_load)
-        );
-        let _ = writeln!(t, "mesh nodes at pull-off       {}", out.nodes);
-    }
-    out.text = t;
+    out.text = text(&out);
     Ok(out)
+}
+
+/// Traces the whole curve and writes it to `path` as CSV with a header,
+/// progress on stderr for runs longer than 2 s.
+///
+/// # Errors
+/// The solver's failures; [`Error::Io`] naming `{curve}` and the file.
+fn write_curve(problem: &SphereProblem, path: &std::path::Path) -> CommandResult<()> {
+    let mut progress = Progress::new("sphere curve");
+    let curve = problem.trace_with_progress(Some(&mut |p: &SpherePoint| progress.tick(p)))?;
+    progress.done();
+    let mut text = String::from(
+        "central_gap,approach,load_bar,interference_bar,radius,radius_bar,d_approach,d_load\n",
+    );
+    for p in &curve {
+        text.push_str(&format!(
+            "{},{},{},{},{},{},{},{}\n",
+            p.central_gap,
+            p.approach,
+            p.load_bar,
+            p.interference_bar,
+            p.radius,
+            p.radius_bar,
+            p.d_approach,
+            p.d_load
+        ));
+    }
+    crate::study::atomic::write(path, text.as_bytes())
+        .map_err(|e| Error::io(format!("{} {}", param("curve"), path.display()), e))?;
+    Ok(())
+}
+
+/// The table `asperity sphere` prints.
+fn text(out: &SphereOutput) -> String {
+    let mut t = String::new();
+    let show = |x: Option<f64>| x.map_or("none (no S-curve)".to_string(), |v| format!("{v:.6}"));
+    let shape = out
+        .rho
+        .map_or("paraboloid".to_string(), |r| format!("sphere, rho = {r}"));
+    let _ = writeln!(t, "full LJ sphere solver        mu = {}, {shape}", out.mu);
+    let _ = writeln!(
+        t,
+        "pull-off, load control       {:.6}  [pi w R]",
+        out.pull_off_load_control
+    );
+    let _ = writeln!(
+        t,
+        "jump-out load                {}  [pi w R]",
+        show(out.jump_out_load)
+    );
+    let _ = writeln!(
+        t,
+        "jump-out interference        {}  [(pi^2 w^2 R/K^2)^(1/3)]",
+        show(out.jump_out_interference)
+    );
+    let _ = writeln!(
+        t,
+        "jump-in interference         {}  [(pi^2 w^2 R/K^2)^(1/3)]",
+        show(out.jump_in_interference)
+    );
+    let _ = writeln!(
+        t,
+        "contact radius at zero load  {}  [(pi w R^2/K)^(1/3)]",
+        show(out.contact_radius_zero_load)
+    );
+    let _ = writeln!(t, "mesh nodes at pull-off       {}", out.nodes);
+    t
 }

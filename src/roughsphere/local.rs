@@ -164,6 +164,65 @@ impl NodeLaw {
     }
 }
 
+/// The approach law of a model in closed form: `p = sum_i c_i eta sigma^n_i
+/// F_(n_i - 1)(h - shift)` in units of `unit` (Pa).
+fn closed_approach(model: &GwModel, unit: f64) -> NodeLaw {
+    let surface = model.surface();
+    let sigma = surface.sigma;
+    let form = model
+        .law()
+        .power_form()
+        .expect("a closed form has a power form");
+    let eta = surface.density;
+    let terms = form
+        .load
+        .iter()
+        .map(|&(c, n)| (eta * c * sigma.powf(n) / unit, n))
+        .collect();
+    NodeLaw {
+        form: Form::Closed {
+            model: model.clone(),
+            terms,
+            shift: form.onset / sigma,
+        },
+        below: f64::NEG_INFINITY,
+    }
+}
+
+/// The approach law as a Chebyshev table of `model`'s pressure (times
+/// `per_area`) over gaps from `lo` to the interaction onset (at most 40
+/// sigma), to the tolerance `table_tol`.
+///
+/// # Errors
+/// [`Error::Invalid`] naming `law` when the interaction range leaves no
+/// gap to tabulate; the model's failures.
+fn tabulated_approach(model: &GwModel, lo: f64, per_area: f64, table_tol: f64) -> Result<NodeLaw> {
+    let sigma = model.surface().sigma;
+    let hi = (model.interaction_onset() / sigma).min(40.0);
+    if !(hi > lo) {
+        return Err(Error::invalid(
+            "law",
+            "its interaction range leaves no gap to tabulate",
+        ));
+    }
+    let eval = |xs: &[f64]| -> Result<Vec<f64>> {
+        use rayon::prelude::*;
+        xs.par_iter()
+            .map(|&h| {
+                let s = model.state(sigma * h, History::Approach, &Observables::LOAD)?;
+                Ok(s.load().unwrap_or(0.0) * per_area)
+            })
+            .collect()
+    };
+    let p0 = eval(&[0.0, lo])?;
+    let scale = 1e-4 * p0[0].abs().max(1e-300);
+    let t = Table::build(lo, hi, &[], table_tol, scale, &eval)?;
+    Ok(NodeLaw {
+        form: Form::Table(Arc::new(t)),
+        below: f64::NEG_INFINITY,
+    })
+}
+
 impl LocalLaw {
     /// The local law of `model` with pressure unit `unit` (Pa).
     ///
@@ -204,53 +263,11 @@ impl LocalLaw {
             }
         };
         let (approach, bottom) = if closed {
-            let form = law.power_form().expect("checked");
-            let eta = surface.density;
-            let terms = form
-                .load
-                .iter()
-                .map(|&(c, n)| (eta * c * sigma.powf(n) / unit, n))
-                .collect();
-            (
-                NodeLaw {
-                    form: Form::Closed {
-                        model: model.clone(),
-                        terms,
-                        shift: form.onset / sigma,
-                    },
-                    below: f64::NEG_INFINITY,
-                },
-                f64::NEG_INFINITY,
-            )
+            (closed_approach(model, unit), f64::NEG_INFINITY)
         } else {
             let lo = bottom_gap;
-            let hi = (tab_model.interaction_onset() / sigma).min(40.0);
-            if !(hi > lo) {
-                return Err(Error::invalid(
-                    "law",
-                    "its interaction range leaves no gap to tabulate",
-                ));
-            }
-            let eval = |xs: &[f64]| -> Result<Vec<f64>> {
-                use rayon::prelude::*;
-                xs.par_iter()
-                    .map(|&h| {
-                        let s =
-                            tab_model.state(sigma * h, History::Approach, &Observables::LOAD)?;
-                        Ok(s.load().unwrap_or(0.0) * per_area)
-                    })
-                    .collect()
-            };
-            let p0 = eval(&[0.0, lo])?;
-            let scale = 1e-4 * p0[0].abs().max(1e-300);
-            let t = Table::build(lo, hi, &[], table_tol, scale, &eval)?;
-            (
-                NodeLaw {
-                    form: Form::Table(Arc::new(t)),
-                    below: f64::NEG_INFINITY,
-                },
-                lo,
-            )
+            let t = tabulated_approach(&tab_model, lo, per_area, table_tol)?;
+            (t, lo)
         };
         let scale = {
             let a = NodeLaw::eval_form(&approach.form, 0.0).0.abs();

@@ -199,7 +199,64 @@ impl RoughSphere {
                 pressure: scaled(core.pressure_at(s, r / l), pu),
             })
             .collect();
+        let (real_area, contacts, resistance) = self.bump_totals(s, query, &mut warnings)?;
+        let profile = query.profile.then(|| {
+            let (rho, p) = core.profile(s);
+            rho.iter().zip(&p).map(|(r, p)| (r * l, p * pu)).collect()
+        });
+        let last = s.levels.last().expect("levels");
+        let remote = self.remote(s);
+        Ok(SphereState {
+            separation: remote.value * sigma,
+            central_separation: s.d * sigma,
+            approach: Estimate {
+                value: -remote.value * sigma,
+                error: remote.error * sigma,
+            },
+            central_deflection: u0,
+            load,
+            radius_95,
+            hertz_radius,
+            hertz_radius_95: hertz_radius.map(|a| a * hertz_load_fraction_radius(0.95)),
+            real_area,
+            contacts,
+            resistance,
+            pressure,
+            profile,
+            outer_radius: last.mesh.rho_max() * l,
+            nodes: last.mesh.len(),
+            converged: s.converged,
+            model: format!(
+                "Greenwood & Tripp (1967): local GW pressure of {} summits on {} heights \
+                 (independent summits), elastic half-space, {} profile",
+                self.model().law().name(),
+                self.model().distribution().name(),
+                match self.profile() {
+                    super::problem::SphereProfile::Paraboloid => "paraboloidal",
+                    super::problem::SphereProfile::Sphere => "spherical",
+                }
+            ),
+            warnings,
+        })
+    }
+
+    /// The real area, the contacts and the contact resistance summed over
+    /// the bump (when the query asks for them), with their warnings.
+    #[allow(clippy::type_complexity)]
+    fn bump_totals(
+        &self,
+        s: &Solved,
+        query: &SphereQuery,
+        warnings: &mut Vec<String>,
+    ) -> Result<(Option<Estimate>, Option<Estimate>, Option<BumpResistance>)> {
         let (mut real_area, mut contacts, mut resistance) = (None, None, None);
+        let u = self.units();
+        let core = &self.core;
+        let l = u.length();
+        let scaled = |e: Estimate, k: f64| Estimate {
+            value: e.value * k,
+            error: e.error * k,
+        };
         if query.area_and_count || query.electrics.is_some() {
             let mut obs = Observables::ALL;
             let mut ro = None;
@@ -256,44 +313,7 @@ impl RoughSphere {
                 }
             }
         }
-        let profile = query.profile.then(|| {
-            let (rho, p) = core.profile(s);
-            rho.iter().zip(&p).map(|(r, p)| (r * l, p * pu)).collect()
-        });
-        let last = s.levels.last().expect("levels");
-        let remote = self.remote(s);
-        Ok(SphereState {
-            separation: remote.value * sigma,
-            central_separation: s.d * sigma,
-            approach: Estimate {
-                value: -remote.value * sigma,
-                error: remote.error * sigma,
-            },
-            central_deflection: u0,
-            load,
-            radius_95,
-            hertz_radius,
-            hertz_radius_95: hertz_radius.map(|a| a * hertz_load_fraction_radius(0.95)),
-            real_area,
-            contacts,
-            resistance,
-            pressure,
-            profile,
-            outer_radius: last.mesh.rho_max() * l,
-            nodes: last.mesh.len(),
-            converged: s.converged,
-            model: format!(
-                "Greenwood & Tripp (1967): local GW pressure of {} summits on {} heights \
-                 (independent summits), elastic half-space, {} profile",
-                self.model().law().name(),
-                self.model().distribution().name(),
-                match self.profile() {
-                    super::problem::SphereProfile::Paraboloid => "paraboloidal",
-                    super::problem::SphereProfile::Sphere => "spherical",
-                }
-            ),
-            warnings,
-        })
+        Ok((real_area, contacts, resistance))
     }
 
     /// Real-area fraction at the centre (area per nominal area of the

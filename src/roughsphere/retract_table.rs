@@ -114,6 +114,66 @@ fn barycentric(x: f64) -> Vec<(usize, f64)> {
     out
 }
 
+/// The first panels of `[lo, hi_min]`, at most [`FIRST_WIDTH`] wide, in
+/// the order a stack pops them (lowest first).
+fn first_panels(lo: f64, hi_min: f64) -> Vec<(f64, f64)> {
+    let n0 = ((hi_min - lo) / FIRST_WIDTH).ceil().max(1.0) as usize;
+    (0..n0)
+        .rev()
+        .map(|i| {
+            let w = (hi_min - lo) / n0 as f64;
+            (
+                lo + i as f64 * w,
+                if i + 1 == n0 {
+                    hi_min
+                } else {
+                    lo + (i + 1) as f64 * w
+                },
+            )
+        })
+        .collect()
+}
+
+/// The largest error of the panel `[a, b]`'s interpolant (its Lobatto
+/// nodes' `tables`) against the direct states of `slice` at the
+/// interleaved Chebyshev points, in units of the tolerance `tol (|p| +
+/// scale)`, over the gaps `h_min + ts`.
+///
+/// # Errors
+/// `slice`'s errors.
+fn panel_error(
+    a: f64,
+    b: f64,
+    tables: &[Arc<Table>],
+    ts: &[f64],
+    tol: f64,
+    scale: f64,
+    slice: &Slice<'_>,
+) -> Result<f64> {
+    use rayon::prelude::*;
+    let tests: Vec<f64> = (0..DEG)
+        .map(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
+        .collect();
+    Ok(tests
+        .par_iter()
+        .map(|&x| -> Result<f64> {
+            let h_min = 0.5 * (a + b) + 0.5 * (b - a) * x;
+            let direct = slice(h_min, ts)?;
+            let w = barycentric(x);
+            Ok(ts
+                .iter()
+                .zip(&direct)
+                .map(|(&t, &p)| {
+                    let v: f64 = w.iter().map(|&(k, c)| c * tables[k].eval(t).0).sum();
+                    (v - p).abs() / (tol * (p.abs() + scale))
+                })
+                .fold(0.0, f64::max))
+        })
+        .collect::<Result<Vec<f64>>>()?
+        .into_iter()
+        .fold(0.0, f64::max))
+}
+
 impl RetractTable {
     /// Tabulates on `[lo, hi_min]` in `H_min` and `[0, t_max]` in `t`:
     /// `slice(h_min, ts)` returns the pressure at gaps `h_min + t` after
@@ -149,21 +209,7 @@ impl RetractTable {
                 t_max * s * s
             })
             .collect();
-        let n0 = ((hi_min - lo) / FIRST_WIDTH).ceil().max(1.0) as usize;
-        let mut todo: Vec<(f64, f64)> = (0..n0)
-            .rev()
-            .map(|i| {
-                let w = (hi_min - lo) / n0 as f64;
-                (
-                    lo + i as f64 * w,
-                    if i + 1 == n0 {
-                        hi_min
-                    } else {
-                        lo + (i + 1) as f64 * w
-                    },
-                )
-            })
-            .collect();
+        let mut todo = first_panels(lo, hi_min);
         // Tables by `H_min` (panel ends are shared with the neighbours).
         let mut known: Vec<(f64, Arc<Table>)> = Vec::new();
         let mut done: Vec<(f64, Vec<Arc<Table>>)> = Vec::new();
@@ -190,28 +236,7 @@ impl RetractTable {
                         .expect("built above")
                 })
                 .collect();
-            // Check at the interleaved points against the direct states.
-            let tests: Vec<f64> = (0..DEG)
-                .map(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
-                .collect();
-            let worst = tests
-                .par_iter()
-                .map(|&x| -> Result<f64> {
-                    let h_min = 0.5 * (a + b) + 0.5 * (b - a) * x;
-                    let direct = slice(h_min, &ts)?;
-                    let w = barycentric(x);
-                    Ok(ts
-                        .iter()
-                        .zip(&direct)
-                        .map(|(&t, &p)| {
-                            let v: f64 = w.iter().map(|&(k, c)| c * tables[k].eval(t).0).sum();
-                            (v - p).abs() / (tol * (p.abs() + scale))
-                        })
-                        .fold(0.0, f64::max))
-                })
-                .collect::<Result<Vec<f64>>>()?
-                .into_iter()
-                .fold(0.0, f64::max);
+            let worst = panel_error(a, b, &tables, &ts, tol, scale, slice)?;
             if worst <= 1.0 || b - a <= MIN_WIDTH {
                 error = error.max(worst * tol);
                 done.push((a, tables));

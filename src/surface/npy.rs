@@ -62,25 +62,7 @@ pub fn parse(bytes: &[u8]) -> Result<HeightMap> {
             "Fortran-ordered array: save it in C order (numpy.ascontiguousarray)",
         ));
     }
-    let (rows, cols) = match shape.as_slice() {
-        [r, c] => (*r, *c),
-        [] => {
-            return Err(bad(
-                "a 0-D array (a single number); a height map must be 2-D",
-            ))
-        }
-        [n] => {
-            return Err(bad(format!(
-                "a 1-D array of shape ({n},); a height map must be 2-D"
-            )))
-        }
-        s => {
-            return Err(bad(format!(
-                "a {}-D array of shape {s:?}; a height map must be 2-D",
-                s.len()
-            )))
-        }
-    };
+    let (rows, cols) = two_dims(&shape)?;
     let n = rows
         .checked_mul(cols)
         .ok_or_else(|| bad("the shape overflows"))?;
@@ -103,9 +85,35 @@ pub fn parse(bytes: &[u8]) -> Result<HeightMap> {
             data.len() - want
         )));
     }
-    let heights: Vec<f64> = if size == 8 {
-        data[..n * 8]
-            .chunks_exact(8)
+    let heights = decode(&data[..want], size, big_endian);
+    HeightMap::new(rows, cols, heights)
+}
+
+/// `(rows, cols)` of a 2-D shape.
+///
+/// # Errors
+/// [`Error::Invalid`] named `topography` for any other rank.
+fn two_dims(shape: &[usize]) -> Result<(usize, usize)> {
+    match shape {
+        [r, c] => Ok((*r, *c)),
+        [] => Err(bad(
+            "a 0-D array (a single number); a height map must be 2-D",
+        )),
+        [n] => Err(bad(format!(
+            "a 1-D array of shape ({n},); a height map must be 2-D"
+        ))),
+        s => Err(bad(format!(
+            "a {}-D array of shape {s:?}; a height map must be 2-D",
+            s.len()
+        ))),
+    }
+}
+
+/// The values of `data` (float64 when `size` is 8, else float32; little-
+/// or big-endian) as `f64`.
+fn decode(data: &[u8], size: usize, big_endian: bool) -> Vec<f64> {
+    if size == 8 {
+        data.chunks_exact(8)
             .map(|b| {
                 let b: [u8; 8] = b.try_into().expect("chunk of 8");
                 if big_endian {
@@ -116,8 +124,7 @@ pub fn parse(bytes: &[u8]) -> Result<HeightMap> {
             })
             .collect()
     } else {
-        data[..n * 4]
-            .chunks_exact(4)
+        data.chunks_exact(4)
             .map(|b| {
                 let b: [u8; 4] = b.try_into().expect("chunk of 4");
                 f64::from(if big_endian {
@@ -127,8 +134,7 @@ pub fn parse(bytes: &[u8]) -> Result<HeightMap> {
                 })
             })
             .collect()
-    };
-    HeightMap::new(rows, cols, heights)
+    }
 }
 
 /// The text after `'key':` in the header dict.

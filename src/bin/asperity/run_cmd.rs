@@ -25,18 +25,22 @@ pub struct RunArgs {
     everything: bool,
 }
 
-pub fn run(args: &RunArgs) -> crate::CliResult {
-    let text = std::fs::read_to_string(&args.scene).map_err(|e| {
-        CliError::Usage(format!("scene: cannot read {}: {e}", args.scene.display()))
-    })?;
-    // A file that is not a scene (a map, a CSV, an empty file) is named.
-    let scene = Scene::from_toml(&text).map_err(|e| {
+/// The scene in the file `path`; a file that cannot be read, or that is
+/// not a scene (a map, a CSV, an empty file), is bad input naming it.
+pub fn read_scene(path: &Path) -> Result<Scene, CliError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Usage(format!("scene: cannot read {}: {e}", path.display())))?;
+    Scene::from_toml(&text).map_err(|e| {
         if e.is_bad_input() {
-            CliError::Usage(format!("{e} (scene {})", args.scene.display()))
+            CliError::Usage(format!("{e} (scene {})", path.display()))
         } else {
             CliError::from(e)
         }
-    })?;
+    })
+}
+
+pub fn run(args: &RunArgs) -> crate::CliResult {
+    let scene = read_scene(&args.scene)?;
     let mode = if args.everything {
         PlanMode::EverythingOn
     } else {

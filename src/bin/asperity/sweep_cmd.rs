@@ -2,7 +2,6 @@
 
 use crate::progress::Progress;
 use crate::CliError;
-use asperity::study::scene::Scene;
 use asperity::study::sweep::{
     merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary, DEFAULT_MAX_CPU_SECONDS,
 };
@@ -74,18 +73,8 @@ fn as_flag(e: asperity::Error) -> asperity::Error {
     }
 }
 
-pub fn run(args: &SweepArgs) -> crate::CliResult {
-    let text = std::fs::read_to_string(&args.scene).map_err(|e| {
-        CliError::Usage(format!("scene: cannot read {}: {e}", args.scene.display()))
-    })?;
-    // A file that is not a scene (a map, a CSV, an empty file) is named.
-    let scene = Scene::from_toml(&text).map_err(|e| {
-        if e.is_bad_input() {
-            CliError::Usage(format!("{e} (scene {})", args.scene.display()))
-        } else {
-            CliError::from(e)
-        }
-    })?;
+/// The sweep's design and this run's slice, from the flags.
+fn spec_of(args: &SweepArgs) -> Result<(SweepSpec, Option<Shard>), CliError> {
     let vary = args
         .vary
         .iter()
@@ -109,6 +98,12 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
             .transpose()
             .map_err(as_flag)?
     };
+    Ok((spec, shard))
+}
+
+pub fn run(args: &SweepArgs) -> crate::CliResult {
+    let scene = crate::run_cmd::read_scene(&args.scene)?;
+    let (spec, shard) = spec_of(args)?;
     if args.threads == Some(0) {
         return Err(CliError::Usage("--threads = 0: give at least 1".into()));
     }
