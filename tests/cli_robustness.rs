@@ -317,3 +317,57 @@ fn ctrl_c_stops_a_sweep_and_the_rerun_resumes() {
     let done = std::fs::read_to_string(dir.join("s").join("results.csv")).unwrap();
     assert_eq!(done.lines().count(), 201);
 }
+
+/// A negative infinity written after a numeric option as its own word
+/// (`--mu -inf`) is the option's value, refused naming the option, not
+/// clap's "unexpected argument '-i' found".
+#[test]
+fn minus_inf_after_a_numeric_option_names_the_option() {
+    let dir = tmp("minus-inf");
+    let cases: [(&[&str], &str); 8] = [
+        (&["sphere"], "--mu"),
+        (&["rough-sphere", "--d", "1"], "--mu"),
+        (&["law", "--law", "maugis"], "--lambda"),
+        (&["fn", "--dist", "gaussian", "--h", "0"], "--n"),
+        (&["heating"], "--voltage"),
+        (
+            &[
+                "shape",
+                "--profile",
+                "cone",
+                "--tan-angle",
+                "0.2",
+                "--w",
+                "0.05",
+            ],
+            "--estar",
+        ),
+        (
+            &[
+                "persson",
+                "--hurst",
+                "0.8",
+                "--q-roll",
+                "4e5",
+                "--q-short",
+                "4e8",
+                "--h-rms",
+                "1e-8",
+                "--estar",
+                "1e9",
+                "--pressures",
+                "1e6",
+            ],
+            "--q-long",
+        ),
+        (&["map"], "--tolerance"),
+    ];
+    for (base, flag) in cases {
+        let mut args: Vec<&str> = base.to_vec();
+        args.extend([flag, "-inf"]);
+        let (code, _, err) = run(&args, &dir);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(!err.contains("unexpected argument"), "{args:?}: {err}");
+        assert!(err.contains(flag), "{args:?}: {err}");
+    }
+}

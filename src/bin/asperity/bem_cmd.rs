@@ -16,24 +16,24 @@ pub struct BemArgs {
     /// `asperity surface` (heights in the file's unit, see --scale).
     map: PathBuf,
     /// Pixel size (m), the same along x and y.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pixel_size: f64,
     /// Factor from the file's height unit to metres.
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     scale: f64,
     /// Contact modulus E* (Pa).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     estar: f64,
     /// Comma-separated mean pressures (Pa): load control.
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         conflicts_with = "gaps",
         required_unless_present = "gaps"
     )]
     pressures: Option<String>,
     /// Comma-separated mean gaps (m): mean-gap control.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     gaps: Option<String>,
     /// Treat the map as periodic (otherwise padded to twice its size, a
     /// non-periodic half-space; the mean plane is removed either way, only
@@ -41,26 +41,26 @@ pub struct BemArgs {
     #[arg(long)]
     periodic: bool,
     /// Work of adhesion w (J/m^2) of the exponential interaction -w exp(-g/rho).
-    #[arg(long, allow_negative_numbers = true, requires = "adhesion_range")]
+    #[arg(long, allow_hyphen_values = true, requires = "adhesion_range")]
     adhesion_energy: Option<f64>,
     /// Range rho (m) of the exponential interaction.
-    #[arg(long, allow_negative_numbers = true, requires = "adhesion_energy")]
+    #[arg(long, allow_hyphen_values = true, requires = "adhesion_energy")]
     adhesion_range: Option<f64>,
     /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap.
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     gamma: f64,
     /// Resistivity (Ohm m, both bodies): adds the contact resistance of the
     /// clusters (Holm/Maxwell spots + Greenwood interaction) and GW's.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     resistivity: Option<f64>,
     /// Residual at which the solver stops (dimensionless), in [1e-15, 1e-2].
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1e-10)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-10)]
     tolerance: f64,
     /// Most iterations per solve, at least 1.
-    #[arg(long, default_value_t = 10_000)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 10_000)]
     max_iterations: usize,
     /// Memory the solver may use (MiB); larger maps are refused.
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1024.0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1024.0)]
     memory_limit_mib: f64,
     /// Write contact.npy/pressure.npy/gap.npy per state, bem.json and charts here.
     #[arg(long)]

@@ -11,7 +11,7 @@ pub struct FnArgs {
     #[arg(long)]
     dist: String,
     /// Order n in [0, 100] of F_n(h) = int_h^inf (s-h)^n phi(s) ds.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     n: f64,
     /// Comma-separated standardised separations h, e.g. -1,0,2.5.
     #[arg(long, allow_hyphen_values = true)]

@@ -14,7 +14,7 @@ pub struct LawArgs {
     law: String,
     /// Maugis parameter lambda (> 0) for laws that depend on it (maugis,
     /// cos); default 1.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     lambda: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]

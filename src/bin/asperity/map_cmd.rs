@@ -9,7 +9,7 @@ use std::path::PathBuf;
 #[derive(Args, Debug)]
 pub struct MapArgs {
     /// Relative load error a law may have, in (0, 1).
-    #[arg(long, default_value_t = 0.05, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.05, allow_hyphen_values = true)]
     tolerance: f64,
     /// Directory for map.svg and map.csv.
     #[arg(long, default_value = "asperity-out")]

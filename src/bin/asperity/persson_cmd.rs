@@ -9,40 +9,40 @@ use clap::Args;
 #[derive(Args, Debug)]
 pub struct PerssonArgs {
     /// Hurst exponent H, in (0, 1].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     hurst: f64,
     /// Smallest wavevector q_l (rad/m): the spectrum is zero below.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     q_long: f64,
     /// Roll-off wavevector q_r >= q_l (rad/m): flat between q_l and q_r.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     q_roll: f64,
     /// Largest wavevector q_s > q_r (rad/m): C ~ q^-2(1+H) up to it.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     q_short: f64,
     /// RMS height (m), to normalise the spectrum (or --slope-rms).
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         conflicts_with = "slope_rms",
         required_unless_present = "slope_rms"
     )]
     h_rms: Option<f64>,
     /// RMS gradient g = sqrt(<|grad h|^2>), to normalise the spectrum.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     slope_rms: Option<f64>,
     /// Contact modulus E* (Pa).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     estar: f64,
     /// Comma-separated mean pressures (Pa), each > 0.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pressures: String,
     /// Yang–Persson factor gamma in [0, 1] of the mean separation (1: all
     /// the elastic energy of the contact regions; Yang & Persson found 0.4-0.45).
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     gamma: f64,
     /// Work of adhesion w (J/m^2): adds the Persson–Tosatti number U_full/w.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     adhesion_energy: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]

@@ -12,19 +12,19 @@ use std::path::PathBuf;
 #[derive(Args, Debug)]
 pub struct PunchArgs {
     /// Contact modulus E* (Pa).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     estar: f64,
     /// Work of adhesion w (J/m^2).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     w: f64,
     /// Radius of curvature R of the paraboloid (m).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     radius: f64,
     /// Dimensionless roughness amplitude A: surface r^2/(2R) + l A (1 - cos(2 pi r/l)).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     amplitude: f64,
     /// Roughness wavelength l (m), smaller than --radius.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     wavelength: f64,
     /// Comma-separated contact radii (m) for the exact curve and the envelopes.
     #[arg(long, allow_hyphen_values = true)]
@@ -47,7 +47,7 @@ pub struct PunchFitArgs {
     #[arg(value_name = "DATA.csv")]
     data: PathBuf,
     /// Radius of curvature R of the punch (m).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     radius: f64,
     /// Print one JSON object instead of a table.
     #[arg(long)]

@@ -10,7 +10,7 @@ use std::path::PathBuf;
 pub struct RoughSphereArgs {
     /// mu = (8/3) eta sigma sqrt(2 R beta) (> 0): summit density eta, summit-height
     /// standard deviation sigma, sphere radius R, summit radius beta.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mu: f64,
     /// Comma-separated separations d of the mean planes at the centre, in units of sigma.
     #[arg(long = "d", allow_hyphen_values = true)]
@@ -19,7 +19,7 @@ pub struct RoughSphereArgs {
     #[arg(long, allow_hyphen_values = true)]
     rho: Option<String>,
     /// Relative error asked of the load (default 1e-6), in [1e-10, 1e-2].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     tolerance: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]

@@ -11,22 +11,22 @@ pub struct ShapeArgs {
     #[arg(long)]
     profile: String,
     /// Sphere radius (paraboloid, sphere) or punch radius (flat), m.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     radius: Option<f64>,
     /// tan(beta) of the cone f(r) = r tan(beta).
-    #[arg(long = "tan-angle", allow_negative_numbers = true)]
+    #[arg(long = "tan-angle", allow_hyphen_values = true)]
     tan_angle: Option<f64>,
     /// Exponent n of the power law f(r) = A r^n (JKR needs n > 1/2).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     exponent: Option<f64>,
     /// Coefficient A of the power law f(r) = A r^n, m^(1-n).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     coefficient: Option<f64>,
     /// Contact modulus E*, Pa.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     estar: f64,
     /// Work of adhesion w, J/m^2.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     w: f64,
     /// Contact radii (m, comma-separated) at which to print the curve. For
     /// the flat punch, radii below the punch radius are the receding-crack
@@ -35,7 +35,7 @@ pub struct ShapeArgs {
     radii: Option<String>,
     /// Dugdale stress sigma0 (Pa): Maugis–Dugdale adhesion (range w/sigma0)
     /// instead of JKR; not for the flat punch.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     stress: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]

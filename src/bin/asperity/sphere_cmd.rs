@@ -10,15 +10,15 @@ use std::path::PathBuf;
 #[derive(Args, Debug)]
 pub struct SphereArgs {
     /// Tabor parameter mu = (R w^2/(E*^2 z0^3))^(1/3), in [0.005, 100].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mu: f64,
     /// Size ratio rho = R/z0 (>= 10, and >= 100 mu when mu > 10) for a true
     /// sphere; paraboloid if absent.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     rho: Option<f64>,
     /// Mesh resolution multiplier (default 1), in [0.5, 64]; runs estimated
     /// above 120 s or 2 GiB are refused with the estimate.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     resolution: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]

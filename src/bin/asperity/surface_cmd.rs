@@ -17,20 +17,20 @@ pub struct SurfaceArgs {
     /// matrix (`.txt`, `.csv`, `.asc`; whitespace or comma separated).
     file: PathBuf,
     /// Pixel size (m), the same along x and y.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pixel_size: f64,
     /// Factor from the file's height unit to metres (e.g. 1e-9 for nm).
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     scale: f64,
     /// Treat the map as periodic: remove only the mean, wrap differences and
     /// summit neighbours around every edge.
     #[arg(long)]
     periodic: bool,
     /// Contact modulus E* (Pa), with --hardness for the plasticity index.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     estar: Option<f64>,
     /// Hardness H (Pa), with --estar for the plasticity index.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     hardness: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]

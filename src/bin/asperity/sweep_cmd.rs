@@ -21,10 +21,10 @@ pub struct SweepArgs {
     #[arg(long)]
     log: bool,
     /// Latin-hypercube sample of this many points instead of a grid.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     samples: Option<usize>,
     /// Base seed (Latin-hypercube draws and per-point seeds).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 0)]
     seed: u64,
     /// Run only slice K of N (`K/N`), e.g. for a Slurm job array.
     #[arg(long, conflicts_with = "shard_from_env")]
@@ -35,12 +35,12 @@ pub struct SweepArgs {
     #[arg(long)]
     shard_from_env: bool,
     /// Worker threads (default: one per core).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     threads: Option<usize>,
     /// Most CPU time (s) the sweep may take, estimated from its first
     /// point's time (which runs alone); beyond it the sweep stops after
     /// that point with the estimate. Default one CPU-day.
-    #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_MAX_CPU_SECONDS)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = DEFAULT_MAX_CPU_SECONDS)]
     max_cpu_seconds: f64,
     /// Results directory (results.csv, sweep.json).
     #[arg(long, default_value = "sweep-out")]
