@@ -83,7 +83,7 @@ fn jg_jump(e_over_y: f64, nu: f64) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    #![proptest_config(crate::common::proptest_config(400))]
 
     #[test]
     fn continuous_and_increasing_inside_each_piece(

@@ -2,15 +2,13 @@
 //! Greenwood–Williamson integrator, against an independent mpmath
 //! quadrature over heights of the cone's closed-form JKR branch
 //! (tests/data/shaped_gw.py, 30 digits), at 1e-8 relative.
-#[allow(dead_code)]
-mod common;
 
+use crate::common::{local, num};
 use asperity::axisym::Profile;
 use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::Shaped;
 use asperity::loading::{History, LoadingModel, Observables};
-use common::{local, num};
 use std::sync::Arc;
 
 #[test]

@@ -74,7 +74,7 @@ fn interferences(law: &dyn AsperityLaw, scale: f64) -> Vec<f64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(crate::common::proptest_config(48))]
 
     #[test]
     fn finite_and_ordered(s in setup()) {

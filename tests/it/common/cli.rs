@@ -1,6 +1,5 @@
-//! Process helpers of the CLI tests that run the built `asperity` (in a
-//! test binary by `#[path = "common/cli.rs"] mod cli;`). Each binary uses
-//! some of them.
+//! Process helpers of the tests that run the built `asperity`
+//! (`use crate::common::cli;`). Each module uses some of them.
 #![allow(dead_code)]
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -10,13 +9,15 @@ pub fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_asperity"))
 }
 
-/// A fresh temporary directory for test `name` of this test binary.
+/// A fresh temporary directory for test `name` of the calling module: the
+/// caller's file name keeps two modules' `tmp("spots")` apart in the one
+/// test binary.
+#[track_caller]
 pub fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "asperity-{}-{name}-{}",
-        env!("CARGO_CRATE_NAME"),
-        std::process::id()
-    ));
+    let module = std::path::Path::new(std::panic::Location::caller().file())
+        .file_stem()
+        .map_or_else(|| "it".into(), |s| s.to_string_lossy().into_owned());
+    let d = std::env::temp_dir().join(format!("asperity-{module}-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d

@@ -348,7 +348,7 @@ fn every_field_of_every_example_scene_survives_every_mutation() {
             .min(POINTS);
         program.insert("points".into(), Value::Integer(points));
         // The full solver is not run for every mutated Tabor parameter: the
-        // model error against it has its own tests (tests/model_error.rs).
+        // model error against it has its own tests (tests/it/model_error.rs).
         if let Some(t) = base.as_table_mut() {
             let acc = t
                 .entry("accuracy")
@@ -357,7 +357,7 @@ fn every_field_of_every_example_scene_survives_every_mutation() {
                 a.insert("model_error".into(), Value::Boolean(false));
             }
             // Nor are the pull-off populations drawn (seconds each in a
-            // debug build; tests/pull_off_population.rs tests them).
+            // debug build; tests/it/pull_off_population.rs tests them).
             let outputs = t
                 .entry("outputs")
                 .or_insert_with(|| Value::Table(Default::default()));

@@ -2,8 +2,7 @@
 //! bound is refused before it starts, naming the input and giving the
 //! estimate; long work says so on stderr. Each case failed on the code
 //! before its fix (ran for minutes, or failed after many seconds).
-#[path = "common/cli.rs"]
-mod cli;
+use crate::common::cli;
 use cli::{bin, example, run, run_within, tmp};
 
 /// A CSV of `n` spots of radius 1 um on a 10 um grid (no overlaps).

@@ -1,9 +1,7 @@
 //! `asperity spots` and `asperity heating`: JSON contracts against the
 //! mpmath reference, and bad input (exit 2 naming the field).
-#[allow(dead_code)] // `shared` is not used here.
-mod common;
 
-use common::{local, num, rel};
+use crate::common::{local, num, rel};
 use std::process::Command;
 
 fn run(args: &[&str]) -> (i32, String, String) {

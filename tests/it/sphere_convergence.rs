@@ -8,8 +8,7 @@ use asperity::sphere::{
 };
 use asperity::Error;
 
-#[allow(dead_code)] // not every helper is used here
-mod common;
+use crate::common;
 
 struct Reference {
     pull_off: f64,
@@ -146,8 +145,11 @@ fn cost_estimate_tracks_the_mesh() {
 /// the zero-load radius (1.812754) within 1e-4 ride along.
 #[test]
 fn mu_ten_jump_out_matches_converged() {
-    let v: serde_json::Value =
-        serde_json::from_str(include_str!("data/sphere_converged.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(include_str!(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/sphere_converged.json"
+    )))
+    .unwrap();
     let case = v["cases"]
         .as_array()
         .unwrap()

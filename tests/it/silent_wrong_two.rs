@@ -2,8 +2,7 @@
 //! that name the key the user wrote, plastic fits beyond their range,
 //! extreme shaped profiles, the calibration cache, leftovers and strict
 //! files. Each case failed on the code before its fix.
-#[path = "common/cli.rs"]
-mod cli;
+use crate::common::cli;
 use cli::{bin, example, json, run, tmp};
 use std::path::{Path, PathBuf};
 

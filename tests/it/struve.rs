@@ -4,9 +4,7 @@
 
 use asperity::special::struve::{struve_h0, struve_h0_h1, struve_h1};
 
-#[allow(dead_code)] // not every helper is used by every test file
-mod common;
-use common::{local, num, rel, shared};
+use crate::common::{local, num, rel, shared};
 
 /// The promise: `|err| <= 1e-14 max(|H|, 1e-3)` for 0 < x <= 1e6 (relative
 /// 1e-14 wherever |H| > 1e-3, absolute 1e-17 near the zeros of H0).

@@ -1,7 +1,12 @@
-//! Reference-value helpers shared by the integration tests that read
-//! mpmath tables (`mod common;`).
+//! Helpers shared by the modules of the integration-test binary
+//! (`tests/it/main.rs`): reference values read from mpmath tables, the
+//! proptest configuration, and (`cli`) running the built program.
 
+use proptest::test_runner::{Config as ProptestConfig, FileFailurePersistence};
 use serde_json::Value;
+
+/// Running the built `asperity` in a temporary directory.
+pub mod cli;
 
 /// `tests/data/NAME`, parsed as JSON.
 pub fn local(name: &str) -> Value {
@@ -52,3 +57,19 @@ pub fn sphere_converged(mu: f64, rho: Option<f64>) -> Value {
 
 /// A second, independent GW integrator of contact-resistance sums.
 pub mod gw_spots;
+
+/// The proptest configuration of these tests: `cases` cases, the failures
+/// persisted beside the module's source as `<module>.proptest-regressions`
+/// (`tests/it/heights.proptest-regressions`), where they were kept before
+/// the tests became one binary. Proptest's default would now look for
+/// `tests/proptest-regressions/<module>.txt`, since `tests/it/` holds a
+/// `main.rs`. `PROPTEST_DISABLE_FAILURE_PERSISTENCE` still turns it off.
+pub fn proptest_config(cases: u32) -> ProptestConfig {
+    let mut config = ProptestConfig::with_cases(cases);
+    if config.failure_persistence.is_some() {
+        config.failure_persistence = Some(Box::new(FileFailurePersistence::WithSource(
+            "proptest-regressions",
+        )));
+    }
+    config
+}

@@ -2,8 +2,7 @@
 //! was wrong or meaningless without a word; now the value is right, or it
 //! comes with a warning, or the input is refused (exit 2) naming the flag or
 //! field and its range.
-#[path = "common/cli.rs"]
-mod cli;
+use crate::common::cli;
 use cli::{bin, example, json, run, tmp};
 use std::path::Path;
 

@@ -2,10 +2,7 @@
 //! them) against the numpy reference, flags, outputs, and bad files (exit
 //! 2, one stderr line naming the file and the problem).
 
-#[allow(dead_code)] // not every helper is used here
-mod common;
-
-use common::{local, num, rel};
+use crate::common::{local, num, rel};
 use serde_json::Value;
 use std::process::Command;
 

@@ -8,8 +8,7 @@
 use asperity::sphere::{Shape, SolverOptions, SphereFacts, SphereProblem};
 use std::sync::OnceLock;
 
-#[allow(dead_code)] // not every helper is used here
-mod common;
+use crate::common;
 
 const JKR_PULL_OFF: f64 = -1.5;
 const JKR_JUMP_OUT_LOAD: f64 = -5.0 / 6.0;

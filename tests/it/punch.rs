@@ -8,9 +8,7 @@ use proptest::prelude::*;
 use serde_json::Value;
 use std::f64::consts::PI;
 
-#[allow(dead_code)] // not every helper is used by every test file
-mod common;
-use common::{local, num, rel, shared};
+use crate::common::{local, num, rel, shared};
 
 fn punch_of(c: &Value) -> WavyPunch {
     let f = |k: &str| num(&c[k]);
@@ -119,7 +117,7 @@ fn arb_punch() -> impl Strategy<Value = WavyPunch> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(crate::common::proptest_config(48))]
 
     /// Invariants over the parameter box: every path state is a stable equilibrium at its
     /// depth; radii grow with depth; unloading keeps at least the loading radius; the

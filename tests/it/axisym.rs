@@ -3,13 +3,11 @@
 //! tanh-sinh quadrature in r, extrema by numerical differentiation), the
 //! paraboloid against today's `law::Jkr`, the exact sphere's paraboloid
 //! limit, and the cone and flat-punch closed forms.
-#[allow(dead_code)]
-mod common;
 
+use crate::common::{local, num};
 use asperity::axisym::{AxisymJkr, Profile};
 use asperity::law::jkr::{interference_bar, load_bar};
 use asperity::law::{AsperityLaw, Control, Jkr};
-use common::{local, num};
 use proptest::prelude::*;
 use serde_json::Value;
 use std::f64::consts::PI;
@@ -294,7 +292,7 @@ fn bad_parameters_are_refused_by_name() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(crate::common::proptest_config(64))]
     /// Over the power-law box: load-controlled pull-off is more tensile and
     /// at a larger radius than the jump-out, both are stationary points,
     /// and the attached branch inverts delta(a).

@@ -1,16 +1,14 @@
 //! src/electrical against independent mpmath values (tests/data/electrical.py),
 //! Barber's identity, the Wexler limits and the exact many-spot solution.
-#[allow(dead_code)] // not every helper is used by every test file
-mod common;
 
+use crate::common::gw_spots::GwSpots;
+use crate::common::{local, num, rel, shared};
 use asperity::electrical::greenwood_mean_field;
 use asperity::electrical::heating::Heating;
 use asperity::electrical::{Conductor, Interaction, SpotResistance, Spots, Spreading, C_SQ};
 use asperity::heights::Gaussian;
 use asperity::law::{Branch, LawKind};
 use asperity::material::AsperityContact;
-use common::gw_spots::GwSpots;
-use common::{local, num, rel, shared};
 use proptest::prelude::*;
 use serde_json::Value;
 use std::sync::Arc;
@@ -278,7 +276,7 @@ fn stiffness(gw: &GwSpots, e_star: f64, m: &SpotResistance, sigma: f64, h: f64) 
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(200))]
+    #![proptest_config(crate::common::proptest_config(200))]
 
     /// Barber (2003): for Hertz summits and independent Maxwell spots
     /// (same metal) G = (dP/dd)/(E* rho), over the whole parameter box; the

@@ -31,12 +31,12 @@ fn every_example_scene_runs_and_matches_library_calls() {
     for name in names {
         let scene = example(&name);
         if scene.surface.topography.is_some() {
-            // A measured map: tests/surface_scene.rs checks it against a
+            // A measured map: tests/it/surface_scene.rs checks it against a
             // direct sum over its summits.
             continue;
         }
         if scene.sphere.is_some() {
-            // A rough sphere: tests/sphere_scene.rs checks it against the
+            // A rough sphere: tests/it/sphere_scene.rs checks it against the
             // library's RoughSphere (to 1e-9).
             continue;
         }
@@ -153,7 +153,7 @@ fn planned_runs_do_less_work_and_agree_within_tolerance() {
         let mut scene = example(name);
         // The planner's choice by one summit's error: with the surface-level
         // model error on, `auto` takes the full-solver law on mems-gold,
-        // more work for a far more accurate pull-off (tests/model_error.rs).
+        // more work for a far more accurate pull-off (tests/it/model_error.rs).
         scene.accuracy.model_error = false;
         // Same separations for both runs.
         if scene.program.start_separation.is_none() {

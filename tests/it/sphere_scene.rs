@@ -278,7 +278,7 @@ fn plan_prints_the_sphere_decision() {
 
 /// Heavy load with a stiff rough layer (Greenwood–Tripp mu = 10): the
 /// radius holding 95 % of the load tends to Hertz's at the same load as the
-/// approach grows (as the library's limit, tests/rough_sphere.rs), and the
+/// approach grows (as the library's limit, tests/it/rough_sphere.rs), and the
 /// approach to Hertz's `a^2/R`. Measured at remote separations -10, -40,
 /// -200 nm (central gap -1.7 sigma at the last): radius off by 4.2 % at
 /// -40 nm and 1.07 % at -200 nm, approach by 0.36 %.

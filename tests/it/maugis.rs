@@ -4,7 +4,10 @@ use asperity::law::{jkr, AsperityLaw, Branch, Control, Maugis};
 use serde_json::Value;
 
 fn reference() -> Value {
-    let text = include_str!("data/maugis_pull_off.json");
+    let text = include_str!(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/maugis_pull_off.json"
+    ));
     serde_json::from_str(text).expect("maugis_pull_off.json")
 }
 

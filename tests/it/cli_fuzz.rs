@@ -12,8 +12,7 @@
 //! Exit 1 (a computation failure) on user input fails too. All failures are
 //! listed together. About 1,000 processes, a few seconds of CPU in the
 //! test profile; cases run on two threads.
-#[path = "common/cli.rs"]
-mod cli;
+use crate::common::cli;
 use cli::{bin, run_within, tmp, Outcome};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -511,7 +510,7 @@ fn cases(dir: &Path) -> Vec<Case> {
             strings(&["merge", &path, "--out", "merged"]),
         ];
         // (Outputs that cannot be written exit 1 by design, naming the
-        // path: tests/cli_robustness.rs.)
+        // path: tests/it/cli_robustness.rs.)
         for args in lines {
             out.push(Case {
                 args,

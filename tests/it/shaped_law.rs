@@ -16,7 +16,7 @@ fn profile(kind: u8, p: f64, n: f64) -> Profile {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(crate::common::proptest_config(24))]
     #[test]
     fn tables_match_the_exact_law(
         kind in 0u8..4, p in 0.05f64..2.0, n in 0.8f64..4.0, le in 8.0f64..11.0,

@@ -3,13 +3,10 @@
 //! against each other, and the Nayak closed forms against mpmath quadrature
 //! of Rice's integrals (`tests/data/nayak_summits.py`).
 
-#[allow(dead_code)] // not every helper is used here
-mod common;
-
+use crate::common::{local, num, rel};
 use asperity::surface::{
     npy, text, Characterisation, HeightMap, Moments, NayakPrediction, Topography,
 };
-use common::{local, num, rel};
 use serde_json::Value;
 
 fn read(name: &str) -> Vec<u8> {

@@ -2,15 +2,12 @@
 //! issues, tested from outside (`asperity run SCENE --json`) with the keys
 //! exactly as the issues write them, and against direct library calls.
 
-#[allow(dead_code)] // not every helper is used by every test file
-mod common;
-
+use crate::common::gw_spots::GwSpots;
 use asperity::electrical::{Interaction, SpotResistance, Spreading};
 use asperity::heights::Gaussian;
 use asperity::law::{Branch, Jkr};
 use asperity::named::Named;
 use asperity::study::{Plan, PlanMode, Scene, Summary};
-use common::gw_spots::GwSpots;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -1,6 +1,6 @@
 //! Maugis–Dugdale for any profile (`axisym::AxisymMd`, Barthel's
 //! cohesive-zone form): the paraboloid reproduces `law::Maugis` (Maugis
-//! 1992, itself checked against mpmath in tests/maugis.rs) to 1e-10, and
+//! 1992, itself checked against mpmath in tests/it/maugis.rs) to 1e-10, and
 //! the cone tends to JKR as the range shrinks and to the rigid (Derjaguin)
 //! force `-pi w h0/tan^2 beta` as it grows.
 use asperity::axisym::{AxisymJkr, AxisymMd, Profile};
@@ -186,7 +186,7 @@ proptest::proptest! {
     // profile's own JKR jump-out so every case has its instabilities inside
     // the scan, and the sphere keeps w/(E* R) = 1e-4 and a <= 0.4 R (its zone must end
     // before the equator).
-    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(24))]
+    #![proptest_config(crate::common::proptest_config(24))]
     /// Over profiles and ranges: the load-controlled pull-off is at least as
     /// tensile as the snap and as every stable state; the stable branch
     /// inverts `delta(a)`; the zone lies outside the contact; the paraboloid's

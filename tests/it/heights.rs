@@ -9,9 +9,7 @@ use asperity::heights::{
 use asperity::named::Named;
 use proptest::prelude::*;
 
-#[allow(dead_code)] // not every helper is used by every test file
-mod common;
-use common::{local, num, rel, shared};
+use crate::common::{local, num, rel, shared};
 
 #[test]
 fn exponential_matches_mpmath_and_shared_reference() {
@@ -379,7 +377,7 @@ fn all_dists() -> Vec<Box<dyn HeightDistribution>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(crate::common::proptest_config(64))]
 
     /// F_n >= 0 and non-increasing in h (strictly where positive, for n > 0).
     #[test]

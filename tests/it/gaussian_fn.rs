@@ -6,9 +6,7 @@
 use asperity::heights::{Gaussian, HeightDistribution};
 use asperity::special::{gamma, gaussian_fn, normal};
 
-#[allow(dead_code)] // not every helper is used by every test file
-mod common;
-use common::{local, num, rel, shared};
+use crate::common::{local, num, rel, shared};
 
 /// The promise: relative error <= 1e-13 on [-5, 10], <= 1e-10 to h = 37.
 /// Measured (this implementation): ~1e-15 and ~1e-14; the asserted bounds

@@ -1,0 +1,83 @@
+//! The integration tests, one binary (`cargo test --test it`): one module
+//! per subject, each formerly its own test binary. Linking one binary
+//! instead of 68 is most of what a fresh `cargo test` saved (README, "Two
+//! commands"). Test names are `module::test`, so `cargo test --test it
+//! cli_sweep::` runs one module. Tests that start the program use
+//! `env!("CARGO_BIN_EXE_asperity")`; data paths are built from
+//! `env!("CARGO_MANIFEST_DIR")` (`tests/data/`).
+//!
+//! No test sets process-wide state (environment variables, the global rayon
+//! pool, the working directory): subprocesses get their environment through
+//! `Command::env`, thread counts through local `rayon::ThreadPool`s, so every
+//! module shares this one process safely.
+
+mod common;
+
+mod axisym;
+mod bem;
+mod chart_rules;
+mod cli_bem;
+mod cli_electrical;
+mod cli_fn;
+mod cli_fuzz;
+mod cli_help;
+mod cli_law;
+mod cli_punch;
+mod cli_robustness;
+mod cli_rough_sphere;
+mod cli_run;
+mod cli_shape;
+mod cli_sphere;
+mod cli_surface;
+mod cli_sweep;
+mod cos_vs_maugis;
+mod electrical;
+mod fuller_tabor;
+mod gaussian_fn;
+mod golden;
+mod gw_closed_forms;
+mod gw_far_tail;
+mod gw_md_accuracy;
+mod gw_parallel;
+mod heights;
+mod hysteresis_energy;
+mod law_properties;
+mod limits;
+mod maugis;
+mod maugis_gw;
+mod model_error;
+mod observables;
+mod persson;
+mod plastic;
+mod plastic_history;
+mod plastic_properties;
+mod plastic_retraction_split;
+mod pull_off_population;
+mod pull_off_start;
+mod pull_off_window;
+mod punch;
+mod punch_asymptotics;
+mod punch_fit;
+mod quantities;
+mod readme_lines;
+mod retraction_minimum;
+mod rough_sphere;
+mod rough_sphere_si;
+mod scene_features;
+mod scene_fuzz;
+mod scenes;
+mod shaped_gw;
+mod shaped_law;
+mod shaped_md;
+mod silent_wrong;
+mod silent_wrong_two;
+mod simd_widths;
+mod sphere_calibration;
+mod sphere_convergence;
+mod sphere_large_mu;
+mod sphere_scene;
+mod struve;
+mod surface_reference;
+mod surface_scene;
+mod surface_synthetic;
+mod text_output;
