@@ -4,7 +4,7 @@
 # --path .` into a temporary root whose bin/ comes first on the PATH, then
 # every other line as written (`cargo test` excepted: CI runs it). Each line
 # must exit 0 and `git status` must be clean afterwards (outputs only in
-# ignored directories). tests/readme_lines.rs checks the same within
+# ignored directories). tests/it/readme_lines.rs checks the same within
 # `cargo test`, with the test build's binary instead of the installed one.
 # Usage: bash tools/readme_lines.sh   (from anywhere; CI runs it)
 set -euo pipefail

@@ -1,7 +1,7 @@
 """Bad input raises ValueError with the command line's message in Python's
 words (the parameter where the command line names its flag; scene key
 paths as they are); other failures RuntimeError. A sample of the scene
-fuzz's mutations (tests/scene_fuzz.rs: zero, negative, nan, inf, wrong
+fuzz's mutations (tests/it/scene_fuzz.rs: zero, negative, nan, inf, wrong
 type, missing, duplicated) on the default scene."""
 
 import re

@@ -260,7 +260,7 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
             mean_summit_height_m: gw.mean_summit_height,
         },
         numerical_error: format!(
-            "Persson: area in closed form (erf, ~1e-15); mean gap by adaptive Gauss-Kronrod to {QUAD_RTOL:e} relative (largest estimate here {worst_quad:.1e}); both checked against mpmath to 1e-9 in tests/persson.rs. GW: closed-form F_n, ~1e-15"
+            "Persson: area in closed form (erf, ~1e-15); mean gap by adaptive Gauss-Kronrod to {QUAD_RTOL:e} relative (largest estimate here {worst_quad:.1e}); both checked against mpmath to 1e-9 in tests/it/persson.rs. GW: closed-form F_n, ~1e-15"
         ),
         model_error: format!(
             "Persson (gamma = {}): against exact boundary-element solutions the area is typically underestimated by 10-25 % at small area fractions and the gap is sensitive to gamma (Yang & Persson 2008 recommend about 0.4-0.45); GW neglects elastic interaction between asperities and their coalescence, so its area and gap can be off by tens of per cent on self-affine surfaces (compare with `asperity bem`)",

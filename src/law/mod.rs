@@ -377,7 +377,7 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     /// then bound the load between two separations from its values at
     /// them. Default `None` (shape not known: every separation is
     /// evaluated). Checked for each law that answers by
-    /// `tests/retraction_minimum.rs` on dense grids.
+    /// `tests/it/retraction_minimum.rs` on dense grids.
     fn retraction_minimum(&self, delta_max: f64) -> Option<RetractionMinimum> {
         let _ = delta_max;
         None

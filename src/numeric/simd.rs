@@ -6,7 +6,7 @@
 //! run's warnings, [`ignored_request`]), so that a
 //! machine with AVX-512 can measure the AVX2 code and check that every
 //! width gives the same bits (the passes never reorder additions across
-//! lanes: `tests/simd_widths.rs`).
+//! lanes: `tests/it/simd_widths.rs`).
 
 use std::sync::OnceLock;
 

@@ -12,7 +12,7 @@
 //! - unloading (lower): `h_-(a) = h_M(a) - pi A sqrt(l a)`, `P_-(a) = P_M(a) - 2 pi E* A sqrt(l a^3)`.
 //!
 //! The exact folds approach them at the rate `h_fold - h_+/- = A l + O(l^(3/2))`,
-//! `P_fold - P_+/- = O(l^(3/2))` (tests/punch_envelopes.rs measures both).
+//! `P_fold - P_+/- = O(l^(3/2))` (`tests/it/punch_asymptotics.rs` measures both).
 
 use super::{PunchState, WavyPunch};
 use crate::numeric::roots::brent;

@@ -11,7 +11,7 @@
 //! `A sqrt(l) = theta_3/(2 pi theta_1)`. Standard errors: `s^2 = RSS/(n - 3)`,
 //! `Cov(theta) = s^2 (X^T X)^-1`, carried to the physical parameters by the Jacobian of that
 //! map (delta method); their coverage is checked over noisy synthetic sets in
-//! `tests/punch_fit.rs`.
+//! `tests/it/punch_fit.rs`.
 
 use crate::error::{positive, Error, Result};
 use nalgebra::{DMatrix, DVector, Matrix3};

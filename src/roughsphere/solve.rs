@@ -17,7 +17,7 @@
 //! `R2 = (8 R1(h/4) - R1(h/2))/7`. The value is `R2` of the three finest
 //! levels and its error estimate half the change of `R2` from the three
 //! levels before (so at least four levels; against the independent
-//! reference of `tests/rough_sphere.rs` the actual error was at most 0.4 of
+//! reference of `tests/it/rough_sphere.rs` the actual error was at most 0.4 of
 //! this estimate in every case of mu in [1e-3, 100], d in [-1, 2]): three
 //! levels cannot tell a
 //! pre-asymptotic mesh from a converged one (at mu = 100, d = 0.5 on

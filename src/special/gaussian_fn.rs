@@ -2,7 +2,7 @@
 //! `F_n(h) = int_h^inf (s-h)^n phi(s) ds`, for `n = 0, 1/2, 1, 3/2, 2, 5/2`.
 //!
 //! Method (relative error <= ~1e-15 for `h` in `[-5, 10]`, ~1e-14 out to
-//! `h = 37`; see `tests/gaussian_fn.rs`):
+//! `h = 37`; see `tests/it/gaussian_fn.rs`):
 //!
 //! - `h >= 0`: `F_n = phi(h) R_n(h)` with the scaled integral
 //!   `R_n(h) = int_0^inf t^n exp(-h t - t^2/2) dt

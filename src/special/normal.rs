@@ -232,7 +232,7 @@ pub fn inverse_tail(q: f64) -> f64 {
     let mut s = -ppnd16(q);
     // Beyond |s| = 6.4 (q < 1e-10 either side) a relative error e of s
     // moves the tail by ~s^2 e: one Halley step on the accurate tail keeps
-    // Q(s) = q to ~1e-15 out to q = 1e-300 (tests/heights.rs round trips).
+    // Q(s) = q to ~1e-15 out to q = 1e-300 (tests/it/heights.rs round trips).
     if !(q.min(1.0 - q) >= 1e-10) {
         let d = pdf(s);
         if d > 0.0 {
@@ -260,7 +260,7 @@ pub fn quantile(p: f64) -> f64 {
 /// 1.6 for `r <= 5`, by 5 beyond), "accurate to about 1 part in 10^16"
 /// down to `p = 1e-300` (Wichura, Appl. Statist. 37 (1988) 477-484; the
 /// coefficients as in CPython's `statistics.NormalDist.inv_cdf`). Measured
-/// against mpmath: `tests/gaussian_fn.rs` `normal_quantile_matches_mpmath`.
+/// against mpmath: `tests/it/gaussian_fn.rs` `normal_quantile_matches_mpmath`.
 /// About 15 ns (one `ln`, one `sqrt`, one division), a tenth of the
 /// Halley-polished Acklam guess it replaced in the Monte Carlo draws.
 #[inline]

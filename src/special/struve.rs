@@ -11,7 +11,7 @@
 //!   series are summed until their terms fall below 1e-17 of the result, which they do
 //!   long before their smallest term (`~ e^-x` and `~ e^-2x`).
 //!
-//! Measured against mpmath (`tests/struve.rs`, 0 <= x <= 1e6): absolute error below
+//! Measured against mpmath (`tests/it/struve.rs`, 0 <= x <= 1e6): absolute error below
 //! 1e-15 everywhere, relative below 1e-14 wherever `|H| > 1e-3`.
 
 use super::struve_tables::{H0_TABLE, H1_TABLE};

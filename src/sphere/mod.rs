@@ -58,7 +58,7 @@ pub const MIN_TABOR: f64 = 0.005;
 /// and converges toward JKR: at mu = 100 pull-off -1.50044, jump-out load
 /// -0.83347 and interference -0.90881, zero-load radius 1.81712 (JKR -1.5,
 /// -5/6, -0.90856, 6^(1/3) = 1.81712), each within 2e-4 of resolution 2
-/// (docs/performance.md, tests/sphere_large_mu.rs). Versions 1-4 stopped at
+/// (docs/performance.md, tests/it/sphere_large_mu.rs). Versions 1-4 stopped at
 /// 10: the jump-out drifted from JKR above mu ~ 20 and mu = 50-100 gave
 /// wrong pull-offs.
 pub const MAX_TABOR: f64 = 100.0;
@@ -397,7 +397,7 @@ impl SphereProblem {
     /// 1 with density 1 the mu = 0.005 pull-off was -2.000034, beyond
     /// Bradley's -2 (converged -1.99964), and the mu = 0.5 zero-load radius
     /// 0.56% small; the error falls as the spacing squared, so density 2 gives
-    /// 6e-5 and 0.13% (tests/sphere_convergence.rs) for 2x the nodes, which
+    /// 6e-5 and 0.13% (tests/it/sphere_convergence.rs) for 2x the nodes, which
     /// costs little at small mu.
     pub(crate) fn density(&self) -> f64 {
         let mu = self.mu;

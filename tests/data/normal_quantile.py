@@ -4,7 +4,7 @@ p: 200 values log-spaced in [1e-300, 0.4] and their complements 1 - p (as
 doubles), and 101 values uniform in [0.05, 0.95]; the quantile solves
 log Phi(s) = log p (relative, so the far tails converge) at 50 digits.
 Checks `asperity::special::normal::quantile` (Wichura's AS 241) in
-tests/gaussian_fn.rs. Run: python tests/data/normal_quantile.py
+tests/it/gaussian_fn.rs. Run: python tests/data/normal_quantile.py
 """
 import json
 import os

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Converged sphere-solver references for tests/sphere_convergence.rs.
+# Converged sphere-solver references for tests/it/sphere_convergence.rs.
 # Runs the release CLI (solver of SOLVER_VERSION 2, commit 9204750: the mesh
 # density change of version 3 does not change the converged limit) at
 # resolutions 4 and 8 and extrapolates (Richardson, second order: the

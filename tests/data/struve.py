@@ -1,5 +1,5 @@
 """Reference values of the Struve functions H0(x), H1(x) from mpmath struveh at 50 digits,
-for src/special/struve.rs (tests/struve.rs).
+for src/special/struve.rs (tests/it/struve.rs).
 
 Run: python3 tests/data/struve.py > tests/data/struve.json
 

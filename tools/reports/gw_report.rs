@@ -8,7 +8,7 @@
 //! R = 1 um, sigma = 5 nm, 100 um x 100 um, Gaussian heights):
 //! 1. Hertz asperities, a 1000-point approach curve (load, area, count)
 //!    from d = 6 sigma down to d = -3 sigma. Reference: the closed forms
-//!    (F_n to ~1e-15 against mpmath, tests/gaussian_fn.rs).
+//!    (F_n to ~1e-15 against mpmath, tests/it/gaussian_fn.rs).
 //! 2. Maugis–Dugdale asperities at lambda = 1 (z0 chosen so), approach to
 //!    d = 0 and retraction, 1000 points per leg, load only. Reference:
 //!    adaptive quadrature of the exact law at rtol 1e-12 (its own error

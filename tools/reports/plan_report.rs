@@ -79,7 +79,7 @@ fn main() {
         "{start}\n## Scenes: planned against everything-on\n\n\
          Regenerate: `cargo run --release --example plan_report` (median of 7 runs each; same \
          separations for both; difference = max |planned - everything-on| / max |everything-on| \
-         over load and area on both legs). `tests/scenes.rs` asserts the same two facts: the \
+         over load and area on both legs). `tests/it/scenes.rs` asserts the same two facts: the \
          planned run is faster and agrees within the scene's rtol.\n\n{md}{end}"
     );
     let new = match (doc.find(start), doc.find(end)) {
