@@ -31,6 +31,7 @@ mod cli_sphere;
 mod cli_surface;
 mod cli_sweep;
 mod cos_vs_maugis;
+mod docs;
 mod electrical;
 mod fuller_tabor;
 mod gaussian_fn;
