@@ -19,7 +19,7 @@ fn main() -> asperity::Result<()> {
         contact.contact_modulus,
         Plasticity::gold(),
     )?;
-    let laws: Vec<(&str, Arc<dyn AsperityLaw>)> = vec![
+    let laws: Vec<(&str, Arc<dyn LawKernels>)> = vec![
         ("hertz", Arc::from(LawKind::Hertz.build(&contact)?)),
         ("jkr", Arc::from(LawKind::Jkr.build(&contact)?)),
         (

@@ -8,7 +8,7 @@
 //! what GW cannot do (lognormal radii) and times a 1e6-summit program.
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Exponential;
-use asperity::law::{AsperityLaw, Hertz, Jkr, RadiusScaling};
+use asperity::law::{Hertz, Jkr, LawKernels, RadiusScaling};
 use asperity::loading::{History, LoadingModel, LoadingProgram, Observables};
 use asperity::montecarlo::*;
 use std::sync::Arc;
@@ -24,7 +24,7 @@ fn main() -> asperity::Result<()> {
         "{:>9} {:>6} {:>14} {:>14} {:>10} {:>7}",
         "N", "law", "MC load (N)", "GW load (N)", "SE (N)", "z"
     );
-    let laws: [(&str, Arc<dyn AsperityLaw>); 2] = [
+    let laws: [(&str, Arc<dyn LawKernels>); 2] = [
         ("hertz", Arc::new(Hertz::new(r, e_star)?)),
         ("jkr", Arc::new(Jkr::new(r, e_star, w)?)),
     ];
@@ -93,7 +93,7 @@ fn main() -> asperity::Result<()> {
     // Timing: approach-retract programs of 1000 states (500 separations per
     // leg, from 6 sigma to -sigma): Hertz on 1e6 summits, soft sticky JKR
     // (E* = 1 GPa, strong hysteresis) on 1e5.
-    let soft: Arc<dyn AsperityLaw> = Arc::new(Jkr::new(r, 1e9, w)?);
+    let soft: Arc<dyn LawKernels> = Arc::new(Jkr::new(r, 1e9, w)?);
     let program = LoadingProgram::new(6.0 * sigma, -sigma, 500)?;
     for (name, law, n) in [
         ("hertz", laws[0].1.clone(), 1_000_000),

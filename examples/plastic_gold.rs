@@ -6,7 +6,7 @@
 use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::plastic::{build, contact_fractions, elastic_law_warning};
-use asperity::law::{AsperityLaw, Hertz};
+use asperity::law::{Hertz, LawKernels};
 use asperity::loading::{LoadingModel, LoadingProgram, Observables};
 use asperity::material::plastic::{plasticity_index, Plasticity, Variant};
 use asperity::material::{contact_modulus, Material};
@@ -27,7 +27,7 @@ fn main() -> asperity::Result<()> {
     }
     let program = LoadingProgram::new(3.0 * surface.sigma, -2.0 * surface.sigma, 200)?;
     let acc = Accuracy::new(1e-8)?.with_method(Method::Quadrature);
-    let mut laws: Vec<(String, Arc<dyn AsperityLaw>)> =
+    let mut laws: Vec<(String, Arc<dyn LawKernels>)> =
         vec![("hertz".into(), Arc::new(Hertz::new(surface.radius, e)?))];
     for v in Variant::ALL {
         laws.push((v.name().into(), build(v, surface.radius, e, p)?.as_law()));

@@ -11,7 +11,7 @@ use std::sync::Arc;
 fn main() -> asperity::Result<()> {
     let surface = RoughSurface::gold_microswitch();
     let contact = AsperityContact::gold_microswitch();
-    let law: Arc<dyn AsperityLaw> = Arc::from(LawKind::Jkr.build(&contact)?);
+    let law: Arc<dyn LawKernels> = Arc::from(LawKind::Jkr.build(&contact)?);
     let model =
         GwModel::new(surface, Arc::new(Gaussian::new()), law)?.with_accuracy(Accuracy::new(1e-6)?);
     let spot = SpotResistance::new(Spreading::Wexler, Conductor::GOLD, Conductor::GOLD, 0.0)?;

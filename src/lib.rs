@@ -70,7 +70,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// // A gold switch: Hertz summits, Maxwell spots, the load and resistance
 /// // of the surface 5 nm above its mean summit plane.
 /// let contact = AsperityContact::gold_microswitch();
-/// let law: Arc<dyn AsperityLaw> = Arc::from(LawKind::Hertz.build(&contact)?);
+/// let law: Arc<dyn LawKernels> = Arc::from(LawKind::Hertz.build(&contact)?);
 /// let model = GwModel::new(RoughSurface::gold_microswitch(), Arc::new(Gaussian::new()), law)?;
 /// let spot = SpotResistance::same_metal(Spreading::Maxwell, 2.44e-8, None)?;
 /// let r = ResistanceObservables::new(spot, Interaction::None, 1e-4);
@@ -93,7 +93,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// use std::sync::Arc;
 ///
 /// let contact = AsperityContact::gold_microswitch();
-/// let law: Arc<dyn AsperityLaw> = Arc::from(LawKind::Jkr.build(&contact)?);
+/// let law: Arc<dyn LawKernels> = Arc::from(LawKind::Jkr.build(&contact)?);
 /// let surface = RoughSurface::gold_microswitch();
 /// let model = GwModel::new(surface, Arc::new(Gaussian::new()), law)?;
 /// let spot = SpotResistance::new(Spreading::Wexler, Conductor::GOLD, Conductor::GOLD, 0.0)?;
@@ -132,7 +132,8 @@ pub mod prelude {
     };
     #[doc(no_inline)]
     pub use crate::law::{
-        AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, LawKind,
+        AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, LawKernels,
+        LawKind,
     };
     #[doc(no_inline)]
     pub use crate::loading::{

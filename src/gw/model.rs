@@ -12,12 +12,12 @@
 //!
 //! Each asperity's branch follows the loading history: on approach every
 //! asperity is on its approach branch; on retraction after the flat came to
-//! `d_min`, an asperity is on [`AsperityLaw::state_after`]`(z - d, z - d_min)`,
+//! `d_min`, an asperity is on [`AsperityLaw::state_after`](crate::law::AsperityLaw::state_after)`(z - d, z - d_min)`,
 //! which gives the adhesive hysteresis of Fuller & Tabor (1975, JKR
 //! asperities) and Morrow et al. (2003, Maugis–Dugdale asperities).
 //!
 //! Two methods: closed forms `c sigma^n F_n((d + onset)/sigma)` when the law
-//! is a sum of powers ([`AsperityLaw::power_form`]: Hertz, DMT) and the
+//! is a sum of powers ([`AsperityLaw::power_form`](crate::law::AsperityLaw::power_form): Hertz, DMT) and the
 //! distribution has closed-form `F_n`; otherwise adaptive Gauss–Kronrod
 //! quadrature in `s`, split at every point where the integrand jumps, with
 //! an error estimate measured against `int |integrand|`. Laws smooth in the
@@ -29,7 +29,7 @@
 use crate::error::{Allowed, Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::law::{AsperityLaw, Branch, ContactState, LawCursor};
+use crate::law::{Branch, ContactState, LawCursor, LawKernels};
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
 use crate::numeric::quadrature::{
     integrate_pieces_batch, kronrod21_batch, kronrod21_pieces, QuadOptions,
@@ -141,7 +141,7 @@ pub const REACH_CEILING_SIGMAS: f64 = 40.0;
 pub struct GwModel {
     surface: RoughSurface,
     distribution: Arc<dyn HeightDistribution>,
-    law: Arc<dyn AsperityLaw>,
+    law: Arc<dyn LawKernels>,
     accuracy: Accuracy,
     /// `distribution.numerical_support(SUPPORT_EPS)`, computed once.
     support: (f64, f64),
@@ -158,7 +158,7 @@ impl GwModel {
     pub fn new(
         surface: RoughSurface,
         distribution: Arc<dyn HeightDistribution>,
-        law: Arc<dyn AsperityLaw>,
+        law: Arc<dyn LawKernels>,
     ) -> Result<Self> {
         let (_, hi) = distribution.support();
         if law.max_interference().is_finite() && !hi.is_finite() {
@@ -228,7 +228,7 @@ impl GwModel {
     }
 
     /// The law.
-    pub fn law(&self) -> &dyn AsperityLaw {
+    pub fn law(&self) -> &dyn LawKernels {
         self.law.as_ref()
     }
 
@@ -258,7 +258,7 @@ impl GwModel {
 
     /// Default start of a program (m): the separation beyond which the
     /// summits the flat can reach (`z > d + range`, `range` the law's
-    /// [`interaction_range`](AsperityLaw::interaction_range), its cutoff
+    /// [`interaction_range`](crate::law::AsperityLaw::interaction_range), its cutoff
     /// for laws whose load vanishes) make up less than `fraction` of all
     /// summits, `sigma q(1 - fraction) - range`, capped at the
     /// [interaction onset](LoadingModel::interaction_onset).
@@ -539,7 +539,7 @@ impl GwModel {
 
     /// Whether [`GwModel::quadrature_in_root`] serves this state: adaptive
     /// quadrature asked for by [`Method::Auto`], a law smooth in the root
-    /// of its interference ([`AsperityLaw::smooth_in_root`]) on its
+    /// of its interference ([`AsperityLaw::smooth_in_root`](crate::law::AsperityLaw::smooth_in_root)) on its
     /// approach branch (or on retraction when it is
     /// [reversible](AsperityLaw::reversible)).
     fn root_rule_applies(&self, history: History) -> bool {
@@ -948,7 +948,7 @@ impl LoadingModel for GwModel {
     }
 
     /// `sigma s_max - range`, `s_max` the end of the numerical support and
-    /// `range` the law's [`interaction_range`](AsperityLaw::interaction_range):
+    /// `range` the law's [`interaction_range`](crate::law::AsperityLaw::interaction_range):
     /// beyond it every total is exactly zero (laws whose load vanishes) or
     /// negligible (long-range laws, which are never cut).
     fn interaction_onset(&self) -> f64 {
@@ -999,10 +999,10 @@ impl LoadingModel for GwModel {
 }
 
 /// The states of a quadrature panel's 21 standardised heights `x` at
-/// separation `d` (m) in one [`AsperityLaw::state_batch`] call: `(load,
+/// separation `d` (m) in one [`LawKernels::state_batch`] call: `(load,
 /// radius)` (N, m), bit for bit the law's `state` / `state_after`.
 fn panel_states(
-    law: &dyn AsperityLaw,
+    law: &dyn LawKernels,
     x: &[f64; 21],
     sigma: f64,
     d: f64,

@@ -5,11 +5,11 @@
 
 use super::*;
 use crate::heights::Exponential;
-use crate::law::{AsperityLaw, Hertz, Jkr};
+use crate::law::{Hertz, Jkr, LawKernels};
 use crate::loading::{History, LoadingModel, LoadingProgram, MethodUsed, Observables};
 use std::sync::Arc;
 
-fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
+fn model(law: Arc<dyn LawKernels>) -> GwModel {
     GwModel::new(
         RoughSurface::gold_microswitch(),
         Arc::new(Exponential::new()),
@@ -154,10 +154,10 @@ fn fixed_rule_converges_as_panels_grow() {
 /// [`AreaAgain`] (no closed form).
 pub(crate) fn root_smooth_laws(
     s: &RoughSurface,
-) -> (Arc<dyn AsperityLaw>, Arc<dyn AsperityLaw>, Observables) {
+) -> (Arc<dyn LawKernels>, Arc<dyn LawKernels>, Observables) {
     use crate::law::plastic::build;
     use crate::material::plastic::{Plasticity, Variant};
-    let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
+    let hertz: Arc<dyn LawKernels> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
     let ke = build(Variant::KogutEtsion, s.radius, 4.796e10, Plasticity::gold())
         .unwrap()
         .as_law();
@@ -212,7 +212,7 @@ fn root_rule_meets_the_tolerance_against_closed_forms() {
     use crate::heights::{Gaussian, HeightDistribution};
     use crate::loading::Observable;
     let s = RoughSurface::gold_microswitch();
-    let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
+    let hertz: Arc<dyn LawKernels> = Arc::new(Hertz::new(s.radius, 4.8e10).unwrap());
     let extra = Observables::ALL
         .with(Observable::Custom(Arc::new(AreaAgain)))
         .unwrap();

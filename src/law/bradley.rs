@@ -16,7 +16,7 @@
 //! It is a single-asperity reference (the `mu -> 0` limit of the full
 //! solver), not a law for statistical integration over unbounded heights.
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawKernels};
 use crate::error::{positive, Result};
 use std::f64::consts::PI;
 
@@ -61,10 +61,6 @@ impl Bradley {
 impl AsperityLaw for Bradley {
     fn radius_scaling(&self) -> Option<super::RadiusScaling> {
         super::LawKind::Bradley.radius_scaling()
-    }
-
-    fn cost_ns(&self) -> f64 {
-        super::LawKind::Bradley.cost_ns()
     }
 
     fn name(&self) -> &'static str {
@@ -119,6 +115,12 @@ impl AsperityLaw for Bradley {
 
     fn zero_load_radius(&self) -> Option<f64> {
         None
+    }
+}
+
+impl LawKernels for Bradley {
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Bradley.cost_ns()
     }
 }
 

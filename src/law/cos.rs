@@ -45,7 +45,7 @@
 //! There is no non-contact branch.
 
 use super::maugis::MaugisCurve;
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawKernels};
 use crate::error::{positive, Allowed, Result};
 use crate::material::MaugisScales;
 
@@ -240,10 +240,6 @@ impl AsperityLaw for Cos {
         super::LawKind::Cos.radius_scaling()
     }
 
-    fn cost_ns(&self) -> f64 {
-        super::LawKind::Cos.cost_ns()
-    }
-
     fn name(&self) -> &'static str {
         "cos"
     }
@@ -298,6 +294,12 @@ impl AsperityLaw for Cos {
 
     fn zero_load_radius(&self) -> Option<f64> {
         Some(self.curve.a0 * self.scales.radius)
+    }
+}
+
+impl LawKernels for Cos {
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Cos.cost_ns()
     }
 }
 

@@ -10,7 +10,7 @@
 //! asperity just out of contact is the `lambda -> 0` limit of the
 //! Maugis–Dugdale non-contact branch; use that law when it matters.)
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability, PowerForm};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawKernels, PowerForm};
 use crate::error::Result;
 use crate::material::MaugisScales;
 use std::f64::consts::PI;
@@ -53,20 +53,8 @@ impl AsperityLaw for Dmt {
         super::LawKind::Dmt.radius_scaling()
     }
 
-    fn cost_ns(&self) -> f64 {
-        super::LawKind::Dmt.cost_ns()
-    }
-
     fn name(&self) -> &'static str {
         "dmt"
-    }
-
-    /// `-2 pi w R` at `delta = 0`; Hertz's rise above, free below.
-    fn retraction_minimum(&self, _delta_max: f64) -> Option<super::RetractionMinimum> {
-        Some(super::RetractionMinimum {
-            interference: 0.0,
-            load: -2.0 * self.scales.load,
-        })
     }
 
     #[inline]
@@ -123,6 +111,20 @@ impl AsperityLaw for Dmt {
             onset: 0.0,
             load: vec![(self.stiffness, 1.5), (-2.0 * self.scales.load, 0.0)],
             area: vec![(PI * self.radius, 1.0)],
+        })
+    }
+}
+
+impl LawKernels for Dmt {
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Dmt.cost_ns()
+    }
+
+    /// `-2 pi w R` at `delta = 0`; Hertz's rise above, free below.
+    fn retraction_minimum(&self, _delta_max: f64) -> Option<super::RetractionMinimum> {
+        Some(super::RetractionMinimum {
+            interference: 0.0,
+            load: -2.0 * self.scales.load,
         })
     }
 }

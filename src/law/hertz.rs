@@ -3,7 +3,7 @@
 //! `a^2 = R delta`, `P = (4/3) E* R^(1/2) delta^(3/2) = K a^3 / R` for
 //! `delta > 0`, zero otherwise (Johnson, *Contact Mechanics*, eq. 4.22-4.23).
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability, PowerForm};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawKernels, PowerForm};
 use crate::error::{positive, Result};
 use std::f64::consts::PI;
 
@@ -59,17 +59,8 @@ impl AsperityLaw for Hertz {
         super::LawKind::Hertz.radius_scaling()
     }
 
-    fn cost_ns(&self) -> f64 {
-        super::LawKind::Hertz.cost_ns()
-    }
-
     fn name(&self) -> &'static str {
         "hertz"
-    }
-
-    /// The load rises with the interference, zero out of contact.
-    fn retraction_minimum(&self, _delta_max: f64) -> Option<super::RetractionMinimum> {
-        Some(super::RetractionMinimum::MONOTONE)
     }
 
     #[inline]
@@ -83,34 +74,6 @@ impl AsperityLaw for Hertz {
     #[inline]
     fn load(&self, delta: f64, _branch: Branch) -> f64 {
         self.load_at(delta)
-    }
-
-    /// Branch-free (`delta <= 0` clamped to 0, which gives exactly the
-    /// free state), so the loop vectorises; SIMD width picked at run time
-    /// ([`pulp::Arch`]). No history: `delta_max` is ignored. Bit for bit
-    /// equal to [`Hertz::load_at`] and [`Hertz::radius_at`].
-    fn state_batch(
-        &self,
-        delta: &[f64],
-        _delta_max: Option<&[f64]>,
-        load: &mut [f64],
-        radius: &mut [f64],
-    ) {
-        let (k, sr) = (self.stiffness, self.sqrt_radius);
-        crate::numeric::simd::arch().dispatch(
-            #[inline(always)]
-            || {
-                for ((&d, l), a) in delta.iter().zip(load.iter_mut()).zip(radius.iter_mut()) {
-                    (*l, *a) = root_monomial_state(d, k, sr);
-                }
-            },
-        );
-    }
-
-    /// `(K sqrt(R), sqrt(R))`: `P = K sqrt(R) d^(3/2)` as `k * d * sqrt(d)`,
-    /// `a = sqrt(R d)` as `sqrt(R) * sqrt(d)`, as in the batch above.
-    fn root_monomials(&self) -> Option<(f64, f64)> {
-        Some((self.stiffness, self.sqrt_radius))
     }
 
     /// The branch is ignored: no hysteresis, no memory.
@@ -166,9 +129,48 @@ impl AsperityLaw for Hertz {
     }
 }
 
+impl LawKernels for Hertz {
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Hertz.cost_ns()
+    }
+
+    /// The load rises with the interference, zero out of contact.
+    fn retraction_minimum(&self, _delta_max: f64) -> Option<super::RetractionMinimum> {
+        Some(super::RetractionMinimum::MONOTONE)
+    }
+
+    /// Branch-free (`delta <= 0` clamped to 0, which gives exactly the
+    /// free state), so the loop vectorises; SIMD width picked at run time
+    /// ([`pulp::Arch`]). No history: `delta_max` is ignored. Bit for bit
+    /// equal to [`Hertz::load_at`] and [`Hertz::radius_at`].
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        _delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        let (k, sr) = (self.stiffness, self.sqrt_radius);
+        crate::numeric::simd::arch().dispatch(
+            #[inline(always)]
+            || {
+                for ((&d, l), a) in delta.iter().zip(load.iter_mut()).zip(radius.iter_mut()) {
+                    (*l, *a) = root_monomial_state(d, k, sr);
+                }
+            },
+        );
+    }
+
+    /// `(K sqrt(R), sqrt(R))`: `P = K sqrt(R) d^(3/2)` as `k * d * sqrt(d)`,
+    /// `a = sqrt(R d)` as `sqrt(R) * sqrt(d)`, as in the batch above.
+    fn root_monomials(&self) -> Option<(f64, f64)> {
+        Some((self.stiffness, self.sqrt_radius))
+    }
+}
+
 /// `(P, a) = (k d sqrt(d), c sqrt(d))` with `d = max(delta, 0)`, branch-free
 /// (it vectorises): Hertz's state from `(k, c)` =
-/// [`AsperityLaw::root_monomials`], the one formula of the batch and of the
+/// [`LawKernels::root_monomials`], the one formula of the batch and of the
 /// Monte Carlo sums that fuse it (so they agree bit for bit).
 #[inline(always)]
 pub fn root_monomial_state(delta: f64, k: f64, c: f64) -> (f64, f64) {

@@ -27,7 +27,7 @@
 //! (`examples/md_curve_profile.rs`): short Clenshaw chains win over fewer
 //! panels.
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor, LawKernels};
 use crate::error::{Allowed, Error, Result};
 use crate::numeric::chebyshev::{horner, monomial_coefficients};
 use crate::numeric::lanes::{sqrt_lanes, StateSums, STATE_LANES};
@@ -40,7 +40,7 @@ const DEG: usize = 6;
 const MIN_WIDTH: f64 = 1e-12;
 
 /// Lanes of the interleaved polynomials of
-/// [`load_near_batch`](AsperityLaw::load_near_batch).
+/// [`load_near_batch`](LawKernels::load_near_batch).
 const LANES: usize = 8;
 
 /// [`horner_lanes`](crate::numeric::chebyshev::horner_lanes) at this
@@ -425,13 +425,13 @@ const GROUP: usize = 32;
 
 /// Where [`TableBatch`] puts the states: arrays, or lane sums.
 enum Sink<'a> {
-    /// `load[i]`, `radius[i]` ([`AsperityLaw::state_batch`]).
+    /// `load[i]`, `radius[i]` ([`LawKernels::state_batch`]).
     States {
         load: &'a mut [f64],
         radius: &'a mut [f64],
     },
     /// State `i` added to lane `i mod STATE_LANES`
-    /// ([`AsperityLaw::add_state_sums`]).
+    /// ([`LawKernels::add_state_sums`]).
     Sums(&'a mut StateSums),
 }
 
@@ -666,6 +666,40 @@ impl AsperityLaw for InterpolatedLaw {
         self.inner.remembers_maximum()
     }
 
+    fn attach_interference(&self) -> f64 {
+        self.inner.attach_interference()
+    }
+
+    fn detach_interference(&self) -> f64 {
+        self.inner.detach_interference()
+    }
+
+    fn cutoff_interference(&self) -> f64 {
+        self.inner.cutoff_interference()
+    }
+
+    fn interaction_range(&self) -> f64 {
+        self.inner.interaction_range()
+    }
+
+    fn max_interference(&self) -> f64 {
+        self.inner.max_interference()
+    }
+
+    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+        self.inner.breakpoints(branch)
+    }
+
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        self.inner.pull_off(control)
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        self.inner.zero_load_radius()
+    }
+}
+
+impl LawKernels for InterpolatedLaw {
     /// The panel search walks from the cursor's panel (the same panel as
     /// [`state`](AsperityLaw::state)'s binary search, so the same value).
     #[inline]
@@ -682,7 +716,7 @@ impl AsperityLaw for InterpolatedLaw {
             .unwrap_or_else(|| self.inner.state(delta, branch))
     }
 
-    /// As [`state_near`](AsperityLaw::state_near), load only.
+    /// As [`state_near`](LawKernels::state_near), load only.
     #[inline]
     fn load_near(&self, delta: f64, delta_max: Option<f64>, cursor: &mut LawCursor) -> f64 {
         let branch = delta_max.map_or(Branch::Approach, |m| self.branch_after(m));
@@ -694,7 +728,7 @@ impl AsperityLaw for InterpolatedLaw {
 
     /// Panels found by walking from the cursor (one walk for ascending
     /// input), then up to eight polynomials interleaved; the same panel
-    /// and the same operations as [`load_near`](AsperityLaw::load_near),
+    /// and the same operations as [`load_near`](LawKernels::load_near),
     /// so the same bits.
     fn load_near_batch(
         &self,
@@ -761,7 +795,7 @@ impl AsperityLaw for InterpolatedLaw {
         });
     }
 
-    /// The states of [`state_batch`](AsperityLaw::state_batch) (the same
+    /// The states of [`state_batch`](LawKernels::state_batch) (the same
     /// groups, panels and operations) added to `sums` group by group, in
     /// order, each group's interferences computed in the same pass: no
     /// interference, load or radius arrays (the heights stream from memory
@@ -785,38 +819,6 @@ impl AsperityLaw for InterpolatedLaw {
             sink: Sink::Sums(sums),
         });
         true
-    }
-
-    fn attach_interference(&self) -> f64 {
-        self.inner.attach_interference()
-    }
-
-    fn detach_interference(&self) -> f64 {
-        self.inner.detach_interference()
-    }
-
-    fn cutoff_interference(&self) -> f64 {
-        self.inner.cutoff_interference()
-    }
-
-    fn interaction_range(&self) -> f64 {
-        self.inner.interaction_range()
-    }
-
-    fn max_interference(&self) -> f64 {
-        self.inner.max_interference()
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        self.inner.breakpoints(branch)
-    }
-
-    fn pull_off(&self, control: Control) -> Option<Instability> {
-        self.inner.pull_off(control)
-    }
-
-    fn zero_load_radius(&self) -> Option<f64> {
-        self.inner.zero_load_radius()
     }
 }
 

@@ -15,7 +15,7 @@
 //! `A0 = 6^(1/3)`. Jump-in on approach at `delta = 0` (Johnson, *Contact
 //! Mechanics* §5.5; Maugis, *J. Colloid Interface Sci.* 150 (1992)).
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawKernels};
 use crate::error::Result;
 use crate::material::MaugisScales;
 use crate::numeric::lanes::sqrt_lanes;
@@ -202,7 +202,7 @@ fn group_roots<S: pulp::Simd>(
 /// with `A` = [`stable_radius_bar`]`((delta[i] - words[i][0]) / words[i][1])`,
 /// free where that has no root (NaN words included); in SIMD lanes, bit
 /// for bit the scalar formulas. Words as
-/// [`AdhesivePlastic::prepare_after`](crate::law::AsperityLaw::prepare_after).
+/// [`AdhesivePlastic::prepare_after`](crate::law::LawKernels::prepare_after).
 pub(crate) struct JkrShapesBatch<'a> {
     pub delta: &'a [f64],
     pub words: &'a [crate::law::Prepared],
@@ -341,32 +341,8 @@ impl AsperityLaw for Jkr {
         super::LawKind::Jkr.radius_scaling()
     }
 
-    fn cost_ns(&self) -> f64 {
-        super::LawKind::Jkr.cost_ns()
-    }
-
-    /// Newton in SIMD lanes: 14.7 ns per evaluation on the `soft-jkr`
-    /// populations (`examples/population_cost.rs`).
-    fn batch_cost_ns(&self) -> f64 {
-        15.0
-    }
-
     fn name(&self) -> &'static str {
         "jkr"
-    }
-
-    /// The stable branch's load falls to `-(3/2) pi w R` (load-controlled
-    /// pull-off), then rises to the jump-out; a summit that never touched
-    /// stays free.
-    fn retraction_minimum(&self, delta_max: f64) -> Option<super::RetractionMinimum> {
-        if delta_max < self.attach_interference() {
-            return Some(super::RetractionMinimum::MONOTONE);
-        }
-        let p = self.pull_off(Control::Load)?;
-        Some(super::RetractionMinimum {
-            interference: p.interference,
-            load: p.load,
-        })
     }
 
     #[inline]
@@ -375,25 +351,6 @@ impl AsperityLaw for Jkr {
             Branch::Approach if delta < 0.0 => ContactState::FREE,
             _ => self.attached(delta),
         }
-    }
-
-    /// Masked Newton iterations on groups of asperities in SIMD lanes
-    /// (`JkrBatch`), bit for bit [`state`](AsperityLaw::state) /
-    /// [`state_after`](AsperityLaw::state_after).
-    fn state_batch(
-        &self,
-        delta: &[f64],
-        delta_max: Option<&[f64]>,
-        load: &mut [f64],
-        radius: &mut [f64],
-    ) {
-        crate::numeric::simd::arch().dispatch(JkrBatch {
-            scales: self.scales,
-            delta,
-            delta_max,
-            load,
-            radius,
-        });
     }
 
     fn attach_interference(&self) -> f64 {
@@ -430,6 +387,51 @@ impl AsperityLaw for Jkr {
 
     fn zero_load_radius(&self) -> Option<f64> {
         Some(ZERO_LOAD_RADIUS * self.scales.radius)
+    }
+}
+
+impl LawKernels for Jkr {
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Jkr.cost_ns()
+    }
+
+    /// Newton in SIMD lanes: 14.7 ns per evaluation on the `soft-jkr`
+    /// populations (`examples/population_cost.rs`).
+    fn batch_cost_ns(&self) -> f64 {
+        15.0
+    }
+
+    /// The stable branch's load falls to `-(3/2) pi w R` (load-controlled
+    /// pull-off), then rises to the jump-out; a summit that never touched
+    /// stays free.
+    fn retraction_minimum(&self, delta_max: f64) -> Option<super::RetractionMinimum> {
+        if delta_max < self.attach_interference() {
+            return Some(super::RetractionMinimum::MONOTONE);
+        }
+        let p = self.pull_off(Control::Load)?;
+        Some(super::RetractionMinimum {
+            interference: p.interference,
+            load: p.load,
+        })
+    }
+
+    /// Masked Newton iterations on groups of asperities in SIMD lanes
+    /// (`JkrBatch`), bit for bit [`state`](AsperityLaw::state) /
+    /// [`state_after`](AsperityLaw::state_after).
+    fn state_batch(
+        &self,
+        delta: &[f64],
+        delta_max: Option<&[f64]>,
+        load: &mut [f64],
+        radius: &mut [f64],
+    ) {
+        crate::numeric::simd::arch().dispatch(JkrBatch {
+            scales: self.scales,
+            delta,
+            delta_max,
+            load,
+            radius,
+        });
     }
 }
 

@@ -5,7 +5,7 @@
 //! moments or hysteresis) is a capability method here, so the planner, the
 //! Monte Carlo code, the CLI and the property tests ask the kind.
 
-use super::{AsperityLaw, Bradley, Cos, Dmt, Hertz, Jkr, Maugis, RadiusScaling};
+use super::{Bradley, Cos, Dmt, Hertz, Jkr, LawKernels, Maugis, RadiusScaling};
 use crate::error::{Error, Result};
 use crate::material::AsperityContact;
 
@@ -129,7 +129,7 @@ impl LawKind {
         matches!(self, LawKind::Jkr | LawKind::Maugis | LawKind::Cos)
     }
 
-    /// Whether the law is a sum of powers ([`AsperityLaw::power_form`]), so
+    /// Whether the law is a sum of powers ([`AsperityLaw::power_form`](crate::law::AsperityLaw::power_form)), so
     /// GW totals have closed forms `F_n` where the distribution does.
     pub fn has_power_form(self) -> bool {
         matches!(self, LawKind::Hertz | LawKind::Dmt)
@@ -169,7 +169,7 @@ impl LawKind {
     ///
     /// # Errors
     /// As [`LawKind::build_from`].
-    pub fn build(self, contact: &AsperityContact) -> Result<Box<dyn AsperityLaw>> {
+    pub fn build(self, contact: &AsperityContact) -> Result<Box<dyn LawKernels>> {
         self.build_from(&LawInputs::from_contact(contact))
     }
 
@@ -178,7 +178,7 @@ impl LawKind {
     /// # Errors
     /// [`Error::Invalid`] naming `work_of_adhesion` when an adhesive law is
     /// asked for with `w = 0`; otherwise what the law's constructor reports.
-    pub fn build_from(self, x: &LawInputs) -> Result<Box<dyn AsperityLaw>> {
+    pub fn build_from(self, x: &LawInputs) -> Result<Box<dyn LawKernels>> {
         let (r, e, w) = (x.radius, x.contact_modulus, x.work_of_adhesion);
         if self.is_adhesive() && !(w > 0.0) {
             return Err(Error::invalid(
@@ -250,9 +250,9 @@ mod tests {
     #[test]
     fn laws_are_send_sync_and_object_safe() {
         fn assert_send_sync<T: Send + Sync + ?Sized>() {}
-        assert_send_sync::<dyn AsperityLaw>();
+        assert_send_sync::<dyn LawKernels>();
         let c = AsperityContact::gold_microswitch();
-        let laws: Vec<Box<dyn AsperityLaw>> =
+        let laws: Vec<Box<dyn LawKernels>> =
             LawKind::ALL.iter().map(|k| k.build(&c).unwrap()).collect();
         assert_eq!(laws.len(), LawKind::ALL.len());
     }

@@ -97,7 +97,7 @@
 //! - Load control: pull-off at the minimum of `Pbar`, always on the contact
 //!   branch.
 
-use super::{AsperityLaw, Branch, ContactState, Control, Instability};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawKernels};
 use crate::error::{Allowed, Result};
 use crate::material::MaugisScales;
 use crate::numeric::roots::brent;
@@ -758,10 +758,6 @@ impl AsperityLaw for Maugis {
         super::LawKind::Maugis.radius_scaling()
     }
 
-    fn cost_ns(&self) -> f64 {
-        super::LawKind::Maugis.cost_ns()
-    }
-
     fn name(&self) -> &'static str {
         "maugis"
     }
@@ -816,6 +812,12 @@ impl AsperityLaw for Maugis {
 
     fn zero_load_radius(&self) -> Option<f64> {
         Some(self.curve.zero_load.radius_bar * self.scales.radius)
+    }
+}
+
+impl LawKernels for Maugis {
+    fn cost_ns(&self) -> f64 {
+        super::LawKind::Maugis.cost_ns()
     }
 }
 

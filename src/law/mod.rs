@@ -1,7 +1,8 @@
 //! Single-asperity laws: a sphere of radius `R` against a flat.
 //!
-//! Every law implements [`AsperityLaw`], the interface the rough-surface
-//! integrator and the Monte Carlo summation call millions of times. A law
+//! Every law implements [`AsperityLaw`], its physics, and [`LawKernels`],
+//! the speed machinery the rough-surface integrator and the Monte Carlo
+//! summation call millions of times (defaults evaluate the physics). A law
 //! gives the load `P` (N, > 0 compressive) and contact radius `a` (m) at an
 //! interference `delta` (m, > 0 when the undeformed bodies would overlap) on a
 //! [`Branch`]: adhesive laws are multi-valued, and which value applies depends
@@ -33,6 +34,7 @@ pub mod errors;
 pub mod hertz;
 pub mod interpolated;
 pub mod jkr;
+mod kernels;
 mod kind;
 pub mod maugis;
 pub mod plastic;
@@ -47,6 +49,7 @@ pub use cursor::LawCursor;
 pub use dmt::Dmt;
 pub use hertz::Hertz;
 pub use jkr::Jkr;
+pub use kernels::{LawKernels, Prepared, TABLE_LOOKUP_NS};
 pub use kind::{LawInputs, LawKind, TABULATE_ABOVE_NS};
 pub use maugis::{Maugis, MaugisCurve};
 pub use retraction::RetractionMinimum;
@@ -106,10 +109,6 @@ impl ContactState {
     }
 }
 
-/// Per-summit words of a loading history that do not depend on the current
-/// interference ([`AsperityLaw::prepare_after`]).
-pub type Prepared = [f64; 4];
-
 /// A point where the asperity snaps or is pulled off (defined with the
 /// axisymmetric contacts the laws are built on).
 pub use crate::axisym::Instability;
@@ -138,7 +137,21 @@ impl InstabilityBar {
     }
 }
 
-/// A single-asperity contact law. Object-safe, `Send + Sync`.
+/// A single-asperity contact law: its physics. Object-safe, `Send + Sync`.
+///
+/// The load and contact radius on each branch and after a maximum
+/// interference, the critical points (attach, detach, cutoff, pull-off,
+/// breakpoints), the range of validity, and the capabilities that the
+/// planner and the integrators ask before choosing a method
+/// ([`has_history`](AsperityLaw::has_history),
+/// [`remembers_maximum`](AsperityLaw::remembers_maximum),
+/// [`reversible`](AsperityLaw::reversible),
+/// [`smooth_in_root`](AsperityLaw::smooth_in_root),
+/// [`power_form`](AsperityLaw::power_form),
+/// [`radius_scaling`](AsperityLaw::radius_scaling),
+/// [`interaction_range`](AsperityLaw::interaction_range)). How to evaluate
+/// it faster (batches, SIMD lanes, prepared histories, fused sums, pruning
+/// bounds, costs) is [`LawKernels`], which every law also implements.
 ///
 /// Evaluation never fails and never returns NaN for finite `delta` below
 /// [`max_interference`](AsperityLaw::max_interference): inputs are validated
@@ -173,172 +186,6 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
         self.state_after(delta, delta_max).load
     }
 
-    /// [`state`](AsperityLaw::state) on approach (`delta_max = None`) or
-    /// [`state_after`](AsperityLaw::state_after) on retraction from
-    /// `delta_max` (m), bit for bit, for a sequence of nearby interferences
-    /// (the nodes of one quadrature panel): tabulated laws start their
-    /// panel search at `cursor` (updated) instead of bisecting the whole
-    /// table. Default: ignores the cursor.
-    fn state_near(
-        &self,
-        delta: f64,
-        delta_max: Option<f64>,
-        cursor: &mut LawCursor,
-    ) -> ContactState {
-        let _ = cursor;
-        match delta_max {
-            None => self.state(delta, Branch::Approach),
-            Some(m) => self.state_after(delta, m),
-        }
-    }
-
-    /// Load only (N) of [`state_near`](AsperityLaw::state_near), as
-    /// [`load`](AsperityLaw::load) / [`load_after`](AsperityLaw::load_after)
-    /// bit for bit.
-    fn load_near(&self, delta: f64, delta_max: Option<f64>, cursor: &mut LawCursor) -> f64 {
-        let _ = cursor;
-        match delta_max {
-            None => self.load(delta, Branch::Approach),
-            Some(m) => self.load_after(delta, m),
-        }
-    }
-
-    /// [`load_near`](AsperityLaw::load_near) for each `delta[i]` (m), with
-    /// `delta_max[i]` (m) on retraction, into `load[i]` (N), bit for bit;
-    /// the slices have the same length (the shortest bounds the work).
-    /// Ascending `delta` (a quadrature panel's nodes) lets a tabulated law
-    /// find its panels by one walk and keep several evaluations in flight.
-    /// Default: one [`load_near`](AsperityLaw::load_near) after another.
-    fn load_near_batch(
-        &self,
-        delta: &[f64],
-        delta_max: Option<&[f64]>,
-        load: &mut [f64],
-        cursor: &mut LawCursor,
-    ) {
-        match delta_max {
-            None => {
-                for (&d, l) in delta.iter().zip(load.iter_mut()) {
-                    *l = self.load_near(d, None, cursor);
-                }
-            }
-            Some(m) => {
-                for ((&d, &m), l) in delta.iter().zip(m).zip(load.iter_mut()) {
-                    *l = self.load_near(d, Some(m), cursor);
-                }
-            }
-        }
-    }
-
-    /// Many asperities in one call (the Monte Carlo hot loop): for each `i`,
-    /// `(load[i], radius[i])` (N, m) is `state(delta[i], Approach)` when
-    /// `delta_max` is `None` and `state_after(delta[i], delta_max[i])`
-    /// otherwise, bit for bit. The law is dispatched once per block instead
-    /// of once per asperity; the default loop calls the law's own `state`
-    /// statically (inlined), and laws override it with loops the compiler
-    /// vectorises ([`Hertz`]) or searches that exploit sorted input
-    /// ([`interpolated::InterpolatedLaw`]). All slices have the same length
-    /// (the shortest bounds the work).
-    fn state_batch(
-        &self,
-        delta: &[f64],
-        delta_max: Option<&[f64]>,
-        load: &mut [f64],
-        radius: &mut [f64],
-    ) {
-        let out = load.iter_mut().zip(radius.iter_mut());
-        match delta_max {
-            None => {
-                for (&d, (l, r)) in delta.iter().zip(out) {
-                    let s = self.state(d, Branch::Approach);
-                    (*l, *r) = (s.load, s.radius);
-                }
-            }
-            Some(m) => {
-                for ((&d, &m), (l, r)) in delta.iter().zip(m).zip(out) {
-                    let s = self.state_after(d, m);
-                    (*l, *r) = (s.load, s.radius);
-                }
-            }
-        }
-    }
-
-    /// Whether [`prepare_after`](AsperityLaw::prepare_after) saves work
-    /// (a plastic summit's unloading shape): sums over many separations
-    /// after the same peaks then call it once per summit and
-    /// [`state_batch_prepared`](AsperityLaw::state_batch_prepared) per
-    /// separation. Default `false`.
-    fn prepares_history(&self) -> bool {
-        false
-    }
-
-    /// What [`state_after`](AsperityLaw::state_after)`(delta, delta_max[i])`
-    /// needs of `delta_max[i]` (m) alone, into `prepared[i]` (the law's own
-    /// words: for [`plastic::AdhesivePlastic`] the residual interference and
-    /// the JKR scales of the flattened shape). The default leaves it alone.
-    fn prepare_after(&self, delta_max: &[f64], prepared: &mut [Prepared]) {
-        let _ = (delta_max, prepared);
-    }
-
-    /// [`retraction_minimum`](AsperityLaw::retraction_minimum)`(delta_max)`
-    /// bit for bit, from `prepared` = [`prepare_after`](AsperityLaw::prepare_after)`(delta_max)`.
-    /// The default ignores `prepared`.
-    fn retraction_minimum_prepared(
-        &self,
-        delta_max: f64,
-        prepared: &Prepared,
-    ) -> Option<RetractionMinimum> {
-        let _ = prepared;
-        self.retraction_minimum(delta_max)
-    }
-
-    /// [`state_batch`](AsperityLaw::state_batch)`(delta, Some(delta_max))`
-    /// bit for bit, from `prepared` = [`prepare_after`](AsperityLaw::prepare_after)`(delta_max)`.
-    /// The default ignores `prepared`.
-    fn state_batch_prepared(
-        &self,
-        delta: &[f64],
-        delta_max: &[f64],
-        prepared: &[Prepared],
-        load: &mut [f64],
-        radius: &mut [f64],
-    ) {
-        let _ = prepared;
-        self.state_batch(delta, Some(delta_max), load, radius);
-    }
-
-    /// Adds to `sums` the states of asperities at interferences
-    /// `delta_i = (z_i - sep) scale` (m) on approach, or, after
-    /// `closest`, on retraction from `delta_max_i = (z_i - closest) scale`:
-    /// state `i` is [`state_batch`](AsperityLaw::state_batch)'s (bit for
-    /// bit, interferences computed in that order), added by
-    /// [`StateSums::add`](crate::numeric::lanes::StateSums::add) to lane
-    /// `i mod STATE_LANES`, in order; returns `true`. The Monte Carlo
-    /// sums of a population (heights `z`, flat at `sep`) call it first: a
-    /// law that computes its states inside the sums
-    /// ([`interpolated::InterpolatedLaw`]: no interference, load or radius
-    /// arrays) overrides it. The default adds nothing and returns `false`:
-    /// the caller then calls `state_batch` and sums the arrays itself.
-    fn add_state_sums(
-        &self,
-        z: &[f64],
-        sep: f64,
-        closest: Option<f64>,
-        scale: f64,
-        sums: &mut crate::numeric::lanes::StateSums,
-    ) -> bool {
-        let _ = (z, sep, closest, scale, sums);
-        false
-    }
-
-    /// `Some((k, c))` when the state is `P = k d sqrt(d)`, `a = c sqrt(d)`
-    /// with `d = max(delta, 0)` on both branches, evaluated in exactly that
-    /// order ([`Hertz`]): the Monte Carlo sums then fuse the state into
-    /// their lane sums (one pass over the heights). Default `None`.
-    fn root_monomials(&self) -> Option<(f64, f64)> {
-        None
-    }
-
     /// Whether the law has neither hysteresis nor memory:
     /// [`state_after`](AsperityLaw::state_after)`(delta, delta_max)` equals
     /// [`state`](AsperityLaw::state)`(delta, Approach)` bit for bit for every
@@ -368,31 +215,6 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     /// asperity's maximum interference. Default `false`.
     fn remembers_maximum(&self) -> bool {
         false
-    }
-
-    /// The most tensile point of the retraction curve
-    /// `state_after(delta, delta_max).load` over `delta <= delta_max`
-    /// (`delta_max` in m), for laws whose retraction load is unimodal in
-    /// the interference ([`RetractionMinimum`]); sums over many separations
-    /// then bound the load between two separations from its values at
-    /// them. Default `None` (shape not known: every separation is
-    /// evaluated). Checked for each law that answers by
-    /// `tests/it/retraction_minimum.rs` on dense grids.
-    fn retraction_minimum(&self, delta_max: f64) -> Option<RetractionMinimum> {
-        let _ = delta_max;
-        None
-    }
-
-    /// An interference (m) below which the load is a concave function of
-    /// the interference on every branch, whatever the history: the far
-    /// field of a long-range law, where a summit's load between two
-    /// separations lies above the chord of its loads there (interference
-    /// is linear in the separation). The pruned pull-off search then bounds
-    /// the sum of these summits' loads inside a window by the chord of the
-    /// sums at its ends, instead of by their least end
-    /// ([`RetractionMinimum::window_minimum`]). Default `None`.
-    fn concave_tail(&self) -> Option<f64> {
-        None
     }
 
     /// Values of `delta_max` at which [`state_after`](AsperityLaw::state_after)
@@ -485,36 +307,7 @@ pub trait AsperityLaw: Send + Sync + fmt::Debug {
     fn radius_scaling(&self) -> Option<RadiusScaling> {
         None
     }
-
-    /// Cost of one evaluation on the approach branch (ns; criterion medians
-    /// of `cargo bench --bench laws`, docs/performance.md). The default is
-    /// a table lookup, [`TABLE_LOOKUP_NS`].
-    fn cost_ns(&self) -> f64 {
-        TABLE_LOOKUP_NS
-    }
-
-    /// Cost (ns) of one evaluation inside a Monte Carlo sum over sorted
-    /// summits ([`state_batch`](AsperityLaw::state_batch) and the retraction
-    /// bounds), which prices a pull-off population. Default
-    /// [`cost_ns`](AsperityLaw::cost_ns); laws with vectorised or walking
-    /// batches state theirs, measured by `examples/population_cost.rs`
-    /// (docs/performance.md).
-    fn batch_cost_ns(&self) -> f64 {
-        self.cost_ns()
-    }
-
-    /// Whether a loading program should evaluate a Chebyshev table of the
-    /// law instead ([`AsperityLaw::cost_ns`] above [`TABULATE_ABOVE_NS`]);
-    /// never for laws that remember their maximum interference (a table
-    /// holds one retraction branch).
-    fn worth_tabulating(&self) -> bool {
-        self.cost_ns() > TABULATE_ABOVE_NS && !self.remembers_maximum()
-    }
 }
-
-/// Cost (ns) of one evaluation of a tabulated law (Chebyshev panel or
-/// cubic table): the default [`AsperityLaw::cost_ns`].
-pub const TABLE_LOOKUP_NS: f64 = 20.0;
 
 /// A law that is zero for `delta < onset` and, for `delta >= onset` on both
 /// branches, `P = sum c_k (delta - onset)^n_k`, `pi a^2 = sum d_k (delta -

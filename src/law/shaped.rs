@@ -19,7 +19,7 @@
 //! adhesion of the profile ([`crate::axisym::md`], Dugdale stress `sigma0`).
 
 use super::interpolated::InterpolatedLaw;
-use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor};
+use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor, LawKernels};
 use crate::axisym::{AxisymJkr, AxisymMd, MdPoint, Profile};
 use crate::error::Result;
 use std::sync::Arc;
@@ -35,9 +35,9 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-11;
 pub const TABLE_TOLERANCE: f64 = 1e-9;
 
 /// The evaluations of a tabulated shaped law, all answered by its
-/// [`InterpolatedLaw`] (field `table`), including the GW panel cursor and
-/// the Monte Carlo batch, so shaped summits take the same fast paths as
-/// every other tabulated law.
+/// [`InterpolatedLaw`] (field `table`); with `table_kernels!` (the GW panel
+/// cursor and the Monte Carlo batch) shaped summits take the same fast
+/// paths as every other tabulated law.
 macro_rules! table_evaluations {
     () => {
         #[inline]
@@ -57,7 +57,12 @@ macro_rules! table_evaluations {
         fn load_after(&self, delta: f64, delta_max: f64) -> f64 {
             self.table.load_after(delta, delta_max)
         }
+    };
+}
 
+/// The kernels of a tabulated shaped law: its table's.
+macro_rules! table_kernels {
+    () => {
         fn state_near(
             &self,
             delta: f64,
@@ -170,6 +175,8 @@ impl AsperityLaw for ShapedExact {
     }
 }
 
+impl LawKernels for ShapedExact {}
+
 /// JKR for an axisymmetric profile, tabulated for speed (the law to use).
 #[derive(Debug, Clone)]
 pub struct Shaped {
@@ -270,6 +277,10 @@ impl AsperityLaw for Shaped {
     fn zero_load_radius(&self) -> Option<f64> {
         self.exact.zero_load_radius()
     }
+}
+
+impl LawKernels for Shaped {
+    table_kernels!();
 }
 
 /// Maugis–Dugdale for an axisymmetric profile ([`crate::axisym::AxisymMd`]),
@@ -373,6 +384,8 @@ impl AsperityLaw for ShapedMdExact {
     }
 }
 
+impl LawKernels for ShapedMdExact {}
+
 /// Maugis–Dugdale for an axisymmetric profile, tabulated for speed by
 /// [`InterpolatedLaw`] (degree-6 Chebyshev panels) from the snap to the
 /// interference of 50 zero-load radii.
@@ -455,6 +468,10 @@ impl AsperityLaw for ShapedMd {
     }
 }
 
+impl LawKernels for ShapedMd {
+    table_kernels!();
+}
+
 /// The shaped law of a profile for scenes and populations: JKR
 /// ([`Shaped`]) when `stress` is `None`, Maugis–Dugdale ([`ShapedMd`]) with
 /// Dugdale stress `sigma0 = stress` (Pa) otherwise; `E*` (Pa), `w` (J/m^2).
@@ -467,7 +484,7 @@ pub fn build(
     contact_modulus: f64,
     work: f64,
     stress: Option<f64>,
-) -> Result<Arc<dyn AsperityLaw>> {
+) -> Result<Arc<dyn LawKernels>> {
     Ok(match stress {
         None => Arc::new(Shaped::new(profile, contact_modulus, work)?),
         Some(s) => Arc::new(ShapedMd::new(profile, contact_modulus, work, s)?),

@@ -40,7 +40,7 @@
 //!
 //! The retraction curve (the continuation, the attached nodes down to the
 //! jump-out, the detached branch below, the far field) is checked when the
-//! law is built for one minimum ([`AsperityLaw::retraction_minimum`]): each
+//! law is built for one minimum ([`LawKernels::retraction_minimum`]): each
 //! PCHIP piece is monotone between its nodes, so the node values decide.
 //!
 //! Above the table's last interference (the calibration reaches
@@ -49,7 +49,7 @@
 //! `A^2 = A_last^2 + Dbar - Dbar_last` (adhesion changes slowly there).
 
 use super::{
-    AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, LawCursor,
+    AsperityLaw, Branch, ContactState, Control, Instability, InstabilityBar, LawCursor, LawKernels,
     RetractionMinimum,
 };
 use crate::error::{Error, Result};
@@ -512,15 +512,63 @@ impl AsperityLaw for Tabulated {
         "tabulated"
     }
 
+    fn state(&self, delta: f64, branch: Branch) -> ContactState {
+        self.state_hinted(delta, branch, &mut [usize::MAX; 2])
+    }
+
+    fn attach_interference(&self) -> f64 {
+        self.table
+            .attach_bar
+            .map_or(f64::NEG_INFINITY, |a| a * self.scales.interference)
+    }
+
+    fn detach_interference(&self) -> f64 {
+        self.table
+            .detach_bar
+            .map_or(f64::NEG_INFINITY, |a| a * self.scales.interference)
+    }
+
+    /// `-inf`: the Lennard-Jones far field is never cut.
+    fn cutoff_interference(&self) -> f64 {
+        f64::NEG_INFINITY
+    }
+
+    /// The interference at the rigid gap [`RANGE_GAP`].
+    fn interaction_range(&self) -> f64 {
+        self.table.range_bar() * self.scales.interference
+    }
+
+    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+        let b = match branch {
+            Branch::Approach => self.table.attach_bar,
+            Branch::Retract => self.table.detach_bar,
+        };
+        b.map(|x| x * self.scales.interference)
+            .into_iter()
+            .collect()
+    }
+
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        let p = match control {
+            Control::Load => Some(self.table.pull_off),
+            Control::Displacement => self.table.jump_out,
+        }?;
+        Some(p.to_si(&self.scales))
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        self.table
+            .zero_load_radius_bar
+            .map(|a| a * self.scales.radius)
+    }
+}
+
+impl LawKernels for Tabulated {
     /// The far field in vector lanes, the walking search for the rest:
     /// 3.5-3.9 ns per evaluation on the `mems-gold` and `calibrated-gold`
     /// populations (`examples/population_cost.rs`), 5.1 on `dmt-stiff`.
     fn batch_cost_ns(&self) -> f64 {
         4.0
-    }
-
-    fn state(&self, delta: f64, branch: Branch) -> ContactState {
-        self.state_hinted(delta, branch, &mut [usize::MAX; 2])
     }
 
     /// The PCHIP piece search walks from the cursor (the same piece as
@@ -582,38 +630,6 @@ impl AsperityLaw for Tabulated {
         }
     }
 
-    fn attach_interference(&self) -> f64 {
-        self.table
-            .attach_bar
-            .map_or(f64::NEG_INFINITY, |a| a * self.scales.interference)
-    }
-
-    fn detach_interference(&self) -> f64 {
-        self.table
-            .detach_bar
-            .map_or(f64::NEG_INFINITY, |a| a * self.scales.interference)
-    }
-
-    /// `-inf`: the Lennard-Jones far field is never cut.
-    fn cutoff_interference(&self) -> f64 {
-        f64::NEG_INFINITY
-    }
-
-    /// The interference at the rigid gap [`RANGE_GAP`].
-    fn interaction_range(&self) -> f64 {
-        self.table.range_bar() * self.scales.interference
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        let b = match branch {
-            Branch::Approach => self.table.attach_bar,
-            Branch::Retract => self.table.detach_bar,
-        };
-        b.map(|x| x * self.scales.interference)
-            .into_iter()
-            .collect()
-    }
-
     /// The table's retraction is the same for every `delta_max` reaching
     /// the jump-in (no memory); unimodal when the table's nodes say so
     /// (checked when the law is built: see the module notes).
@@ -651,20 +667,6 @@ impl AsperityLaw for Tabulated {
         let first = far.load.x()[0];
         let below = self.table.detach_bar.map_or(first, |a| a.min(first));
         (far.far_h1 >= 1.21 && far.far_excess >= 0.0).then_some(below * self.scales.interference)
-    }
-
-    fn pull_off(&self, control: Control) -> Option<Instability> {
-        let p = match control {
-            Control::Load => Some(self.table.pull_off),
-            Control::Displacement => self.table.jump_out,
-        }?;
-        Some(p.to_si(&self.scales))
-    }
-
-    fn zero_load_radius(&self) -> Option<f64> {
-        self.table
-            .zero_load_radius_bar
-            .map(|a| a * self.scales.radius)
     }
 }
 

@@ -38,7 +38,7 @@
 use crate::error::{positive, Error, Result};
 use crate::gw::Accuracy;
 use crate::law::interpolated::InterpolatedLaw;
-use crate::law::{AsperityLaw, LawKind, RadiusScaling};
+use crate::law::{LawKernels, LawKind, RadiusScaling};
 use crate::material::AsperityContact;
 use std::sync::Arc;
 
@@ -46,7 +46,7 @@ use std::sync::Arc;
 /// `reference_radius`, and how to rescale it for other radii (if it can be).
 #[derive(Debug, Clone)]
 pub struct SummitLaw {
-    law: Arc<dyn AsperityLaw>,
+    law: Arc<dyn LawKernels>,
     reference_radius: f64,
     scaling: Option<RadiusScaling>,
     /// Chebyshev-table tolerance when the law is to be tabulated.
@@ -62,7 +62,7 @@ impl SummitLaw {
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `radius`.
-    pub fn fixed(law: Arc<dyn AsperityLaw>, radius: f64) -> Result<Self> {
+    pub fn fixed(law: Arc<dyn LawKernels>, radius: f64) -> Result<Self> {
         positive("radius", radius)?;
         Ok(SummitLaw {
             law,
@@ -78,7 +78,7 @@ impl SummitLaw {
     /// # Errors
     /// [`Error::OutOfRange`] naming `reference_radius` or `scaling` (exponents must be finite).
     pub fn scaled(
-        law: Arc<dyn AsperityLaw>,
+        law: Arc<dyn LawKernels>,
         reference_radius: f64,
         scaling: RadiusScaling,
     ) -> Result<Self> {
@@ -158,7 +158,7 @@ impl SummitLaw {
     }
 
     /// The law at the reference radius.
-    pub fn law(&self) -> &dyn AsperityLaw {
+    pub fn law(&self) -> &dyn LawKernels {
         self.law.as_ref()
     }
 

@@ -19,7 +19,7 @@
 //! bit-identical for any number of threads.
 //!
 //! **Speed.** Inside a block the law is called once per chunk of
-//! [`CHUNK`] summits ([`AsperityLaw::state_batch`](crate::law::AsperityLaw::state_batch):
+//! [`CHUNK`] summits ([`LawKernels::state_batch`](crate::law::LawKernels::state_batch):
 //! one virtual call per chunk, not per summit), and the six sums (load,
 //! area, count and their squares) run in [`LANES`] independent lanes:
 //! summit `i` of a chunk adds to lane `i mod LANES`, and the lanes are
@@ -401,7 +401,7 @@ impl MonteCarlo {
     /// The law's words of each summit's history after the first retraction
     /// step's closest approach, for the summits of block `start..end` that
     /// any retraction step after that approach reaches: computed once here
-    /// instead of once per step ([`AsperityLaw::prepare_after`]: a plastic
+    /// instead of once per step ([`LawKernels::prepare_after`]: a plastic
     /// summit's unloading shape). `None` for laws that prepare nothing.
     fn prepare_block(
         &self,

@@ -13,7 +13,7 @@ use crate::error::Error;
 use crate::gw::{Accuracy, GwModel, Method, RoughSurface};
 use crate::heights::{Exponential, Gaussian};
 use crate::law::RadiusScaling;
-use crate::law::{AsperityLaw, Bradley, Branch, Hertz, Jkr, LawKind};
+use crate::law::{AsperityLaw, Bradley, Branch, Hertz, Jkr, LawKernels, LawKind};
 use crate::loading::{Curve, History, LoadingModel, LoadingProgram, Observables, State};
 use crate::material::{Adhesion, AsperityContact};
 use std::sync::Arc;
@@ -58,7 +58,7 @@ fn gw(n: usize, law: &SummitLaw) -> GwModel {
     .unwrap()
 }
 
-fn law_arc(law: &SummitLaw) -> Box<dyn AsperityLaw> {
+fn law_arc(law: &SummitLaw) -> Box<dyn LawKernels> {
     // Rebuild by name: the tests only use Hertz and JKR at R.
     match law.law().name() {
         "hertz" => Box::new(Hertz::new(R, E_STAR).unwrap()),
@@ -720,7 +720,7 @@ fn brute_sequence(
     contact: &AsperityContact,
     path: &[f64],
 ) -> Vec<[f64; 3]> {
-    let laws: Vec<Box<dyn AsperityLaw>> = (0..pop.len())
+    let laws: Vec<Box<dyn LawKernels>> = (0..pop.len())
         .map(|i| {
             let c = AsperityContact::new(pop.radius(i), contact.contact_modulus, contact.adhesion)
                 .unwrap();

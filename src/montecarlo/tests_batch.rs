@@ -8,7 +8,7 @@ use crate::gw::{GwModel, RoughSurface};
 use crate::heights::Exponential;
 use crate::law::interpolated::InterpolatedLaw;
 use crate::law::plastic::{build, AdhesivePlastic, MaxInterference, PlasticLoading};
-use crate::law::{AsperityLaw, Branch, Dmt, Hertz, Jkr, Maugis, RadiusScaling};
+use crate::law::{AsperityLaw, Branch, Dmt, Hertz, Jkr, LawKernels, Maugis, RadiusScaling};
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables};
 use crate::material::plastic::{Plasticity, Variant};
 use std::sync::Arc;
@@ -22,7 +22,7 @@ fn population(n: usize, seed: u64) -> Arc<Population> {
     Arc::new(Population::sample(&spec, &Exponential::new()).unwrap())
 }
 
-fn laws() -> Vec<Arc<dyn AsperityLaw>> {
+fn laws() -> Vec<Arc<dyn LawKernels>> {
     let md = Arc::new(Maugis::new(R, E_STAR, 0.5, 0.3).unwrap());
     let plastic = build(Variant::KogutEtsion, R, E_STAR, Plasticity::gold()).unwrap();
     let loading: Arc<dyn PlasticLoading> = plastic.clone().as_loading();
@@ -296,7 +296,7 @@ fn plastic_populations_remember_each_summits_maximum() {
     let pop = population(20_000, 9);
     let plastic = build(Variant::KogutEtsion, R, E_STAR, Plasticity::gold()).unwrap();
     let loading = plastic.clone().as_loading();
-    let adhesive: Arc<dyn AsperityLaw> = Arc::new(AdhesivePlastic::new(loading, 0.5).unwrap());
+    let adhesive: Arc<dyn LawKernels> = Arc::new(AdhesivePlastic::new(loading, 0.5).unwrap());
     let program = LoadingProgram::new(4.0 * SIGMA, -0.5 * SIGMA, 20).unwrap();
     let seps = program.separations();
     // Two full cycles.

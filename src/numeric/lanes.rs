@@ -24,7 +24,7 @@ pub const STATE_LANES: usize = 8;
 /// `i mod STATE_LANES` ([`add`](Self::add)), so the order of the additions
 /// in a lane, and the sums, do not depend on who computes the states (the
 /// Monte Carlo lane sums, or a law adding its own states,
-/// [`AsperityLaw::add_state_sums`](crate::law::AsperityLaw::add_state_sums)).
+/// [`LawKernels::add_state_sums`](crate::law::LawKernels::add_state_sums)).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct StateSums {
     /// `[P, pi a^2, [a > 0], P^2, (pi a^2)^2, [a > 0]]`, each per lane.

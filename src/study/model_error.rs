@@ -226,7 +226,7 @@ pub fn measure(
 
 fn reference_run(
     plan: &Plan,
-    reference: &std::sync::Arc<dyn crate::law::AsperityLaw>,
+    reference: &std::sync::Arc<dyn crate::law::LawKernels>,
     program: &LoadingProgram,
     pull_off: Option<f64>,
     max_load: Option<f64>,

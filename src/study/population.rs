@@ -5,7 +5,7 @@
 use super::plan::population::PopulationPlan;
 use super::plan::Plan;
 use crate::error::Result;
-use crate::law::AsperityLaw;
+use crate::law::LawKernels;
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables, PullOff};
 use crate::montecarlo::pull_off::{
     candidate_separations, population_model, pull_off_evaluations, pull_off_populations,
@@ -63,11 +63,7 @@ pub struct PopulationResults {
 
 /// The summit law of the populations: the run's law for one radius (as the
 /// Monte Carlo mode sums it), rescaled per radius with a spread.
-fn summit_law(
-    plan: &Plan,
-    run_law: &Arc<dyn AsperityLaw>,
-    p: &PopulationPlan,
-) -> Result<SummitLaw> {
+fn summit_law(plan: &Plan, run_law: &Arc<dyn LawKernels>, p: &PopulationPlan) -> Result<SummitLaw> {
     let r = plan.surface.radius;
     match (p.spec.radius, plan.law.law.radius_scaling()) {
         (RadiusSpec::LogNormal { .. }, Some(s)) => SummitLaw::scaled(plan.law.law.clone(), r, s),
@@ -100,7 +96,7 @@ pub fn run(
     plan: &Plan,
     p: &PopulationPlan,
     model: &dyn LoadingModel,
-    run_law: &Arc<dyn AsperityLaw>,
+    run_law: &Arc<dyn LawKernels>,
     program: &LoadingProgram,
     pull_off: Option<PullOff>,
 ) -> Result<PopulationResults> {

@@ -6,7 +6,7 @@ use crate::electrical::heating::SpotCondition;
 use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction, StictionOdds};
 use crate::error::Result;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
-use crate::law::{AsperityLaw, LawKind};
+use crate::law::{LawKernels, LawKind};
 use crate::loading::{
     hysteresis_energy_to, Curve, History, LoadingModel, LoadingProgram, Observable, Observables,
     PullOff, State, SLOTS,
@@ -133,7 +133,7 @@ pub const MAX_SAMPLE_SPOTS: usize = 20_000;
 fn run_montecarlo(
     plan: &Plan,
     mc: &McPlan,
-    run_law: &Arc<dyn AsperityLaw>,
+    run_law: &Arc<dyn LawKernels>,
     curve: &Curve,
 ) -> Result<McResults> {
     let t0 = Instant::now();
@@ -252,7 +252,7 @@ impl Plan {
     ///
     /// # Errors
     /// As [`LawKind::build`].
-    pub fn elastic_law(&self) -> Result<Option<Arc<dyn AsperityLaw>>> {
+    pub fn elastic_law(&self) -> Result<Option<Arc<dyn LawKernels>>> {
         if !matches!(self.law.source, LawName::Plastic(_)) {
             return Ok(None);
         }
@@ -330,7 +330,7 @@ impl Plan {
     fn run_on<M: LoadingModel>(
         &self,
         model: &M,
-        run_law: Arc<dyn AsperityLaw>,
+        run_law: Arc<dyn LawKernels>,
         t0: Instant,
         progress: &(dyn Fn(usize, usize) + Sync),
     ) -> Result<Results> {

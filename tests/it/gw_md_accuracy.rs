@@ -1,6 +1,6 @@
 //! the fast path of the Maugis–Dugdale curve (Chebyshev
 //! table to 1e-7, load-only integrand evaluated a panel at a time,
-//! `AsperityLaw::load_near_batch`) meets its tolerance. The curve of
+//! `LawKernels::load_near_batch`) meets its tolerance. The curve of
 //! `benches/gw.rs` (gold microswitch, lambda = 1, `6 sigma` to `0`, both
 //! legs) at rtol 1e-6 against the same model at rtol 1e-11: every state's
 //! load, area and count within `rtol` of the integral of the magnitude of
@@ -10,7 +10,7 @@
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::interpolated::InterpolatedLaw;
-use asperity::law::{AsperityLaw, ContactState, Maugis};
+use asperity::law::{ContactState, LawKernels, Maugis};
 use asperity::loading::{
     Curve, LoadingModel, LoadingProgram, Observable, Observables, PerAsperity, State,
 };
@@ -34,7 +34,7 @@ impl PerAsperity for LoadMagnitude {
 fn model() -> GwModel {
     let s = RoughSurface::gold_microswitch();
     let g = Material::gold();
-    let exact: Arc<dyn AsperityLaw> =
+    let exact: Arc<dyn LawKernels> =
         Arc::new(Maugis::new(s.radius, contact_modulus(&g, &g), 0.5, 1.0).unwrap());
     let table = InterpolatedLaw::new(
         exact.clone(),

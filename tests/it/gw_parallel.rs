@@ -1,14 +1,14 @@
 //! the states of a curve are computed in parallel and the
 //! tabulated law's panel search walks from the previous node
-//! (`AsperityLaw::state_near`); neither changes a single bit of the results.
+//! (`LawKernels::state_near`); neither changes a single bit of the results.
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::interpolated::InterpolatedLaw;
-use asperity::law::{AsperityLaw, Branch, LawCursor, Maugis};
+use asperity::law::{Branch, LawCursor, LawKernels, Maugis};
 use asperity::loading::{Curve, LoadingModel, LoadingProgram, Observables};
 use std::sync::Arc;
 
-fn exact() -> Arc<dyn AsperityLaw> {
+fn exact() -> Arc<dyn LawKernels> {
     let s = RoughSurface::gold_microswitch();
     Arc::new(Maugis::new(s.radius, 1.0e11, 0.5, 1.0).unwrap())
 }
@@ -58,7 +58,7 @@ fn state_near_is_state_bit_for_bit_from_any_cursor() {
     let s = RoughSurface::gold_microswitch();
     let (t, e) = (table(), exact());
     let (lo, hi) = (e.cutoff_interference(), 40.0 * s.sigma);
-    let laws: [&dyn AsperityLaw; 2] = [&t, e.as_ref()];
+    let laws: [&dyn LawKernels; 2] = [&t, e.as_ref()];
     for law in laws {
         // Cursors left anywhere: fresh, far beyond the table, mid-way.
         for start in [0, 7, usize::MAX / 2] {
@@ -98,7 +98,7 @@ fn load_near_batch_is_load_bit_for_bit() {
     let s = RoughSurface::gold_microswitch();
     let (t, e) = (table(), exact());
     let (lo, hi) = (e.cutoff_interference(), 40.0 * s.sigma);
-    let laws: [&dyn AsperityLaw; 2] = [&t, e.as_ref()];
+    let laws: [&dyn LawKernels; 2] = [&t, e.as_ref()];
     for law in laws {
         // Batches of every length up to 3 lanes' worth, ascending (a
         // quadrature panel), shuffled, and reaching beyond both ends.

@@ -1,7 +1,7 @@
 //! Property tests over every single-asperity law: finite values,
 //! continuity, monotonicity on the stable branches, hysteresis order and
 //! the pull-off bounds, with Maugis–Dugdale over lambda in [1e-3, 1e3].
-use asperity::law::{AsperityLaw, Branch, Control, LawInputs, LawKind, Maugis};
+use asperity::law::{AsperityLaw, Branch, Control, LawInputs, LawKernels, LawKind, Maugis};
 use asperity::material::MaugisScales;
 use proptest::prelude::*;
 use std::f64::consts::PI;
@@ -35,7 +35,7 @@ fn setup() -> impl Strategy<Value = Setup> {
 
 /// Every law kind ([`LawKind::ALL`]): a new kind is tested without editing
 /// this file.
-fn laws(s: Setup) -> Vec<Box<dyn AsperityLaw>> {
+fn laws(s: Setup) -> Vec<Box<dyn LawKernels>> {
     let inputs = LawInputs {
         radius: s.r,
         contact_modulus: s.e,

@@ -4,11 +4,11 @@
 //! large lambda reproduces JKR asperities (Fuller–Tabor).
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Exponential;
-use asperity::law::{AsperityLaw, Jkr, Maugis};
+use asperity::law::{AsperityLaw, Jkr, LawKernels, Maugis};
 use asperity::loading::{LoadingModel, LoadingProgram, Observables};
 use std::sync::Arc;
 
-fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
+fn model(law: Arc<dyn LawKernels>) -> GwModel {
     GwModel::new(
         RoughSurface::gold_microswitch(),
         Arc::new(Exponential::new()),

@@ -5,7 +5,7 @@
 
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::{Gaussian, HeightDistribution};
-use asperity::law::{AsperityLaw, ContactState, Hertz};
+use asperity::law::{ContactState, Hertz, LawKernels};
 use asperity::loading::{
     History, LoadingModel, LoadingProgram, Observable, Observables, PerAsperity,
 };
@@ -26,9 +26,9 @@ impl PerAsperity for Perimeter {
     }
 }
 
-fn setup() -> (RoughSurface, Arc<dyn AsperityLaw>, Observables, Observable) {
+fn setup() -> (RoughSurface, Arc<dyn LawKernels>, Observables, Observable) {
     let surface = RoughSurface::new(1e12, 1e-6, 5e-9, 1e-8).unwrap();
-    let law: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(surface.radius, 5e10).unwrap());
+    let law: Arc<dyn LawKernels> = Arc::new(Hertz::new(surface.radius, 5e10).unwrap());
     let perimeter = Observable::Custom(Arc::new(Perimeter));
     let obs = Observables::ALL.with(perimeter.clone()).unwrap();
     (surface, law, obs, perimeter)

@@ -11,7 +11,7 @@
 use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::plastic::{build, AdhesivePlastic, PlasticLaw};
-use asperity::law::{AsperityLaw, Branch, Control, Hertz};
+use asperity::law::{Branch, Control, Hertz, LawKernels};
 use asperity::loading::{History, LoadingModel, Observables};
 use asperity::material::plastic::{Plasticity, Variant};
 use asperity::named::Named;
@@ -88,7 +88,7 @@ fn unloading_and_pull_off_match_mpmath_at_1e12() {
     eprintln!("unloading and pull-off: worst relative error {worst:e}");
 }
 
-fn gold_model(law: Arc<dyn AsperityLaw>) -> GwModel {
+fn gold_model(law: Arc<dyn LawKernels>) -> GwModel {
     // One summit per unit area and unit area: totals per summit.
     let surface = RoughSurface::new(1.0, 1e-6, 5e-9, 1.0).unwrap();
     GwModel::new(surface, Arc::new(Gaussian::new()), law).unwrap()

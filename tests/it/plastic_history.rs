@@ -8,7 +8,7 @@ use asperity::heights::{Gaussian, HeightDistribution};
 use asperity::law::plastic::{
     build, contact_fractions, elastic_law_warning, AdhesivePlastic, MaxInterference, PlasticLaw,
 };
-use asperity::law::{AsperityLaw, Jkr, RadiusScaling};
+use asperity::law::{Jkr, LawKernels, RadiusScaling};
 use asperity::loading::{History, LoadingModel, Observables};
 use asperity::material::plastic::{plasticity_index, Plasticity, Variant};
 use asperity::montecarlo::{MonteCarlo, Population, Radii, SummitLaw};
@@ -18,7 +18,7 @@ const R: f64 = 1e-6;
 const E: f64 = 4.796e10;
 const SIGMA: f64 = 5e-9;
 
-fn model(law: Arc<dyn AsperityLaw>) -> GwModel {
+fn model(law: Arc<dyn LawKernels>) -> GwModel {
     let surface = RoughSurface::new(1e12, R, SIGMA, 1e-8).unwrap();
     GwModel::new(surface, Arc::new(Gaussian::new()), law).unwrap()
 }

@@ -9,7 +9,9 @@
 use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::{Gaussian, HeightDistribution};
 use asperity::law::plastic::build;
-use asperity::law::{AsperityLaw, Branch, ContactState, Control, Instability, PowerForm};
+use asperity::law::{
+    AsperityLaw, Branch, ContactState, Control, Instability, LawKernels, PowerForm,
+};
 use asperity::loading::{History, LoadingModel, Observables};
 use asperity::material::plastic::{Plasticity, Variant};
 use std::sync::Arc;
@@ -65,6 +67,8 @@ impl AsperityLaw for NoPeak {
         self.0.power_form()
     }
 }
+
+impl LawKernels for NoPeak {}
 
 /// Contacts on retraction from `closest` at `d` (m), independently of the
 /// quadrature: which summits still touch is read from `state_after` alone
@@ -128,8 +132,8 @@ fn retraction_splits_at_the_contact_loss_summit() {
         let law = build(v, surface.radius, 4.796e10, Plasticity::gold())
             .unwrap()
             .as_law();
-        let plain: Arc<dyn AsperityLaw> = Arc::new(NoPeak(law.clone()));
-        let model = |l: Arc<dyn AsperityLaw>| {
+        let plain: Arc<dyn LawKernels> = Arc::new(NoPeak(law.clone()));
+        let model = |l: Arc<dyn LawKernels>| {
             GwModel::new(surface, Arc::new(Gaussian::new()), l)
                 .unwrap()
                 .with_accuracy(acc)

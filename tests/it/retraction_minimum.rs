@@ -1,5 +1,5 @@
 //! The laws that call their retraction curves unimodal
-//! (`AsperityLaw::retraction_minimum`) are checked on dense grids, and the
+//! (`LawKernels::retraction_minimum`) are checked on dense grids, and the
 //! pull-off search that prunes separations with it finds exactly the
 //! minimum of the full retraction curve (same bits), seed by seed.
 //!
@@ -11,7 +11,7 @@
 //! and no sample may fall below the stated minimum.
 
 use asperity::heights::Gaussian;
-use asperity::law::{AsperityLaw, Dmt, Hertz, Jkr, RetractionMinimum};
+use asperity::law::{Dmt, Hertz, Jkr, LawKernels, RetractionMinimum};
 use asperity::loading::{LoadingModel, LoadingProgram, Observables};
 use asperity::montecarlo::pull_off::{candidate_separations, realised_pull_off};
 use asperity::montecarlo::{MonteCarlo, Population, PopulationSpec, RadiusSpec, SummitLaw};
@@ -24,12 +24,12 @@ const R: f64 = 1e-6;
 const E_STAR: f64 = 4.8e10;
 const W: f64 = 0.5;
 
-fn adhesive_plastic(v: Variant) -> Arc<dyn AsperityLaw> {
+fn adhesive_plastic(v: Variant) -> Arc<dyn LawKernels> {
     let law = build_plastic(v, R, E_STAR, Plasticity::gold()).unwrap();
     Arc::new(AdhesivePlastic::new(law.as_loading(), W).unwrap())
 }
 
-fn plastic(v: Variant) -> Arc<dyn AsperityLaw> {
+fn plastic(v: Variant) -> Arc<dyn LawKernels> {
     build_plastic(v, R, E_STAR, Plasticity::gold())
         .unwrap()
         .as_law()
@@ -37,22 +37,22 @@ fn plastic(v: Variant) -> Arc<dyn AsperityLaw> {
 
 /// Calibrated (full Lennard-Jones solver) laws, coarse tables: one
 /// without hysteresis (mu = 0.5) and two with it.
-fn calibrated() -> Vec<(String, Arc<dyn AsperityLaw>)> {
+fn calibrated() -> Vec<(String, Arc<dyn LawKernels>)> {
     let dir = std::env::temp_dir().join(format!("asperity-retr-min-{}", std::process::id()));
     let cache = CalibrationCache::new(&dir);
     [0.5, 1.0, 2.0]
         .iter()
         .map(|&mu| {
             let p = SphereProblem::new(mu, Shape::Paraboloid, SolverOptions::coarse()).unwrap();
-            let law: Arc<dyn AsperityLaw> =
+            let law: Arc<dyn LawKernels> =
                 Arc::new(cache.get_or_compute(&p).unwrap().law(R, E_STAR, W).unwrap());
             (format!("calibrated mu={mu}"), law)
         })
         .collect()
 }
 
-fn laws() -> Vec<(String, Arc<dyn AsperityLaw>)> {
-    let mut v: Vec<(String, Arc<dyn AsperityLaw>)> = vec![
+fn laws() -> Vec<(String, Arc<dyn LawKernels>)> {
+    let mut v: Vec<(String, Arc<dyn LawKernels>)> = vec![
         ("hertz".into(), Arc::new(Hertz::new(R, E_STAR).unwrap())),
         ("jkr".into(), Arc::new(Jkr::new(R, E_STAR, W).unwrap())),
         ("dmt".into(), Arc::new(Dmt::new(R, E_STAR, W).unwrap())),
@@ -126,7 +126,7 @@ fn stated_minima_bound_dense_retraction_curves() {
     }
 }
 
-/// Laws that state a concave tail (`AsperityLaw::concave_tail`): below it
+/// Laws that state a concave tail (`LawKernels::concave_tail`): below it
 /// the load is concave in the interference on a dense grid from 1,000
 /// interference scales out to the stated interference, on approach and on
 /// retraction after any maximum (second differences at most roundoff);

@@ -9,7 +9,7 @@ use asperity::electrical::{Interaction, SpotResistance, Spreading};
 use asperity::gw::{GwModel, RoughSurface};
 use asperity::heights::{Gaussian, HeightDistribution};
 use asperity::law::plastic::KogutEtsion;
-use asperity::law::{AsperityLaw, Hertz, Jkr};
+use asperity::law::{Hertz, Jkr, LawKernels};
 use asperity::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
 use asperity::material::plastic::Plasticity;
 use asperity::numeric::quadrature::{integrate, QuadOptions};
@@ -30,11 +30,11 @@ fn surface(sigma: f64) -> RoughSurface {
     RoughSurface::new(ETA, BETA, sigma, 1e-8).unwrap()
 }
 
-fn model(law: Arc<dyn AsperityLaw>, sigma: f64) -> GwModel {
+fn model(law: Arc<dyn LawKernels>, sigma: f64) -> GwModel {
     GwModel::new(surface(sigma), Arc::new(Gaussian::new()), law).unwrap()
 }
 
-fn sphere(law: Arc<dyn AsperityLaw>, sigma: f64, estar_bulk: f64) -> RoughSphere {
+fn sphere(law: Arc<dyn LawKernels>, sigma: f64, estar_bulk: f64) -> RoughSphere {
     RoughSphere::new(
         model(law, sigma),
         R,
@@ -125,7 +125,7 @@ fn rigid_integral(m: &GwModel, d: f64, closest: Option<f64>, sigma: f64) -> f64 
 #[test]
 fn rigid_bulk_limit_of_adhesive_summits() {
     let sigma = 1e-9;
-    let jkr: Arc<dyn AsperityLaw> = Arc::new(Jkr::new(BETA, ESTAR, 0.5).unwrap());
+    let jkr: Arc<dyn LawKernels> = Arc::new(Jkr::new(BETA, ESTAR, 0.5).unwrap());
     let s = sphere(jkr.clone(), sigma, 1e6 * ESTAR);
     let m = model(jkr, sigma).with_accuracy(asperity::gw::Accuracy::new(1e-11).unwrap());
     let closest = -0.5 * sigma;
@@ -168,7 +168,7 @@ fn rigid_bulk_limit_of_adhesive_summits() {
 fn rigid_bulk_limit_of_plastic_summits() {
     let sigma = 5e-9;
     let plastic = Plasticity::new(3e8, None, 0.42).unwrap();
-    let law: Arc<dyn AsperityLaw> = Arc::new(KogutEtsion::new(BETA, ESTAR, plastic).unwrap());
+    let law: Arc<dyn LawKernels> = Arc::new(KogutEtsion::new(BETA, ESTAR, plastic).unwrap());
     assert!(law.remembers_maximum());
     let s = sphere(law.clone(), sigma, 1e6 * ESTAR);
     let m = model(law, sigma).with_accuracy(asperity::gw::Accuracy::new(1e-11).unwrap());

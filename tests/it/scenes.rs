@@ -45,7 +45,7 @@ fn every_example_scene_runs_and_matches_library_calls() {
         // The same numbers straight from the library.
         let contact = build_contact(&scene).unwrap();
         // The calibrated law is tested against the solver in src/sphere.
-        let law: Arc<dyn asperity::law::AsperityLaw> = match plan.law.source {
+        let law: Arc<dyn asperity::law::LawKernels> = match plan.law.source {
             LawName::Analytic(kind) => Arc::from(kind.build(&contact).unwrap()),
             _ => plan.law.law.clone(),
         };

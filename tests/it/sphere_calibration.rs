@@ -2,7 +2,7 @@
 //! Greenwood–Williamson integrator with the same API as the analytic laws.
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Exponential;
-use asperity::law::{AsperityLaw, Jkr};
+use asperity::law::{Jkr, LawKernels};
 use asperity::loading::{LoadingModel, LoadingProgram, Observables};
 use asperity::sphere::{Shape, SolverOptions, SphereProblem};
 use asperity::study::cache::CalibrationCache;
@@ -18,7 +18,7 @@ fn calibrated_law_in_gw_model() {
     let s = RoughSurface::gold_microswitch();
     // Soft and sticky so that asperities are strongly adhesive.
     let (e, w) = (1e9, 0.5);
-    let laws: Vec<Arc<dyn AsperityLaw>> = vec![
+    let laws: Vec<Arc<dyn LawKernels>> = vec![
         Arc::new(cal.law(s.radius, e, w).unwrap()),
         Arc::new(Jkr::new(s.radius, e, w).unwrap()),
     ];

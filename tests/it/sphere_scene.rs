@@ -4,7 +4,7 @@
 //! input naming the field.
 use asperity::gw::{Accuracy, GwModel, RoughSurface};
 use asperity::heights::Gaussian;
-use asperity::law::{AsperityLaw, Dmt, Hertz};
+use asperity::law::{Dmt, Hertz, LawKernels};
 use asperity::loading::{History, LoadingModel, Observables};
 use asperity::material::{contact_modulus, Material};
 use asperity::roughsphere::{RoughSphere, SolverOptions, SphereProfile};
@@ -73,7 +73,7 @@ fn estar() -> f64 {
 /// The library's rough sphere of the test scene with `law`, built as the
 /// plan builds it (unit reference area, the scene's rtol).
 fn direct(
-    law: Arc<dyn AsperityLaw>,
+    law: Arc<dyn LawKernels>,
     radius: f64,
     density: f64,
     beta: f64,

@@ -21,7 +21,7 @@
 use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Gaussian;
 use asperity::law::interpolated::InterpolatedLaw;
-use asperity::law::{AsperityLaw, Hertz, Maugis};
+use asperity::law::{Hertz, LawKernels, Maugis};
 use asperity::loading::{Curve, History, LoadingModel, LoadingProgram, Observables};
 use asperity::material::{contact_modulus, Material};
 use std::fmt::Write as _;
@@ -107,7 +107,7 @@ fn main() {
     let mut md = String::new();
 
     // 1. Hertz, approach only (the retraction leg equals it).
-    let hertz: Arc<dyn AsperityLaw> = Arc::new(Hertz::new(surface.radius, es).unwrap());
+    let hertz: Arc<dyn LawKernels> = Arc::new(Hertz::new(surface.radius, es).unwrap());
     let model = GwModel::new(surface, gauss.clone(), hertz).unwrap();
     let program = LoadingProgram::new(6.0 * sigma, -3.0 * sigma, POINTS).unwrap();
     let approach_only = |acc: &Accuracy| {
@@ -169,9 +169,9 @@ fn main() {
     // 2. Maugis–Dugdale at lambda = 1: approach and retraction.
     let lambda = 1.0;
     let w = 0.5;
-    let exact: Arc<dyn AsperityLaw> = Arc::new(Maugis::new(surface.radius, es, w, lambda).unwrap());
+    let exact: Arc<dyn LawKernels> = Arc::new(Maugis::new(surface.radius, es, w, lambda).unwrap());
     let program = LoadingProgram::new(6.0 * sigma, 0.0, POINTS).unwrap();
-    let curve_of = |law: Arc<dyn AsperityLaw>, acc: &Accuracy| {
+    let curve_of = |law: Arc<dyn LawKernels>, acc: &Accuracy| {
         GwModel::new(surface, gauss.clone(), law)
             .unwrap()
             .with_accuracy(*acc)

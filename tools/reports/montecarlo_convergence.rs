@@ -12,7 +12,7 @@
 //! z-scores (about 1 when the reported SE is right).
 use asperity::gw::{Accuracy, GwModel, Method, RoughSurface};
 use asperity::heights::Exponential;
-use asperity::law::{AsperityLaw, Hertz, Jkr, RadiusScaling};
+use asperity::law::{Hertz, Jkr, LawKernels, RadiusScaling};
 use asperity::loading::{History, LoadingModel, Observables};
 use asperity::montecarlo::*;
 use std::sync::Arc;
@@ -21,7 +21,7 @@ fn main() -> asperity::Result<()> {
     let (r, sigma) = (1e-6, 5e-9);
     let acc = Accuracy::new(1e-10)?.with_method(Method::Quadrature);
     let d = 0.5 * sigma;
-    let cases: [(&str, Arc<dyn AsperityLaw>, History); 2] = [
+    let cases: [(&str, Arc<dyn LawKernels>, History); 2] = [
         ("hertz", Arc::new(Hertz::new(r, 4.8e10)?), History::Approach),
         (
             "jkr",

@@ -21,7 +21,7 @@
 //! of an exponential density, the slowest-falling one), added to each
 //! error estimate.
 //!
-//! All states' nodes go through the law ([`AsperityLaw::state_batch`]),
+//! All states' nodes go through the law ([`LawKernels::state_batch`]),
 //! the density ([`HeightDistribution::pdf_batch`]) and the observables
 //! ([`Observables::evaluate_columns`]) in one long batch, so every loop
 //! runs in full vector registers; the per-state arithmetic does not
@@ -31,7 +31,7 @@
 use super::{GwModel, ROOT_RULE_DROP};
 use crate::error::Result;
 use crate::heights::HeightDistribution;
-use crate::law::{AsperityLaw, Branch, LawCursor};
+use crate::law::{Branch, LawCursor, LawKernels};
 use crate::loading::{MethodUsed, Observables, State, Totals, SLOTS};
 use crate::numeric::gauss::{gauss_rule, GaussRule, MAX_NODES};
 
@@ -274,7 +274,7 @@ impl GwModel {
         obs: &Observables,
         scratch: &mut Scratch,
     ) -> Vec<Sums> {
-        let law: &dyn AsperityLaw = self.law.as_ref();
+        let law: &dyn LawKernels = self.law.as_ref();
         let dist: &dyn HeightDistribution = self.distribution.as_ref();
         let sigma = self.surface.sigma;
         let cutoff = law.cutoff_interference();

@@ -28,7 +28,7 @@ use crate::law::jkr::{
     interference_bar, load_bar, stable_radius_bar, JUMP_OUT_INTERFERENCE, JUMP_OUT_LOAD,
     JUMP_OUT_RADIUS, PULL_OFF_LOAD, PULL_OFF_RADIUS, ZERO_LOAD_RADIUS,
 };
-use crate::law::{AsperityLaw, Branch, ContactState, Control, Instability, Prepared};
+use crate::law::{AsperityLaw, Branch, ContactState, Control, Instability, LawKernels, Prepared};
 use crate::material::MaugisScales;
 use std::sync::Arc;
 
@@ -247,6 +247,40 @@ impl AsperityLaw for AdhesivePlastic {
         true
     }
 
+    fn attach_interference(&self) -> f64 {
+        0.0
+    }
+
+    /// Jump-out of the elastic (never yielded) asperity; after plastic
+    /// loading see [`AdhesivePlastic::detach_after`].
+    fn detach_interference(&self) -> f64 {
+        JUMP_OUT_INTERFERENCE * self.elastic.interference
+    }
+
+    fn cutoff_interference(&self) -> f64 {
+        self.cutoff
+    }
+
+    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+        let mut b = self.loading.breakpoint_interferences();
+        if branch == Branch::Retract {
+            b.insert(0, self.detach_interference());
+        }
+        b
+    }
+
+    /// Pull-off of the elastic (never yielded) asperity, JKR; after plastic
+    /// loading see [`AdhesivePlastic::pull_off_after`].
+    fn pull_off(&self, control: Control) -> Option<Instability> {
+        Some(self.pull_off_after(0.0, control))
+    }
+
+    fn zero_load_radius(&self) -> Option<f64> {
+        Some(ZERO_LOAD_RADIUS * self.elastic.radius)
+    }
+}
+
+impl LawKernels for AdhesivePlastic {
     /// JKR on the flattened shape: the load-controlled pull-off after
     /// `delta_max` ([`AdhesivePlastic::pull_off_after`]); a summit that
     /// never touched stays free.
@@ -305,7 +339,7 @@ impl AsperityLaw for AdhesivePlastic {
 
     /// The shapes of a block of states prepared at once and their JKR
     /// roots in SIMD lanes
-    /// ([`state_batch_prepared`](AsperityLaw::state_batch_prepared)), bit
+    /// ([`state_batch_prepared`](LawKernels::state_batch_prepared)), bit
     /// for bit `state_after` on retraction and `state` on approach (the
     /// state after its own interference as peak, `state_after(delta,
     /// delta)`; for NaN after 0, as `state` takes it): what a GW quadrature
@@ -339,7 +373,7 @@ impl AsperityLaw for AdhesivePlastic {
         }
     }
 
-    /// [`state_batch`](AsperityLaw::state_batch)'s loads (the radii into a
+    /// [`state_batch`](LawKernels::state_batch)'s loads (the radii into a
     /// scratch block), bit for bit `load_after` and `load`.
     fn load_near_batch(
         &self,
@@ -385,20 +419,6 @@ impl AsperityLaw for AdhesivePlastic {
         }
     }
 
-    fn attach_interference(&self) -> f64 {
-        0.0
-    }
-
-    /// Jump-out of the elastic (never yielded) asperity; after plastic
-    /// loading see [`AdhesivePlastic::detach_after`].
-    fn detach_interference(&self) -> f64 {
-        JUMP_OUT_INTERFERENCE * self.elastic.interference
-    }
-
-    fn cutoff_interference(&self) -> f64 {
-        self.cutoff
-    }
-
     /// Measured: retraction sums over gold summits (JKR on the flattened
     /// shape, `asperity run examples/scenes/gold-rf-mems-plastic.toml`)
     /// cost about 370 ns per summit.
@@ -407,27 +427,9 @@ impl AsperityLaw for AdhesivePlastic {
     }
 
     /// Measured on the same populations with the shapes prepared once per
-    /// summit ([`AsperityLaw::prepare_after`]): 28.7 ns per evaluation
+    /// summit ([`LawKernels::prepare_after`]): 28.7 ns per evaluation
     /// (27.7 ns on 2026-11-28, `examples/population_cost.rs`).
     fn batch_cost_ns(&self) -> f64 {
         28.7
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        let mut b = self.loading.breakpoint_interferences();
-        if branch == Branch::Retract {
-            b.insert(0, self.detach_interference());
-        }
-        b
-    }
-
-    /// Pull-off of the elastic (never yielded) asperity, JKR; after plastic
-    /// loading see [`AdhesivePlastic::pull_off_after`].
-    fn pull_off(&self, control: Control) -> Option<Instability> {
-        Some(self.pull_off_after(0.0, control))
-    }
-
-    fn zero_load_radius(&self) -> Option<f64> {
-        Some(ZERO_LOAD_RADIUS * self.elastic.radius)
     }
 }

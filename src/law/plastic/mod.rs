@@ -10,8 +10,8 @@
 //!
 //! Loading (`state(delta, _)`) follows the law's fit; the fit's
 //! breakpoints (critical-interference multiples) are returned by
-//! [`AsperityLaw::breakpoints`] so quadrature splits there. After the
-//! interference reached `delta_max`, [`AsperityLaw::state_after`] unloads
+//! [`AsperityLaw::breakpoints`](crate::law::AsperityLaw::breakpoints) so quadrature splits there. After the
+//! interference reached `delta_max`, [`AsperityLaw::state_after`](crate::law::AsperityLaw::state_after) unloads
 //! (and reloads) elastically from the flattened shape with a residual
 //! interference ([`unloading`]); [`AdhesivePlastic`] adds JKR adhesion on
 //! that shape, so the pull-off grows with the maximum load reached.
@@ -44,7 +44,7 @@ pub use kogut_etsion::KogutEtsion;
 pub use unloading::{MaxInterference, Unloading};
 pub use zhao_maietta_chang::ZhaoMaiettaChang;
 
-use super::{AsperityLaw, ContactState, Hertz};
+use super::{ContactState, Hertz, LawKernels};
 use crate::error::{positive, Result};
 use crate::material::plastic::{Plasticity, RegimeLimits, Variant};
 use std::fmt;
@@ -55,7 +55,7 @@ use std::sync::Arc;
 pub const RADIUS_SCALING_EXPONENTS: (f64, f64, f64) = (1.0, 2.0, 1.0);
 
 /// The virgin loading curve of an elastic-plastic law: what each variant
-/// provides; [`AsperityLaw`] (with unloading) is built on it.
+/// provides; [`AsperityLaw`](crate::law::AsperityLaw) (with unloading) is built on it.
 pub trait PlasticLoading: Send + Sync + fmt::Debug {
     /// Which variant.
     fn variant(&self) -> Variant;
@@ -175,16 +175,16 @@ pub fn build(
     })
 }
 
-/// An elastic-plastic law usable both as an [`AsperityLaw`] and through its
-/// loading curve.
-pub trait PlasticLaw: AsperityLaw + PlasticLoading {
-    /// Upcast to the plain law trait.
-    fn as_law(self: Arc<Self>) -> Arc<dyn AsperityLaw>;
+/// An elastic-plastic law usable both as an [`AsperityLaw`](crate::law::AsperityLaw) (with its
+/// [`LawKernels`]) and through its loading curve.
+pub trait PlasticLaw: LawKernels + PlasticLoading {
+    /// Upcast to the law with its kernels (what integrators hold).
+    fn as_law(self: Arc<Self>) -> Arc<dyn LawKernels>;
     /// Upcast to the loading trait.
     fn as_loading(self: Arc<Self>) -> Arc<dyn PlasticLoading>;
 }
 
-/// Implements [`AsperityLaw`] (and [`PlasticLaw`]) for a [`PlasticLoading`]:
+/// Implements [`AsperityLaw`](crate::law::AsperityLaw), [`LawKernels`] and [`PlasticLaw`] for a [`PlasticLoading`]:
 /// loading on both branches, elastic unloading from the flattened shape via
 /// `state_after`, no adhesion.
 macro_rules! plastic_asperity_law {
@@ -221,21 +221,6 @@ macro_rules! plastic_asperity_law {
             /// The flattening is permanent: unloading depends on `delta_max`.
             fn remembers_maximum(&self) -> bool {
                 true
-            }
-
-            /// Elastic unloading of the flattened shape: the load rises
-            /// with the interference, zero below the residual one.
-            fn retraction_minimum(
-                &self,
-                _delta_max: f64,
-            ) -> Option<$crate::law::RetractionMinimum> {
-                Some($crate::law::RetractionMinimum::MONOTONE)
-            }
-
-            /// Measured: a Monte Carlo retraction sum of Kogut–Etsion summits
-            /// costs about 42 ns per summit (docs/performance.md).
-            fn cost_ns(&self) -> f64 {
-                42.0
             }
 
             /// Interferences scale with `R` (the critical interference is
@@ -276,8 +261,25 @@ macro_rules! plastic_asperity_law {
             }
         }
 
+        impl $crate::law::LawKernels for $t {
+            /// Elastic unloading of the flattened shape: the load rises
+            /// with the interference, zero below the residual one.
+            fn retraction_minimum(
+                &self,
+                _delta_max: f64,
+            ) -> Option<$crate::law::RetractionMinimum> {
+                Some($crate::law::RetractionMinimum::MONOTONE)
+            }
+
+            /// Measured: a Monte Carlo retraction sum of Kogut–Etsion summits
+            /// costs about 42 ns per summit (docs/performance.md).
+            fn cost_ns(&self) -> f64 {
+                42.0
+            }
+        }
+
         impl $crate::law::plastic::PlasticLaw for $t {
-            fn as_law(self: std::sync::Arc<Self>) -> std::sync::Arc<dyn $crate::law::AsperityLaw> {
+            fn as_law(self: std::sync::Arc<Self>) -> std::sync::Arc<dyn $crate::law::LawKernels> {
                 self
             }
             fn as_loading(

@@ -1,5 +1,5 @@
 use super::*;
-use crate::law::{Branch, Control, Jkr};
+use crate::law::{AsperityLaw, Branch, Control, Jkr};
 use crate::material::plastic::Plasticity;
 
 const R: f64 = 1e-6;

@@ -4,7 +4,7 @@
 //!
 //! On retraction every summit's load is a unimodal function of its
 //! interference when the law says so
-//! ([`AsperityLaw::retraction_minimum`](crate::law::AsperityLaw::retraction_minimum)):
+//! ([`LawKernels::retraction_minimum`](crate::law::LawKernels::retraction_minimum)):
 //! its least value between two separations is its load at one of them, or
 //! its own most tensile load when that lies between
 //! ([`RetractionMinimum::window_minimum`](crate::law::RetractionMinimum::window_minimum)).
@@ -17,7 +17,7 @@ use super::{MonteCarlo, CHUNK};
 /// bounds of its load between consecutive ones.
 ///
 /// Between separations `k` and `k + 1`, the summits whose load is concave
-/// there ([`AsperityLaw::concave_tail`](crate::law::AsperityLaw::concave_tail):
+/// there ([`LawKernels::concave_tail`](crate::law::LawKernels::concave_tail):
 /// the far field of a long-range law) are bounded by the chord of their
 /// summed loads at the two ends, the others by their least value
 /// ([`RetractionMinimum::window_minimum`](crate::law::RetractionMinimum::window_minimum)):

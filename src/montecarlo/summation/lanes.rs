@@ -6,7 +6,7 @@
 //! tabulated law's by the law itself ([`Accumulator::add_law_states`]).
 
 use super::{Partial, CHUNK, LANES};
-use crate::law::{AsperityLaw, ContactState};
+use crate::law::{ContactState, LawKernels};
 use crate::loading::{Observables, EXTRA_SLOTS};
 use crate::numeric::lanes::StateSums;
 
@@ -62,7 +62,7 @@ impl Accumulator {
 
     /// [`add_chunk`](Self::add_chunk) of the states `P = k d sqrt(d)`,
     /// `a = c sqrt(d)`, `d = max((z - sep) scale, 0)` of heights `z`
-    /// ([`AsperityLaw::root_monomials`](crate::law::AsperityLaw::root_monomials)),
+    /// ([`LawKernels::root_monomials`](crate::law::LawKernels::root_monomials)),
     /// computed in the same pass: the same lanes, the same operations, so
     /// the same bits (the padding the chunk path adds is `+0.0` to lanes
     /// that hold non-negative sums, which changes nothing).
@@ -80,12 +80,12 @@ impl Accumulator {
 
     /// [`add_chunk`](Self::add_chunk) of `law`'s states at interferences
     /// `(z - sep) scale` (after `(z - closest) scale`), summed by the law
-    /// in the same lanes and order ([`AsperityLaw::add_state_sums`]), so
+    /// in the same lanes and order ([`LawKernels::add_state_sums`]), so
     /// the same bits; `false` (nothing added) when the law does not fuse.
     #[inline]
     pub(super) fn add_law_states(
         &mut self,
-        law: &dyn AsperityLaw,
+        law: &dyn LawKernels,
         z: &[f64],
         sep: f64,
         closest: Option<f64>,

@@ -36,7 +36,7 @@ impl Plan {
                     contact.contact_modulus,
                     contact.adhesion.work(),
                 )?;
-                Some(std::sync::Arc::new(l) as std::sync::Arc<dyn crate::law::AsperityLaw>)
+                Some(std::sync::Arc::new(l) as std::sync::Arc<dyn crate::law::LawKernels>)
             }
             _ => None,
         };

@@ -7,7 +7,7 @@ use super::inputs::CalibrationInput;
 use super::PlanMode;
 use crate::error::{Error, Result};
 use crate::law::errors::LawErrorTable;
-use crate::law::{AsperityLaw, LawKind};
+use crate::law::{LawKernels, LawKind};
 use crate::material::plastic::Variant;
 use crate::material::{AsperityContact, MaugisScales};
 use crate::study::scene::{LawName, Scene};
@@ -22,7 +22,7 @@ pub struct LawChoice {
     pub source: LawName,
     /// The built law (for a previewed, not yet calibrated law: Maugis–Dugdale
     /// at the same `lambda`, for the range decisions only).
-    pub law: Arc<dyn AsperityLaw>,
+    pub law: Arc<dyn LawKernels>,
     /// The law's measured error against the full Lennard-Jones solution at
     /// this Tabor parameter (relative, from [`LawErrorTable`]), if known.
     pub measured_error: Option<f64>,
@@ -88,7 +88,7 @@ pub(super) fn choose(
         // Calibrated without adhesion was answered above (w == 0).
         LawName::Calibrated => (LawKind::Hertz, LawReason::NoAdhesion),
     };
-    let law: Arc<dyn AsperityLaw> = Arc::from(kind.build(contact)?);
+    let law: Arc<dyn LawKernels> = Arc::from(kind.build(contact)?);
     decisions.push(Decision::Law {
         name: kind.name().into(),
         reason,
@@ -125,7 +125,7 @@ fn calibrated(
         });
         return Err(Error::invalid("accuracy.rtol", format!("{why}{auto}")));
     }
-    let law: Arc<dyn AsperityLaw> = match calibration {
+    let law: Arc<dyn LawKernels> = match calibration {
         Some(c) => Arc::new(c.calibration.law(
             contact.radius,
             contact.contact_modulus,
@@ -184,7 +184,7 @@ fn plastic(
         0.0
     };
     let negligible = jkr_scale < budget.negligible_adhesion() * scene.surface.sigma;
-    let law: Arc<dyn AsperityLaw> = if w > 0.0 && !negligible {
+    let law: Arc<dyn LawKernels> = if w > 0.0 && !negligible {
         Arc::new(AdhesivePlastic::new(loading.as_loading(), w)?)
     } else {
         PlasticLaw::as_law(loading)

@@ -58,7 +58,7 @@ use crate::error::Result;
 use crate::gw::{Accuracy, GwModel, RoughSurface};
 use crate::heights::HeightDistribution;
 use crate::law::interpolated::InterpolatedLaw;
-use crate::law::AsperityLaw;
+use crate::law::LawKernels;
 use crate::loading::LoadingModel;
 use crate::material::plastic::Plasticity;
 use crate::material::AsperityContact;
@@ -111,7 +111,7 @@ pub struct Plan {
     pub law: LawChoice,
     /// The full-solver (calibrated) law the model error of an analytic
     /// adhesive law is measured against (`accuracy.model_error`).
-    pub reference: Option<Arc<dyn AsperityLaw>>,
+    pub reference: Option<Arc<dyn LawKernels>>,
     /// The quantities of the run's states (load, area, count, the
     /// resistance with `[electrical]`, ...) and the observables the curve
     /// totals for them (load also when only the hysteresis energy needs
@@ -254,7 +254,7 @@ impl Plan {
     ///
     /// # Errors
     /// As [`InterpolatedLaw::new`].
-    pub fn run_law(&self) -> Result<Arc<dyn AsperityLaw>> {
+    pub fn run_law(&self) -> Result<Arc<dyn LawKernels>> {
         Ok(match self.tabulation {
             Some(((lo, hi), tol)) => {
                 Arc::new(InterpolatedLaw::new(self.law.law.clone(), lo, hi, tol)?)
@@ -267,7 +267,7 @@ impl Plan {
     ///
     /// # Errors
     /// As [`GwModel::new`].
-    pub fn model_with(&self, law: Arc<dyn AsperityLaw>) -> Result<GwModel> {
+    pub fn model_with(&self, law: Arc<dyn LawKernels>) -> Result<GwModel> {
         Ok(
             GwModel::new(self.surface, self.distribution.clone(), law)?
                 .with_accuracy(self.accuracy),
