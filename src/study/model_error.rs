@@ -12,7 +12,7 @@ use super::plan::Plan;
 use crate::error::Result;
 use crate::gw::Accuracy;
 use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
-use crate::study::scene::LawName;
+use crate::study::plan::FullSolver;
 
 /// Loosest relative tolerance of the reference run: the model errors it
 /// measures are stated to about this (they are percent-level or more).
@@ -169,15 +169,15 @@ pub fn measure(
              surface.nominal_area) measures the law's share",
         ));
     }
-    match plan.law.source {
-        LawName::Calibrated => {
+    match plan.law.facts.full_solver {
+        FullSolver::Itself => {
             return Ok(ModelError::unmeasured(
                 "this law is the full Lennard-Jones sphere solver's (tabulated to rtol/10): its \
                  model error is that of the Lennard-Jones continuum and GW's independent \
                  summits, not measured here",
             ))
         }
-        LawName::Plastic(_) | LawName::Shaped => {
+        FullSolver::NoCounterpart => {
             return Ok(ModelError::unmeasured(
                 "no full-solver counterpart for this law (the sphere solver is elastic and \
                  paraboloidal): its adhesion is short-range JKR, which neglects the \
@@ -185,7 +185,7 @@ pub fn measure(
                  surface measures what that costs for elastic summits",
             ))
         }
-        _ => {}
+        FullSolver::Reference => {}
     }
     let Some(reference) = &plan.reference else {
         let mu = plan.contact.tabor();

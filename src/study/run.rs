@@ -1,12 +1,12 @@
 //! Executing a [`Plan`]: the loading program, pull-off and hysteresis energy.
 
 use super::plan::{McPlan, Plan};
-use super::scene::{LawName, ProgramTarget};
+use super::scene::ProgramTarget;
 use crate::electrical::heating::SpotCondition;
 use crate::electrical::{population_spots, Interaction, SampleResistance, Stiction, StictionOdds};
 use crate::error::Result;
 use crate::law::plastic::{contact_fractions, RegimeFractions};
-use crate::law::{LawKernels, LawKind};
+use crate::law::LawKernels;
 use crate::loading::{
     hysteresis_energy_to, Curve, History, LoadingModel, LoadingProgram, Observable, Observables,
     PullOff, State, SLOTS,
@@ -228,10 +228,7 @@ impl Plan {
     /// diagnostic).
     pub fn regimes_at(&self, separation: f64) -> Option<RegimeFractions> {
         let p = self.plasticity?;
-        let variant = match self.law.source {
-            LawName::Plastic(v) => v,
-            _ => Variant::KogutEtsion,
-        };
+        let variant = self.law.facts.plastic.unwrap_or(Variant::KogutEtsion);
         let limits = RegimeLimits::new(
             variant,
             &p,
@@ -251,15 +248,10 @@ impl Plan {
     /// comparison; `None` for other laws.
     ///
     /// # Errors
-    /// As [`LawKind::build`].
+    /// As the analytic constructor of [`LawFacts::elastic_limit`](super::plan::LawFacts::elastic_limit).
     pub fn elastic_law(&self) -> Result<Option<Arc<dyn LawKernels>>> {
-        if !matches!(self.law.source, LawName::Plastic(_)) {
+        let Some(kind) = self.law.facts.elastic_limit else {
             return Ok(None);
-        }
-        let kind = if self.contact.adhesion.work() > 0.0 {
-            LawKind::Jkr
-        } else {
-            LawKind::Hertz
         };
         Ok(Some(Arc::from(kind.build(&self.contact)?)))
     }

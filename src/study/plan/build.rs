@@ -3,8 +3,8 @@
 //! plasticity diagnostics, the program, the legs, the population.
 
 use super::{
-    law, outputs, program, resistance, tabulation, Budget, Decision, Inputs, LawChoice, McPlan,
-    Plan, PlanMode, TopographyPlan,
+    law, outputs, program, resistance, tabulation, Budget, Decision, FullSolver, Inputs, LawChoice,
+    McPlan, Plan, PlanMode, TopographyPlan,
 };
 use crate::electrical::Switch;
 use crate::error::Result;
@@ -14,7 +14,7 @@ use crate::material::plastic::Plasticity;
 use crate::material::AsperityContact;
 use crate::study::quantity::QuantitySet;
 use crate::study::scene::{
-    build_contact, build_distribution, build_surface, LawName, MonteCarloSpec, Scene,
+    build_contact, build_distribution, build_surface, MonteCarloSpec, Scene,
 };
 
 impl Plan {
@@ -29,8 +29,8 @@ impl Plan {
         let budget = Budget::new(scene.accuracy.rtol);
         let calibration = inputs.calibration.as_ref();
         let law = law::choose(scene, &contact, mode, &budget, calibration, &mut decisions)?;
-        let reference = match (law.source, calibration) {
-            (LawName::Analytic(_), Some(c)) if contact.adhesion.work() > 0.0 => {
+        let reference = match (law.facts.full_solver, calibration) {
+            (FullSolver::Reference, Some(c)) if contact.adhesion.work() > 0.0 => {
                 let l = c.calibration.law(
                     contact.radius,
                     contact.contact_modulus,
@@ -159,7 +159,7 @@ fn plasticity_decision(
     let psi = surface
         .plasticity_index(contact.contact_modulus, p.hardness())
         .map_err(|e| e.in_table("materials"))?;
-    let plastic_law = matches!(law.source, LawName::Plastic(_));
+    let plastic_law = law.facts.plastic.is_some();
     decisions.push(Decision::Plasticity {
         psi,
         hardness: p.hardness(),

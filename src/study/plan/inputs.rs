@@ -6,10 +6,11 @@
 //! a preview (`asperity run --plan`) may use: nothing is computed, read
 //! beyond the cache, or written.
 
+use super::FullSolver;
 use crate::error::{Error, Result};
 use crate::sphere::{Calibration, Shape, SolverOptions, SphereProblem};
 use crate::study::cache::CalibrationCache;
-use crate::study::scene::{build_contact, resolve, LawName, Resolved, Scene};
+use crate::study::scene::{build_contact, resolve, Resolved, Scene};
 use std::path::{Path, PathBuf};
 
 /// What a plan needs beyond the scene.
@@ -62,17 +63,18 @@ pub enum Pending {
 fn problem(scene: &Scene) -> Result<Option<SphereProblem>> {
     // The full-solver law is the calibrated law itself, and the reference
     // of an analytic adhesive law's model error (or of `auto`'s choice).
-    let needed = match scene.law.kind {
-        LawName::Calibrated => true,
-        LawName::Auto | LawName::Analytic(_) => scene.accuracy.model_error,
-        _ => false,
+    let need = FullSolver::of_scene(scene.law.kind);
+    let needed = match need {
+        FullSolver::Itself => true,
+        FullSolver::Reference => scene.accuracy.model_error,
+        FullSolver::NoCounterpart => false,
     };
     if !needed || !(scene.adhesion.w > 0.0) {
         return Ok(None);
     }
     let contact = build_contact(scene)?;
     let mu = contact.tabor();
-    if scene.law.kind != LawName::Calibrated && !solver_reaches(mu) {
+    if need != FullSolver::Itself && !solver_reaches(mu) {
         // No reference there: the model error says so, `auto` keeps to the
         // analytic laws (JKR is the exact large-mu limit).
         return Ok(None);

@@ -16,16 +16,88 @@ use std::sync::Arc;
 /// The law a plan uses.
 #[derive(Debug, Clone)]
 pub struct LawChoice {
-    /// Its name as shown (`"hertz"`, `"maugis"`, `"shaped (cone)"`, ...).
+    /// Its name as shown (`"hertz"`, `"maugis"`, `"shaped (cone)"`, ...):
+    /// for people, never compared.
     pub name: String,
-    /// Which law it is (never [`LawName::Auto`]: the choice is made).
+    /// Which law it is (never [`LawName::Auto`]: the choice is made): the
+    /// planner's record of its decision. The run asks [`LawChoice::facts`]
+    /// and the law itself instead.
     pub source: LawName,
+    /// What the run needs to know about the law, decided with it.
+    pub facts: LawFacts,
     /// The built law (for a previewed, not yet calibrated law: Maugis–Dugdale
     /// at the same `lambda`, for the range decisions only).
     pub law: Arc<dyn LawKernels>,
     /// The law's measured error against the full Lennard-Jones solution at
     /// this Tabor parameter (relative, from [`LawErrorTable`]), if known.
     pub measured_error: Option<f64>,
+}
+
+/// What the run needs to know about a plan's law beyond what the law itself
+/// answers ([`AsperityLaw`](crate::law::AsperityLaw)'s capabilities: history,
+/// radius scaling, power form, ...), decided once by the planner from the
+/// scene's `law.kind`: the run asks these, never the law's name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LawFacts {
+    /// The variant of an elastic-plastic law (its contact regimes at the
+    /// closest approach); `None` for an elastic law, whose regimes are
+    /// diagnosed with Kogut–Etsion's limits.
+    pub plastic: Option<Variant>,
+    /// For an elastic-plastic law, the elastic law it reduces to as the
+    /// plasticity index goes to 0 (JKR with adhesion, Hertz without), built
+    /// by the run for the load–area comparison; `None` for other laws.
+    pub elastic_limit: Option<LawKind>,
+    /// The law's relation to the full Lennard-Jones sphere solver, which
+    /// decides whether its model error is measured.
+    pub full_solver: FullSolver,
+    /// The analytic law to build for another summit radius (a measured
+    /// map's comparison with the model of its moments, whose radius
+    /// differs); `None` for a law that cannot be rebuilt so (calibrated:
+    /// a table of one radius; elastic-plastic and shaped laws: not offered).
+    pub rebuild: Option<LawKind>,
+}
+
+impl LawFacts {
+    /// An analytic elastic law of `kind`: rebuildable, measured against the
+    /// full solver.
+    fn analytic(kind: LawKind) -> LawFacts {
+        LawFacts {
+            plastic: None,
+            elastic_limit: None,
+            full_solver: FullSolver::Reference,
+            rebuild: Some(kind),
+        }
+    }
+}
+
+/// A law's relation to the full Lennard-Jones sphere solver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FullSolver {
+    /// The law is the solver's own (`calibrated`, tabulated): its model
+    /// error is that of the Lennard-Jones continuum and GW's independent
+    /// summits, not measured.
+    Itself,
+    /// An analytic elastic law: with adhesion, the solver's law at the same
+    /// Tabor parameter is the reference of its model error
+    /// (`accuracy.model_error`, where the solver reaches that parameter).
+    Reference,
+    /// No full-solver counterpart: elastic-plastic and shaped laws (the
+    /// solver is elastic and paraboloidal).
+    NoCounterpart,
+}
+
+impl FullSolver {
+    /// What the law a scene names in `law.kind` needs of the full solver,
+    /// before the law is chosen (`auto` may choose an analytic law or the
+    /// calibrated one: the solver serves it as a reference, or as the law
+    /// when the analytic laws miss the tolerance).
+    pub fn of_scene(kind: LawName) -> FullSolver {
+        match kind {
+            LawName::Calibrated => FullSolver::Itself,
+            LawName::Auto | LawName::Analytic(_) => FullSolver::Reference,
+            LawName::Plastic(_) | LawName::Shaped => FullSolver::NoCounterpart,
+        }
+    }
 }
 
 /// Picks the law and records the decision.
@@ -98,6 +170,7 @@ pub(super) fn choose(
     Ok(LawChoice {
         name: kind.name().to_string(),
         source: LawName::Analytic(kind),
+        facts: LawFacts::analytic(kind),
         law,
         measured_error: table.error(kind, mu),
     })
@@ -147,6 +220,12 @@ fn calibrated(
     Ok(LawChoice {
         name: "calibrated".into(),
         source: LawName::Calibrated,
+        facts: LawFacts {
+            plastic: None,
+            elastic_limit: None,
+            full_solver: FullSolver::Itself,
+            rebuild: None,
+        },
         law,
         measured_error: None,
     })
@@ -203,6 +282,16 @@ fn plastic(
     Ok(LawChoice {
         name: variant.name().into(),
         source: LawName::Plastic(variant),
+        facts: LawFacts {
+            plastic: Some(variant),
+            elastic_limit: Some(if w > 0.0 {
+                LawKind::Jkr
+            } else {
+                LawKind::Hertz
+            }),
+            full_solver: FullSolver::NoCounterpart,
+            rebuild: None,
+        },
         law,
         measured_error: None,
     })
@@ -238,6 +327,12 @@ fn shaped(
     Ok(LawChoice {
         name,
         source: LawName::Shaped,
+        facts: LawFacts {
+            plastic: None,
+            elastic_limit: None,
+            full_solver: FullSolver::NoCounterpart,
+            rebuild: None,
+        },
         law: Arc::new(law),
         measured_error: None,
     })

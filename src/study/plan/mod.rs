@@ -43,7 +43,7 @@ pub use budget::{
 };
 pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
 pub use inputs::{CalibrationInput, Inputs, Pending};
-pub use law::{check_calibrated_rtol, LawChoice};
+pub use law::{check_calibrated_rtol, FullSolver, LawChoice, LawFacts};
 pub use montecarlo::McPlan;
 pub use outputs::accuracy_of;
 use outputs::{outputs, resistance};

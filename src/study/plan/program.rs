@@ -84,7 +84,7 @@ pub(super) fn program(
     Ok((target, start, listed))
 }
 
-/// The table of an expensive law ([`LawKind::worth_tabulating`](crate::law::LawKind::worth_tabulating)):
+/// The table of an expensive law ([`LawKernels::worth_tabulating`](crate::law::LawKernels::worth_tabulating)):
 /// the interference interval the program reaches ([`GwModel::reachable_interferences`])
 /// and the table's tolerance; `None` when not worth it.
 pub(super) fn tabulation(

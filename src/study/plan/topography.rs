@@ -7,7 +7,6 @@ use crate::error::{Error, Result};
 use crate::law::LawKind;
 use crate::material::AsperityContact;
 use crate::montecarlo::SummitLaw;
-use crate::study::scene::LawName;
 use crate::study::scene::{Resolved, Scene, SummitSource, TopographySpec};
 use crate::surface::Characterisation;
 use std::path::PathBuf;
@@ -37,10 +36,7 @@ impl TopographyPlan {
         contact: &AsperityContact,
     ) -> Result<TopographyPlan> {
         let spec = resolved.spec.clone();
-        let kind = match law.source {
-            LawName::Analytic(k) => Some(k),
-            _ => None,
-        };
+        let kind = law.facts.rebuild;
         let needs_sum = spec.summits == SummitSource::Measured || spec.compare;
         let summit_law = if needs_sum {
             let field = if spec.summits == SummitSource::Measured {
