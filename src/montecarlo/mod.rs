@@ -54,7 +54,7 @@ mod summation;
 pub use comparison::{contacts_of, Comparison, MIN_SUMMITS_FOR_Z};
 pub use measured::MeasuredSummits;
 pub use population::{Population, PopulationSpec, Radii, RadiusSpec, MAX_SUMMITS, SAMPLING_BLOCK};
-pub use scaling::{SummitLaw, TABLE_TOLERANCE_FRACTION};
+pub use scaling::{table_tolerance, SummitLaw, TABLE_TOLERANCE_FRACTION};
 pub use summation::{MonteCarlo, RetractionBounds, CHUNK, LANES, SERIAL_BELOW, SUM_BLOCK};
 
 #[cfg(test)]

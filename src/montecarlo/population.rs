@@ -35,7 +35,7 @@
 use crate::error::{non_negative, positive, Error, Result};
 use crate::gw::RoughSurface;
 use crate::heights::HeightDistribution;
-use crate::numeric::mix::splitmix64;
+use crate::numeric::mix::{derive_seed, Stream};
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{Rng, SeedableRng};
 use rand_distr::{Distribution, StandardNormal};
@@ -372,13 +372,10 @@ fn sort_together(heights: &mut [f64], radii: Option<&mut Vec<f64>>) {
     }
 }
 
-/// Seed offset of the radius streams (distinct from every height stream).
-const RADIUS_STREAM: u64 = 0x5241_4449_5553_0001;
-
-/// The generator of block `b` for `seed`: xoshiro256++ seeded from a hash of
-/// both (distinct `(seed, b)` give unrelated streams).
-pub(crate) fn block_rng(seed: u64, b: u64) -> Xoshiro256PlusPlus {
-    Xoshiro256PlusPlus::seed_from_u64(splitmix64(splitmix64(seed) ^ b))
+/// The generator of `stream` for `seed`: xoshiro256++ seeded by
+/// [`derive_seed`] (distinct `(seed, block)` give unrelated streams).
+pub(crate) fn block_rng(seed: u64, stream: Stream) -> Xoshiro256PlusPlus {
+    Xoshiro256PlusPlus::seed_from_u64(derive_seed(seed, stream))
 }
 
 /// `S_k` (see the module notes) of every summit of `spec`, from the top,
@@ -392,7 +389,7 @@ fn every_rank(spec: &PopulationSpec) -> (Vec<f64>, Vec<f64>) {
         .par_chunks_mut(SAMPLING_BLOCK)
         .enumerate()
         .map(|(b, h)| {
-            let mut rng = block_rng(spec.seed, b as u64);
+            let mut rng = block_rng(spec.seed, Stream::HeightBlock(b as u64));
             let rest = n - b * SAMPLING_BLOCK;
             let mut s = 0.0;
             for (j, hj) in h.iter_mut().enumerate() {
@@ -419,7 +416,7 @@ fn ranks_up_to(spec: &PopulationSpec, s_max: f64) -> Vec<f64> {
     let mut s_k = Vec::new();
     let mut off = 0.0;
     for b in 0..n.div_ceil(SAMPLING_BLOCK) {
-        let mut rng = block_rng(spec.seed, b as u64);
+        let mut rng = block_rng(spec.seed, Stream::HeightBlock(b as u64));
         let rest = n - b * SAMPLING_BLOCK;
         let mut s = 0.0;
         for j in 0..rest.min(SAMPLING_BLOCK) {
@@ -443,7 +440,7 @@ fn radii_from_the_top(spec: &PopulationSpec, log_std: f64, count: usize) -> Vec<
     r.par_chunks_mut(SAMPLING_BLOCK)
         .enumerate()
         .for_each(|(b, rb)| {
-            let mut rng = block_rng(spec.seed ^ RADIUS_STREAM, b as u64);
+            let mut rng = block_rng(spec.seed, Stream::RadiusBlock(b as u64));
             for rj in rb.iter_mut() {
                 let z: f64 = StandardNormal.sample(&mut rng);
                 *rj = med * (log_std * z).exp();

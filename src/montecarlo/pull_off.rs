@@ -16,6 +16,7 @@ use super::{MonteCarlo, Population, PopulationSpec, RadiusSpec, SummitLaw};
 use crate::error::{Error, Result};
 use crate::heights::HeightDistribution;
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables};
+use crate::numeric::mix::{derive_seed, Stream};
 use rayon::prelude::*;
 use std::sync::Arc;
 
@@ -203,8 +204,26 @@ pub fn lowest_reachable(law: &SummitLaw, radius: &RadiusSpec, program: &LoadingP
     }
 }
 
+/// Whether one switch's pull-off is known to relative tolerance `rtol`
+/// without drawing populations: when `carriers` summits carry the
+/// integral's pull-off, a realisation's pull-off scatters around it by
+/// about `1/sqrt(carriers)` (a sum of that many independent summits'
+/// loads), so populations are worth drawing only while
+/// `1/sqrt(carriers) >= rtol`.
+pub fn scatter_below(carriers: f64, rtol: f64) -> bool {
+    carriers > 0.0 && 1.0 / carriers.sqrt() < rtol
+}
+
+/// Whether the populations' mean pull-off `mean` (standard error `se`)
+/// agrees with the integral's `integral` (N): within `rtol` of the larger
+/// magnitude, or within two standard errors.
+pub fn agrees_with_integral(mean: f64, se: f64, integral: f64, rtol: f64) -> bool {
+    let gap = (mean - integral).abs();
+    gap <= rtol * integral.abs().max(mean.abs()) || gap <= 2.0 * se
+}
+
 /// The pull-offs (N) of the populations of `spec` with seeds
-/// `first_seed .. first_seed + seeds` (each [`realised_pull_off`] with its
+/// `first_seed + k`, `k < seeds` ([`Stream::Population`]; each [`realised_pull_off`] with its
 /// totals scaled by `factor`), in seed order; parallel over seeds,
 /// reproducible for any thread count. Population `k` is the population
 /// [`Population::sample`] draws with seed `first_seed + k`, of which only
@@ -231,7 +250,13 @@ pub fn pull_off_populations(
         .into_par_iter()
         .map(|k| {
             crate::cancel::scope(token.as_ref(), crate::cancel::check)?;
-            let mc = population_model(spec, distribution, law, program, first_seed + k)?;
+            let mc = population_model(
+                spec,
+                distribution,
+                law,
+                program,
+                derive_seed(first_seed, Stream::Population(k)),
+            )?;
             realised_pull_off(&mc, program, factor)
         })
         .collect()

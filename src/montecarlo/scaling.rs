@@ -57,6 +57,14 @@ pub struct SummitLaw {
 /// study planner's rule for GW curves).
 pub const TABLE_TOLERANCE_FRACTION: f64 = 0.1;
 
+/// The tolerance of a law's Chebyshev table for a run to relative
+/// tolerance `rtol`: [`TABLE_TOLERANCE_FRACTION`]` * rtol`, kept in the
+/// table's range `[1e-13, 1e-2]` (`0.1 * 0.1` rounds to
+/// `0.010000000000000002`, just above it, which refused `rtol = 0.1`).
+pub fn table_tolerance(rtol: f64) -> f64 {
+    (TABLE_TOLERANCE_FRACTION * rtol).clamp(1e-13, 1e-2)
+}
+
 impl SummitLaw {
     /// A law valid only for summits of exactly `radius` (m).
     ///
@@ -105,7 +113,7 @@ impl SummitLaw {
     pub fn from_kind(kind: LawKind, contact: &AsperityContact) -> Result<Self> {
         let table_tolerance = kind
             .worth_tabulating()
-            .then_some(TABLE_TOLERANCE_FRACTION * Accuracy::DEFAULT.rel_tol);
+            .then_some(table_tolerance(Accuracy::DEFAULT.rel_tol));
         Ok(SummitLaw {
             law: Arc::from(kind.build(contact)?),
             reference_radius: contact.radius,
@@ -120,8 +128,7 @@ impl SummitLaw {
     /// above it). No effect on laws that are not tabulated.
     pub fn with_accuracy(mut self, accuracy: &Accuracy) -> Self {
         if self.table_tolerance.is_some() {
-            self.table_tolerance =
-                Some((TABLE_TOLERANCE_FRACTION * accuracy.rel_tol).clamp(1e-13, 1e-2));
+            self.table_tolerance = Some(table_tolerance(accuracy.rel_tol));
         }
         self
     }

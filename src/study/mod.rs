@@ -35,10 +35,9 @@ pub mod population;
 pub mod quantity;
 pub mod run;
 pub mod scene;
-mod sphere;
+
 pub mod sweep;
 pub mod text;
-pub mod validity;
 
 pub use output::{
     charts, check_outputs, curve_csv, montecarlo_csv, text_report, write_outputs, Column,

@@ -14,9 +14,7 @@ use crate::gw::Accuracy;
 use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
 use crate::study::plan::FullSolver;
 
-/// Loosest relative tolerance of the reference run: the model errors it
-/// measures are stated to about this (they are percent-level or more).
-pub const REFERENCE_RTOL: f64 = 1e-5;
+pub use crate::study::plan::REFERENCE_RTOL;
 
 /// A model error larger than this (relative) is a warning.
 pub const MODEL_ERROR_WARN: f64 = 0.1;
@@ -73,7 +71,7 @@ impl ModelError {
             return;
         };
         let reference_loads = || -> Result<Vec<Option<f64>>> {
-            let rtol = plan.budget.rtol.max(REFERENCE_RTOL);
+            let rtol = plan.budget.model_error_reference();
             let model = plan
                 .model_with(reference.clone())?
                 .with_accuracy(Accuracy::new(rtol)?);
@@ -232,7 +230,7 @@ fn reference_run(
     max_load: Option<f64>,
     hysteresis_energy: Option<f64>,
 ) -> Result<ModelError> {
-    let rtol = plan.budget.rtol.max(REFERENCE_RTOL);
+    let rtol = plan.budget.model_error_reference();
     let model = plan
         .model_with(reference.clone())?
         .with_accuracy(Accuracy::new(rtol)?);

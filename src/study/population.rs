@@ -7,11 +7,13 @@ use super::plan::Plan;
 use crate::error::Result;
 use crate::law::LawKernels;
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables, PullOff};
+use crate::montecarlo::pull_off::{agrees_with_integral, scatter_below};
 use crate::montecarlo::pull_off::{
     candidate_separations, population_model, pull_off_evaluations, pull_off_populations,
     retraction_loads_at, PullOffStatistics,
 };
 use crate::montecarlo::{MonteCarlo, RadiusSpec, SummitLaw};
+use crate::numeric::mix::{derive_seed, Stream};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -123,8 +125,8 @@ pub fn run(
         examples: Vec::new(),
         seconds: 0.0,
     };
-    let rtol = plan.budget.rtol;
-    if let Some(c) = carriers.filter(|&c| c > 0.0 && 1.0 / c.sqrt() < rtol) {
+    let rtol = plan.budget.population_scatter();
+    if let Some(c) = carriers.filter(|&c| scatter_below(c, rtol)) {
         out.note = Some(format!(
             "populations skipped: {c:.3e} summits carry the integral's pull-off, so one \
              switch's pull-off scatters by ~1/sqrt({c:.3e}) = {:.1e} < rtol = {rtol:e} around it",
@@ -140,7 +142,7 @@ pub fn run(
             plan.distribution.as_ref(),
             &law,
             program,
-            p.first_seed + k,
+            derive_seed(p.first_seed, Stream::Population(k)),
         )
     };
     // The first population prices the others (its pruned search is then
@@ -171,7 +173,7 @@ pub fn run(
     let shown = EXAMPLE_CURVES.min(drawn);
     let mut values = Vec::with_capacity(drawn);
     for k in 0..shown as u64 {
-        let seed = p.first_seed + k;
+        let seed = derive_seed(p.first_seed, Stream::Population(k));
         let (mc, candidates) = match first.take() {
             Some(drawn) => drawn,
             None => {
@@ -202,7 +204,7 @@ pub fn run(
             &law,
             program,
             p.factor,
-            p.first_seed + shown as u64,
+            derive_seed(p.first_seed, Stream::Population(shown as u64)),
             drawn - shown,
         )?);
     }
@@ -218,8 +220,7 @@ pub fn warning(r: &PopulationResults, rtol: f64) -> Option<String> {
     let s = r.statistics.as_ref()?;
     let integral = r.integral.unwrap_or(0.0);
     let (mean, se) = (s.mean(), s.mean_standard_error());
-    let gap = (mean - integral).abs();
-    if gap <= rtol * integral.abs().max(mean.abs()) || gap <= 2.0 * se {
+    if agrees_with_integral(mean, se, integral, rtol) {
         return None;
     }
     let integral_text = match r.integral {

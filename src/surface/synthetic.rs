@@ -15,6 +15,7 @@
 
 use super::{HeightMap, Moments};
 use crate::error::{positive, Allowed, Result};
+use crate::numeric::mix::{derive_seed, Stream};
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::SeedableRng;
 use rand_distr::{Distribution, StandardNormal};
@@ -93,9 +94,10 @@ impl GaussianSurface {
         // Pass 1: noise convolved along each row (circular).
         let mut tmp = vec![0.0; rows * cols];
         tmp.par_chunks_mut(cols).enumerate().for_each(|(i, out)| {
-            let mut rng = Xoshiro256PlusPlus::seed_from_u64(
-                self.seed ^ (i as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15),
-            );
+            let mut rng = Xoshiro256PlusPlus::seed_from_u64(derive_seed(
+                self.seed,
+                Stream::SyntheticRow(i as u64),
+            ));
             let noise: Vec<f64> = (0..cols).map(|_| StandardNormal.sample(&mut rng)).collect();
             // Padded copy: pad[j] = noise[(j - w) mod cols].
             let pad: Vec<f64> = (0..cols + 2 * w)

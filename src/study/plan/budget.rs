@@ -9,6 +9,22 @@ pub const START_TAIL_FRACTION: f64 = 0.01;
 
 pub use crate::montecarlo::TABLE_TOLERANCE_FRACTION;
 
+/// The range of the scene's `accuracy.rtol`: below `1e-12` no integral
+/// of the program reaches it in double precision (sums of many summits
+/// lose about `1e-14` each); above `0.1` no digit of an output is
+/// certain.
+pub const RTOL_RANGE: (f64, f64) = (1e-12, 0.1);
+
+/// The range of the full sphere solver's Newton tolerance: below `1e-10`
+/// its discretisation error dominates, above `1e-2` its curve is not a
+/// reference.
+pub const SPHERE_TOLERANCE_RANGE: (f64, f64) = (1e-10, 1e-2);
+
+/// Loosest relative tolerance of the model-error reference run: the model
+/// errors it measures are stated to about this (they are percent-level or
+/// more).
+pub const REFERENCE_RTOL: f64 = 1e-5;
+
 /// A plastic law's adhesion is left out when its JKR interference scale is
 /// below this fraction of `rtol x sigma`: no output can change at the
 /// tolerance.
@@ -64,7 +80,40 @@ impl Budget {
     /// table's range `[1e-13, 1e-2]` (`0.1 x 0.1` rounds just above
     /// `1e-2`, which refused `rtol = 0.1`, inside the scene's range).
     pub fn table(&self) -> f64 {
-        (TABLE_TOLERANCE_FRACTION * self.rtol).clamp(1e-13, 1e-2)
+        crate::montecarlo::table_tolerance(self.rtol)
+    }
+
+    /// The largest measured error (relative, against the full
+    /// Lennard-Jones solution) of a law `law.kind = "auto"` may pick.
+    pub fn law_choice(&self) -> f64 {
+        self.rtol
+    }
+
+    /// Newton tolerance of the full sphere solver, `rtol` kept in
+    /// [`SPHERE_TOLERANCE_RANGE`].
+    pub fn sphere_solver(&self) -> f64 {
+        self.rtol
+            .clamp(SPHERE_TOLERANCE_RANGE.0, SPHERE_TOLERANCE_RANGE.1)
+    }
+
+    /// Pull-off populations are skipped when one switch's pull-off
+    /// scatters by less than this around the integral's
+    /// ([`crate::montecarlo::pull_off::scatter_below`]).
+    pub fn population_scatter(&self) -> f64 {
+        self.rtol
+    }
+
+    /// The populations' mean pull-off and the integral's agree within this
+    /// (relative) or two standard errors, else a warning
+    /// ([`crate::montecarlo::pull_off::agrees_with_integral`]).
+    pub fn population_agreement(&self) -> f64 {
+        self.rtol
+    }
+
+    /// Relative tolerance of the model-error reference run: `rtol`, but
+    /// no looser than [`REFERENCE_RTOL`].
+    pub fn model_error_reference(&self) -> f64 {
+        self.rtol.max(REFERENCE_RTOL)
     }
 
     /// Separation tolerance of the root and minimum searches (the pull-off,
@@ -85,7 +134,7 @@ impl Budget {
     }
 
     /// Every share, for the plan's report.
-    pub fn shares(&self) -> [Share; 6] {
+    pub fn shares(&self) -> [Share; 11] {
         [
             Share {
                 name: "integrals",
@@ -116,6 +165,31 @@ impl Budget {
                 name: "energy sign",
                 value: self.energy_sign(),
                 reason: "a negative hysteresis energy within it is zero",
+            },
+            Share {
+                name: "law choice",
+                value: self.law_choice(),
+                reason: "law.kind = auto: the cheapest law whose measured error is within it",
+            },
+            Share {
+                name: "sphere solver",
+                value: self.sphere_solver(),
+                reason: "Newton tolerance of the full sphere solver, kept in [1e-10, 1e-2]",
+            },
+            Share {
+                name: "population scatter",
+                value: self.population_scatter(),
+                reason: "pull-off populations skipped when one switch scatters less",
+            },
+            Share {
+                name: "population agreement",
+                value: self.population_agreement(),
+                reason: "populations' mean and the integral's pull-off differ more: a warning",
+            },
+            Share {
+                name: "model-error reference",
+                value: self.model_error_reference(),
+                reason: "the reference run's tolerance, at most 1e-5",
             },
         ]
     }

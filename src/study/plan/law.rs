@@ -111,7 +111,7 @@ pub(super) fn choose(
 ) -> Result<LawChoice> {
     let mu = contact.tabor();
     let lambda = contact.lambda();
-    let rtol = budget.rtol;
+    let rtol = budget.law_choice();
     let table = LawErrorTable::embedded();
     let w = contact.adhesion.work();
     let given = scene.law.kind;

@@ -37,9 +37,11 @@ mod preview;
 mod program;
 mod sphere;
 mod topography;
+pub mod validity;
 
 pub use budget::{
-    Budget, Share, CALIBRATED_MIN_RTOL, START_TAIL_FRACTION, TABLE_TOLERANCE_FRACTION,
+    Budget, Share, CALIBRATED_MIN_RTOL, REFERENCE_RTOL, RTOL_RANGE, SPHERE_TOLERANCE_RANGE,
+    START_TAIL_FRACTION, TABLE_TOLERANCE_FRACTION,
 };
 pub use decision::{Decision, Evaluation, LawReason, OutputReason, StartReason};
 pub use inputs::{CalibrationInput, Inputs, Pending};
@@ -199,7 +201,7 @@ impl Plan {
     pub fn decide(scene: &Scene, mode: PlanMode, inputs: &Inputs) -> Result<Plan> {
         Plan::build(scene, mode, inputs)
             .map_err(|e| crate::study::scene::map_derived(scene, e))
-            .and_then(crate::study::validity::checked)
+            .and_then(validity::checked)
     }
 
     /// What `asperity run --plan` shows, without running anything

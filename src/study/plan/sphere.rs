@@ -60,7 +60,7 @@ pub(super) fn plan(
         _ => SphereProfile::Paraboloid,
     };
     let options = SolverOptions {
-        tolerance: budget.rtol.clamp(1e-10, 1e-2),
+        tolerance: budget.sphere_solver(),
         ..SolverOptions::default()
     };
     options.validate()?;

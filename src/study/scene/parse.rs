@@ -8,6 +8,7 @@ use super::limits::{
 use super::schema::{Scene, SurfaceSpec};
 use crate::error::{finite, non_negative, positive, Allowed, Error, Result};
 use crate::heights::DistributionKind;
+use crate::study::plan::RTOL_RANGE;
 
 impl Scene {
     /// Parses and validates a scene.
@@ -88,7 +89,7 @@ impl Scene {
                 allowed: Allowed::closed(2.0, 1e6),
             });
         }
-        Allowed::closed(1e-12, 0.1).check("accuracy.rtol", self.accuracy.rtol)?;
+        Allowed::closed(RTOL_RANGE.0, RTOL_RANGE.1).check("accuracy.rtol", self.accuracy.rtol)?;
         if self.law.kind == super::LawName::Calibrated {
             // Before the calibration is computed.
             crate::study::plan::check_calibrated_rtol(self.accuracy.rtol)?;

@@ -1,7 +1,7 @@
 //! What a sweep varies and which points it visits.
 
 use crate::error::{Allowed, Error, Result};
-use crate::numeric::mix::splitmix64;
+use crate::numeric::mix::{derive_seed, Stream};
 use rand::rngs::StdRng;
 use rand::seq::SliceRandom;
 use rand::{RngExt, SeedableRng};
@@ -114,9 +114,9 @@ pub struct SweepPoint {
 
 impl SweepPoint {
     /// The seed of point `index` of a sweep with base seed `seed`:
-    /// SplitMix64 of `seed + index`.
+    /// [`derive_seed`] of [`Stream::SweepPoint`].
     pub fn seed_of(seed: u64, index: usize) -> u64 {
-        splitmix64(seed.wrapping_add(index as u64))
+        derive_seed(seed, Stream::SweepPoint(index as u64))
     }
 }
 

@@ -1,5 +1,7 @@
 //! Executing a [`Plan`]: the loading program, pull-off and hysteresis energy.
 
+mod sphere;
+
 use super::plan::{McPlan, Plan};
 use super::scene::ProgramTarget;
 use crate::electrical::heating::SpotCondition;
@@ -13,6 +15,7 @@ use crate::loading::{
 };
 use crate::material::plastic::{RegimeLimits, Variant};
 use crate::montecarlo::{Comparison, MonteCarlo, Population, SummitLaw};
+use crate::numeric::mix::{derive_seed, Stream};
 use crate::study::quantity::{QuantitySet, Record};
 use std::sync::Arc;
 use std::time::Instant;
@@ -157,7 +160,7 @@ fn run_montecarlo(
     let spots = match &plan.resistance {
         Some(res) => {
             let side = (plan.surface.nominal_area / mc.factor).sqrt();
-            let seed = crate::numeric::mix::splitmix64(mc.spec.seed ^ 0x5350_4f54); // "SPOT"
+            let seed = derive_seed(mc.spec.seed, Stream::SpotPositions);
             let found = population_spots(&population, &law, curve.program.closest, side, seed)?;
             match found {
                 Some(m) if m.spots.len() <= MAX_SAMPLE_SPOTS => {
@@ -301,13 +304,13 @@ impl Plan {
             let run = self
                 .run_on(&sphere, run_law, t0, progress)
                 .and_then(|mut results| {
-                    super::sphere::finish(self, &sphere, &mut results)?;
+                    sphere::finish(self, &sphere, &mut results)?;
                     let heating = self.heating_warning(&results, &self.listed_quantities()?)?;
                     results.warnings.extend(heating);
                     results.seconds = t0.elapsed().as_secs_f64();
                     Ok(results)
                 });
-            return run.map_err(|e| super::sphere::blame(self, e));
+            return run.map_err(|e| sphere::blame(self, e));
         }
         // A measured map with summits = "measured": the exact sum over its
         // summits replaces the integral.
@@ -381,7 +384,8 @@ impl Plan {
             .flat_map(|l| l.iter())
             .map(|s| s.evaluations)
             .sum();
-        let mut warnings = super::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
+        let mut warnings =
+            super::plan::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
         warnings.extend(crate::numeric::simd::ignored_request());
         let max_load = curve.approach.first().and_then(|s| s.load());
         let model_error = super::model_error::measure(
@@ -405,7 +409,10 @@ impl Plan {
             // How many populations the budget allowed is a note of the
             // population (in the summary and the report), not a warning:
             // the quantiles carry their intervals.
-            warnings.extend(super::population::warning(r, self.budget.rtol));
+            warnings.extend(super::population::warning(
+                r,
+                self.budget.population_agreement(),
+            ));
         }
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),

@@ -12,13 +12,13 @@
 //! - The regime fractions at the centre of the bump (its closest local
 //!   gap), and the elastic law's approach states on the same sphere.
 
-use super::plan::Plan;
-use super::quantity::Record;
-use super::run::Results;
+use super::Results;
 use crate::electrical::{Interaction, ResistanceObservables};
 use crate::error::Result;
 use crate::loading::{History, LoadingModel, Observables};
 use crate::roughsphere::{BumpElectrics, RoughSphere, SphereQuery, SphereState};
+use crate::study::plan::Plan;
+use crate::study::quantity::Record;
 
 /// The bump's state at remote separation `separation` after `history`,
 /// with area, count and (with `[electrical]`) the resistance.
