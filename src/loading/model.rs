@@ -248,18 +248,7 @@ pub trait LoadingModel: Sync {
         // tolerances over `rtol sigma`).
         let tol = 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(scale);
         let root = if self.is_discrete() {
-            while hi - lo > tol {
-                let mid = 0.5 * (lo + hi);
-                if !(mid > lo && mid < hi) {
-                    break;
-                }
-                if load(mid)? >= target {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            lo
+            bisect_to_load(&load, target, (lo, hi), tol)?
         } else {
             let mut failure = None;
             let root = brent(
@@ -296,6 +285,30 @@ pub trait LoadingModel: Sync {
             ),
         ))
     }
+}
+
+/// The separation, to `tol` (m), where a discrete model's approach load
+/// `load` crosses `target` (N) inside `(lo, hi)` with `load(lo) >=
+/// target`: bisection keeping the side whose load reaches the target (a
+/// step load has no root for Brent's method to converge on).
+fn bisect_to_load(
+    load: &dyn Fn(f64) -> Result<f64>,
+    target: f64,
+    (mut lo, mut hi): (f64, f64),
+    tol: f64,
+) -> Result<f64> {
+    while hi - lo > tol {
+        let mid = 0.5 * (lo + hi);
+        if !(mid > lo && mid < hi) {
+            break;
+        }
+        if load(mid)? >= target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(lo)
 }
 
 #[cfg(test)]

@@ -89,6 +89,37 @@ fn cost_per_population(
     (POPULATION_OVERHEAD_NS + draw + evaluations * law.law().batch_cost_ns()) * 1e-9
 }
 
+/// Where an example curve is drawn: at every [`EXAMPLE_STRIDE`]-th
+/// separation of `program` and wherever the minimum can lie
+/// (`candidates`), so the pull-off is the least of these loads, as
+/// `realised_pull_off` finds it.
+fn shown_at(program: &LoadingProgram, candidates: &[f64]) -> Vec<f64> {
+    let all = program.separations();
+    let last = all.len() - 1;
+    all.iter()
+        .enumerate()
+        .filter(|&(i, d)| i % EXAMPLE_STRIDE == 0 || i == last || candidates.contains(d))
+        .map(|(_, &d)| d)
+        .collect()
+}
+
+/// The number of summits in contact at the integral's pull-off on
+/// `model` (`None` without a pull-off): how many carry the tension.
+fn carriers(
+    model: &dyn LoadingModel,
+    program: &LoadingProgram,
+    pull_off: Option<PullOff>,
+) -> Result<Option<f64>> {
+    let Some(po) = pull_off else {
+        return Ok(None);
+    };
+    let retract = History::Retract {
+        closest: program.closest,
+    };
+    let count = Observables::standard(false, false, true);
+    Ok(model.state(po.separation, retract, &count)?.count())
+}
+
 /// The pull-off distribution of `plan` over `program` on `model` (the
 /// integral), beside its pull-off `pull_off`.
 ///
@@ -103,18 +134,7 @@ pub fn run(
     pull_off: Option<PullOff>,
 ) -> Result<PopulationResults> {
     let t0 = Instant::now();
-    let carriers = match pull_off {
-        Some(po) => model
-            .state(
-                po.separation,
-                History::Retract {
-                    closest: program.closest,
-                },
-                &Observables::standard(false, false, true),
-            )?
-            .count(),
-        None => None,
-    };
+    let carriers = carriers(model, program, pull_off)?;
     let mut out = PopulationResults {
         plan: p.clone(),
         drawn: 0,
@@ -182,18 +202,7 @@ pub fn run(
                 (mc, c)
             }
         };
-        // Drawn at every EXAMPLE_STRIDE-th separation and wherever the
-        // minimum can lie: the pull-off is the least of these loads, as
-        // `realised_pull_off` finds it.
-        let all = program.separations();
-        let last = all.len() - 1;
-        let shown_at: Vec<f64> = all
-            .iter()
-            .enumerate()
-            .filter(|&(i, d)| i % EXAMPLE_STRIDE == 0 || i == last || candidates.contains(d))
-            .map(|(_, &d)| d)
-            .collect();
-        let curve = retraction_loads_at(&mc, program, &shown_at, p.factor)?;
+        let curve = retraction_loads_at(&mc, program, &shown_at(program, &candidates), p.factor)?;
         values.push(curve.iter().fold(0.0f64, |m, &(_, load)| m.min(load)));
         out.examples.push((seed, curve));
     }

@@ -315,51 +315,7 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 y_symlog: true,
             },
         ));
-        // The adhesive part is invisible at full scale: zoom on it, with a
-        // few switches' own retraction curves (their pull-offs can be far
-        // deeper than the integral's).
-        let examples = results
-            .pull_off_population
-            .as_ref()
-            .map_or(&[][..], |p| &p.examples[..]);
-        let deepest = examples
-            .iter()
-            .flat_map(|(_, c)| c.iter().map(|p| p.1))
-            .chain(results.pull_off.map(|p| p.load))
-            .fold(0.0f64, f64::min);
-        if deepest < 0.0 {
-            let (ps, pp) = si_prefix([deepest].into_iter());
-            let mut series: Vec<Series> = legs
-                .iter()
-                .map(|(name, leg)| {
-                    Series::leg(
-                        format!("{name} (GW integral)"),
-                        pick(&|s| Some((s.separation / ds, s.load()? / ps)), leg),
-                    )
-                })
-                .collect();
-            for (seed, c) in examples {
-                series.push(Series::leg(
-                    format!("one switch (seed {seed}), retraction"),
-                    c.iter().map(|&(d, p)| (d / ds, p / ps)).collect(),
-                ));
-            }
-            let m = deepest.abs() / ps;
-            let integral = results
-                .pull_off
-                .map_or("none".into(), |p| format!("{:.3} {pp}N", p.load / ps));
-            out.push((
-                "load_separation_adhesive.svg".into(),
-                Chart {
-                    title: format!("{title}: adhesive range, integral pull-off {integral}"),
-                    x_label: format!("separation d ({dp}m)"),
-                    y_label: format!("load P ({pp}N), < 0 tensile"),
-                    series,
-                    y_range: Some((-1.3 * m, 3.0 * m)),
-                    y_symlog: false,
-                },
-            ));
-        }
+        out.extend(adhesive_chart(results, &title, (ds, dp)));
     }
     if o.load && o.area {
         let (s_a, p_a) = si_prefix_area(all().filter_map(|s| s.area()));
@@ -404,6 +360,69 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
         ));
     }
     out
+}
+
+/// The adhesive range of the load curve, invisible at full scale: the
+/// integral's legs zoomed on the tensile loads, with a few switches' own
+/// retraction curves (their pull-offs can be far deeper than the
+/// integral's); `None` without tensile loads. Separations in units of
+/// `ds` with prefix `dp`.
+fn adhesive_chart(
+    results: &Results,
+    title: &str,
+    (ds, dp): (f64, &str),
+) -> Option<(String, Chart)> {
+    let c = &results.curve;
+    let legs = [("approach", &c.approach), ("retraction", &c.retract)];
+    let pick = |f: &dyn Fn(&State) -> Option<(f64, f64)>, leg: &[State]| -> Vec<(f64, f64)> {
+        leg.iter().filter_map(f).collect()
+    };
+    // The adhesive part is invisible at full scale: zoom on it, with a
+    // few switches' own retraction curves (their pull-offs can be far
+    // deeper than the integral's).
+    let examples = results
+        .pull_off_population
+        .as_ref()
+        .map_or(&[][..], |p| &p.examples[..]);
+    let deepest = examples
+        .iter()
+        .flat_map(|(_, c)| c.iter().map(|p| p.1))
+        .chain(results.pull_off.map(|p| p.load))
+        .fold(0.0f64, f64::min);
+    if deepest >= 0.0 {
+        return None;
+    }
+    let (ps, pp) = si_prefix([deepest].into_iter());
+    let mut series: Vec<Series> = legs
+        .iter()
+        .map(|(name, leg)| {
+            Series::leg(
+                format!("{name} (GW integral)"),
+                pick(&|s| Some((s.separation / ds, s.load()? / ps)), leg),
+            )
+        })
+        .collect();
+    for (seed, c) in examples {
+        series.push(Series::leg(
+            format!("one switch (seed {seed}), retraction"),
+            c.iter().map(|&(d, p)| (d / ds, p / ps)).collect(),
+        ));
+    }
+    let m = deepest.abs() / ps;
+    let integral = results
+        .pull_off
+        .map_or("none".into(), |p| format!("{:.3} {pp}N", p.load / ps));
+    Some((
+        "load_separation_adhesive.svg".into(),
+        Chart {
+            title: format!("{title}: adhesive range, integral pull-off {integral}"),
+            x_label: format!("separation d ({dp}m)"),
+            y_label: format!("load P ({pp}N), < 0 tensile"),
+            series,
+            y_range: Some((-1.3 * m, 3.0 * m)),
+            y_symlog: false,
+        },
+    ))
 }
 
 #[cfg(test)]

@@ -54,22 +54,7 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
         summary.closest_separation, summary.start_separation, summary.points, summary.rtol
     );
     model_error(&mut out, summary);
-    for (q, (h, v)) in plan
-        .quantities
-        .iter()
-        .filter(|q| q.headline.is_some())
-        .zip(&summary.headlines.0)
-    {
-        let at = match h.reduce {
-            crate::study::quantity::Reduce::AtClosest if q.name == "resistance" => {
-                " at the closest approach"
-            }
-            _ => "",
-        };
-        if v.is_some() || q.asked {
-            let _ = writeln!(out, "  {:<18} {}{at}", h.label, show(*v, &q.unit_text()));
-        }
-    }
+    headlines(&mut out, plan, summary);
     let pull = match (summary.pull_off_load, plan.pull_off) {
         (Some(p), _) => format::si(p, "N"),
         (None, true) => "none: no tensile load on retraction".into(),
@@ -94,6 +79,22 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
     }
     features(&mut out, summary);
     states(&mut out, plan, summary);
+    topography(&mut out, summary);
+    if !summary.warnings.is_empty() {
+        let _ = writeln!(out, "  warnings:");
+        for w in &summary.warnings {
+            let _ = writeln!(out, "    {w}");
+        }
+    }
+    let _ = writeln!(out, "  wrote:");
+    for f in files {
+        let _ = writeln!(out, "    {}", f.display());
+    }
+    out
+}
+
+/// The measured map's line, and the other model's headline numbers.
+fn topography(out: &mut String, summary: &Summary) {
     if let Some(t) = &summary.topography {
         let _ = writeln!(
             out,
@@ -111,17 +112,26 @@ pub fn text_report(plan: &Plan, summary: &Summary, files: &[PathBuf]) -> String 
             );
         }
     }
-    if !summary.warnings.is_empty() {
-        let _ = writeln!(out, "  warnings:");
-        for w in &summary.warnings {
-            let _ = writeln!(out, "    {w}");
+}
+
+/// One line per headline quantity that has a value or was asked for.
+fn headlines(out: &mut String, plan: &Plan, summary: &Summary) {
+    for (q, (h, v)) in plan
+        .quantities
+        .iter()
+        .filter(|q| q.headline.is_some())
+        .zip(&summary.headlines.0)
+    {
+        let at = match h.reduce {
+            crate::study::quantity::Reduce::AtClosest if q.name == "resistance" => {
+                " at the closest approach"
+            }
+            _ => "",
+        };
+        if v.is_some() || q.asked {
+            let _ = writeln!(out, "  {:<18} {}{at}", h.label, show(*v, &q.unit_text()));
         }
     }
-    let _ = writeln!(out, "  wrote:");
-    for f in files {
-        let _ = writeln!(out, "    {}", f.display());
-    }
-    out
 }
 
 /// The model error lines: on this surface, per output, and for one summit.

@@ -3,19 +3,23 @@
 //! plasticity diagnostics, the program, the legs, the population.
 
 use super::{
-    law, outputs, program, resistance, tabulation, Budget, Decision, FullSolver, Inputs, LawChoice,
-    McPlan, Plan, PlanMode, TopographyPlan,
+    law, outputs, program, resistance, tabulation, Budget, CalibrationInput, Decision, FullSolver,
+    Inputs, LawChoice, McPlan, Plan, PlanMode, TopographyPlan,
 };
-use crate::electrical::Switch;
+use crate::electrical::{Heating, ResistanceObservables, Switch};
 use crate::error::Result;
 use crate::gw::{GwModel, RoughSurface};
 use crate::heights::HeightDistribution;
+use crate::law::LawKernels;
+use crate::loading::Observables;
 use crate::material::plastic::Plasticity;
 use crate::material::AsperityContact;
 use crate::study::quantity::QuantitySet;
+
 use crate::study::scene::{
-    build_contact, build_distribution, build_surface, MonteCarloSpec, Scene,
+    build_contact, build_distribution, build_surface, MonteCarloSpec, Resolved, Scene,
 };
+use std::sync::Arc;
 
 impl Plan {
     pub(super) fn build(scene: &Scene, mode: PlanMode, inputs: &Inputs) -> Result<Plan> {
@@ -29,28 +33,8 @@ impl Plan {
         let budget = Budget::new(scene.accuracy.rtol);
         let calibration = inputs.calibration.as_ref();
         let law = law::choose(scene, &contact, mode, &budget, calibration, &mut decisions)?;
-        let reference = match (law.facts.full_solver, calibration) {
-            (FullSolver::Reference, Some(c)) if contact.adhesion.work() > 0.0 => {
-                let l = c.calibration.law(
-                    contact.radius,
-                    contact.contact_modulus,
-                    contact.adhesion.work(),
-                )?;
-                Some(std::sync::Arc::new(l) as std::sync::Arc<dyn crate::law::LawKernels>)
-            }
-            _ => None,
-        };
-        let topography = match resolved {
-            Some(r) => {
-                let t = TopographyPlan::new(r, &law, &contact)?;
-                decisions.push(Decision::Topography {
-                    choice: t.choice(),
-                    why: t.why(),
-                });
-                Some(t)
-            }
-            None => None,
-        };
+        let reference = reference_law(&law, calibration, &contact)?;
+        let topography = topography_plan(resolved, &law, &contact, &mut decisions)?;
         let sphere = super::sphere::plan(
             scene,
             &surface,
@@ -61,15 +45,13 @@ impl Plan {
         let model = GwModel::new(surface, distribution.clone(), law.law.clone())?;
         let (observables, accuracy) = outputs(scene, mode, &budget, &model, &law, &mut decisions)?;
         let resistance = resistance(scene, &surface, &mut decisions)?;
-        let heating = match &scene.electrical {
-            Some(e) => e.heating()?,
-            None => None,
-        };
-        let o = scene.outputs;
-        let mut quantities = QuantitySet::standard(o.load, o.area, o.count).over(observables)?;
-        if let Some(r) = &resistance {
-            quantities = quantities.with_electrical(r, o.resistance, heating)?;
-        }
+        let heating = scene
+            .electrical
+            .as_ref()
+            .map(|e| e.heating())
+            .transpose()?
+            .flatten();
+        let quantities = quantity_set(scene, observables, resistance.as_ref(), heating)?;
         let plasticity = scene.plasticity()?;
         let mut warnings =
             plasticity_decision(plasticity, &surface, &contact, &law, &mut decisions)?;
@@ -85,17 +67,14 @@ impl Plan {
             });
         }
         let legs = legs(scene, mode, &contact, &law, &mut decisions);
-        let montecarlo = match &scene.montecarlo {
-            Some(spec) => Some(montecarlo(
-                spec,
-                &surface,
-                &contact,
-                &law,
-                distribution.as_ref(),
-                &mut decisions,
-            )?),
-            None => None,
-        };
+        let montecarlo = scene
+            .montecarlo
+            .as_ref()
+            .map(|spec| {
+                let d = distribution.as_ref();
+                montecarlo(spec, &surface, &contact, &law, d, &mut decisions)
+            })
+            .transpose()?;
         let pull_off_population = super::population::plan(
             scene,
             legs.pull_off,
@@ -105,12 +84,11 @@ impl Plan {
             sphere.is_some(),
             &mut decisions,
         )?;
-        let switch = match &scene.switch {
-            Some(s) => {
-                Some(Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch"))?)
-            }
-            None => None,
-        };
+        let switch = scene
+            .switch
+            .as_ref()
+            .map(|s| Switch::new(s.spring_constant, s.travel).map_err(|e| e.in_table("switch")))
+            .transpose()?;
         Ok(Plan {
             scene: scene.clone(),
             mode,
@@ -235,4 +213,60 @@ fn montecarlo(
         factor: mc.factor,
     });
     Ok(mc)
+}
+
+/// The full solver's law on the scene's own asperity, the reference of
+/// the model error, when the law is measured against it and a calibration
+/// is at hand (adhesive contacts only).
+fn reference_law(
+    law: &LawChoice,
+    calibration: Option<&CalibrationInput>,
+    contact: &AsperityContact,
+) -> Result<Option<Arc<dyn LawKernels>>> {
+    Ok(match (law.facts.full_solver, calibration) {
+        (FullSolver::Reference, Some(c)) if contact.adhesion.work() > 0.0 => {
+            let l = c.calibration.law(
+                contact.radius,
+                contact.contact_modulus,
+                contact.adhesion.work(),
+            )?;
+            Some(Arc::new(l) as Arc<dyn LawKernels>)
+        }
+        _ => None,
+    })
+}
+
+/// The plan of a measured map's model, with its decision.
+fn topography_plan(
+    resolved: Option<&Resolved>,
+    law: &LawChoice,
+    contact: &AsperityContact,
+    decisions: &mut Vec<Decision>,
+) -> Result<Option<TopographyPlan>> {
+    let Some(r) = resolved else {
+        return Ok(None);
+    };
+    let t = TopographyPlan::new(r, law, contact)?;
+    decisions.push(Decision::Topography {
+        choice: t.choice(),
+        why: t.why(),
+    });
+    Ok(Some(t))
+}
+
+/// The quantities of the run: the standard ones the scene's `[outputs]`
+/// asks for over the planned observables, and the electrical ones with a
+/// resistance.
+fn quantity_set(
+    scene: &Scene,
+    observables: Observables,
+    resistance: Option<&ResistanceObservables>,
+    heating: Option<(f64, Heating)>,
+) -> Result<QuantitySet> {
+    let o = scene.outputs;
+    let quantities = QuantitySet::standard(o.load, o.area, o.count).over(observables)?;
+    match resistance {
+        Some(r) => quantities.with_electrical(r, o.resistance, heating),
+        None => Ok(quantities),
+    }
 }

@@ -348,6 +348,14 @@ impl Decision {
                 "not asked for in [outputs]"
             }
             .into(),
+            _ => self.feature_why(),
+        }
+    }
+
+    /// Why, for the decisions on features beyond the curve (Monte Carlo,
+    /// plasticity, resistance, listed states, maps, populations, spheres).
+    fn feature_why(&self) -> String {
+        match self {
             Decision::MonteCarlo {
                 distribution,
                 radius_log_std,
@@ -433,6 +441,7 @@ impl Decision {
                     "rough layer and bulk both deform"
                 }
             ),
+                    _ => unreachable!("why() answers the curve's decisions"),
         }
     }
 }

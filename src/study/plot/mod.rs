@@ -20,6 +20,9 @@ use plotters::coord::ranged1d::Ranged;
 use plotters::prelude::*;
 use std::path::Path;
 
+/// A chart's plotting context: an SVG drawing with both axes [`Axis`].
+type Plotted<'a> = ChartContext<'a, SVGBackend<'a>, Cartesian2d<Axis, Axis>>;
+
 /// How a series is drawn. Every series also gets its own colour and marker
 /// shape (circle, triangle, square, cross, by position), so lines that
 /// coincide stay distinguishable, in print too.
@@ -212,108 +215,135 @@ impl Chart {
                 .set_all_tick_mark_size(4 * s)
                 .draw()
                 .map_err(|e| fail(e.to_string()))?;
-            let (y_lo, y_hi) = (y.range().start, y.range().end);
             let mut seen = Vec::new();
-            let n = self.series.len();
             for (i, series) in self.series.iter().enumerate() {
-                let colour = COLOURS[i % COLOURS.len()];
-                let style = colour.stroke_width(2 * s as u32);
-                let shape = i % 4;
-                let stroke = series.stroke;
-                let pts: Vec<(f64, f64)> = series
-                    .points
-                    .iter()
-                    .filter(|p| x.accepts(p.0) && y.accepts(p.1))
-                    .copied()
-                    .collect();
-                let runs = clip_runs(&pts, y_lo, y_hi);
-                for run in &runs {
-                    seen.extend(frame::sample_polyline(
-                        &run.iter()
-                            .map(|p| (x.fraction(p.0), y.fraction(p.1)))
-                            .collect::<Vec<_>>(),
-                        200,
-                    ));
-                    match series.stroke {
-                        Stroke::Solid => {
-                            chart
-                                .draw_series(LineSeries::new(run.clone(), style))
-                                .map_err(|e| fail(e.to_string()))?;
-                        }
-                        Stroke::Dashed => {
-                            chart
-                                .draw_series(DashedLineSeries::new(
-                                    run.clone(),
-                                    9 * s,
-                                    5 * s,
-                                    style,
-                                ))
-                                .map_err(|e| fail(e.to_string()))?;
-                        }
-                        Stroke::Markers => {}
-                    }
-                }
-                // Markers: every point when markers only, else about ten
-                // per series, offset so coinciding series alternate.
-                let inside: Vec<(f64, f64)> = pts
-                    .iter()
-                    .filter(|p| p.1 >= y_lo && p.1 <= y_hi)
-                    .copied()
-                    .collect();
-                let every = match series.stroke {
-                    Stroke::Markers => 1,
-                    _ => (inside.len() / 10).max(1),
-                };
-                let offset = if every > 1 { i * every / n.max(1) } else { 0 };
-                let marks: Vec<(f64, f64)> =
-                    inside.iter().skip(offset).step_by(every).copied().collect();
-                let r = if series.stroke == Stroke::Markers {
-                    4
-                } else {
-                    3
-                } * s;
-                let outline = marker_outline(shape, r);
-                let (first, second, dot) = legend_pieces(shape, stroke, r);
-                let line = colour.stroke_width((2 * s) as u32);
-                chart
-                    .draw_series(marks.iter().map(|&p| {
-                        EmptyElement::at(p) + Polygon::new(outline.clone(), colour.filled())
-                    }))
-                    .map_err(|e| fail(e.to_string()))?
-                    .label(series.label.clone())
-                    .legend(move |(lx, ly)| {
-                        EmptyElement::at((lx, ly))
-                            + PathElement::new(first.clone(), line)
-                            + PathElement::new(second.clone(), line)
-                            + Polygon::new(dot.clone(), colour.filled())
-                    });
+                self.draw_one(&mut chart, i, series, (&x, &y), &mut seen, &fail)?;
             }
-            if n > 1 {
-                let font = 14.0;
-                let rows = n as f64;
-                let widest = self
-                    .series
-                    .iter()
-                    .map(|s| frame::text_width(&s.label, font / 1.24))
-                    .fold(0.0, f64::max);
-                let (pw, ph) = chart.plotting_area().dim_in_pixel();
-                let (pw, ph) = (pw as f64 / sf, ph as f64 / sf);
-                let w = (widest + 40.0 + 30.0) / pw;
-                let h = (rows * font * 1.45 + 20.0) / ph;
-                chart
-                    .configure_series_labels()
-                    .position(frame::legend_corner(&seen, w, h))
-                    .margin(8 * s)
-                    .legend_area_size(40 * s)
-                    .background_style(WHITE.mix(0.9))
-                    .border_style(BLACK.stroke_width(s as u32))
-                    .label_font(("sans-serif", font * sf))
-                    .draw()
-                    .map_err(|e| fail(e.to_string()))?;
+            if self.series.len() > 1 {
+                self.draw_legend(&mut chart, &seen, &fail)?;
             }
             area.present().map_err(|e| fail(e.to_string()))?;
         }
         frame::finish_svg(path, &self.title, width, height)
+    }
+
+    /// Draws series `i` (its line runs clipped to the y range, then its
+    /// markers with the legend entry) and adds the points it covers, as
+    /// fractions of the plotting area, to `seen`.
+    fn draw_one(
+        &self,
+        chart: &mut Plotted<'_>,
+        i: usize,
+        series: &Series,
+        (x, y): (&Axis, &Axis),
+        seen: &mut Vec<(f64, f64)>,
+        fail: &dyn Fn(String) -> Error,
+    ) -> Result<()> {
+        let s = frame::SCALE as i32;
+        let n = self.series.len();
+        let (y_lo, y_hi) = (y.range().start, y.range().end);
+        let colour = COLOURS[i % COLOURS.len()];
+        let style = colour.stroke_width(2 * s as u32);
+        let shape = i % 4;
+        let stroke = series.stroke;
+        let pts: Vec<(f64, f64)> = series
+            .points
+            .iter()
+            .filter(|p| x.accepts(p.0) && y.accepts(p.1))
+            .copied()
+            .collect();
+        let runs = clip_runs(&pts, y_lo, y_hi);
+        for run in &runs {
+            seen.extend(frame::sample_polyline(
+                &run.iter()
+                    .map(|p| (x.fraction(p.0), y.fraction(p.1)))
+                    .collect::<Vec<_>>(),
+                200,
+            ));
+            match series.stroke {
+                Stroke::Solid => {
+                    chart
+                        .draw_series(LineSeries::new(run.clone(), style))
+                        .map_err(|e| fail(e.to_string()))?;
+                }
+                Stroke::Dashed => {
+                    chart
+                        .draw_series(DashedLineSeries::new(run.clone(), 9 * s, 5 * s, style))
+                        .map_err(|e| fail(e.to_string()))?;
+                }
+                Stroke::Markers => {}
+            }
+        }
+        // Markers: every point when markers only, else about ten
+        // per series, offset so coinciding series alternate.
+        let inside: Vec<(f64, f64)> = pts
+            .iter()
+            .filter(|p| p.1 >= y_lo && p.1 <= y_hi)
+            .copied()
+            .collect();
+        let every = match series.stroke {
+            Stroke::Markers => 1,
+            _ => (inside.len() / 10).max(1),
+        };
+        let offset = if every > 1 { i * every / n.max(1) } else { 0 };
+        let marks: Vec<(f64, f64)> = inside.iter().skip(offset).step_by(every).copied().collect();
+        let r = if series.stroke == Stroke::Markers {
+            4
+        } else {
+            3
+        } * s;
+        let outline = marker_outline(shape, r);
+        let (first, second, dot) = legend_pieces(shape, stroke, r);
+        let line = colour.stroke_width((2 * s) as u32);
+        chart
+            .draw_series(
+                marks
+                    .iter()
+                    .map(|&p| EmptyElement::at(p) + Polygon::new(outline.clone(), colour.filled())),
+            )
+            .map_err(|e| fail(e.to_string()))?
+            .label(series.label.clone())
+            .legend(move |(lx, ly)| {
+                EmptyElement::at((lx, ly))
+                    + PathElement::new(first.clone(), line)
+                    + PathElement::new(second.clone(), line)
+                    + Polygon::new(dot.clone(), colour.filled())
+            });
+        Ok(())
+    }
+
+    /// The legend, in the corner of the plotting area that `seen` (the
+    /// series' points, as fractions of it) leaves emptiest.
+    fn draw_legend(
+        &self,
+        chart: &mut Plotted<'_>,
+        seen: &[(f64, f64)],
+        fail: &dyn Fn(String) -> Error,
+    ) -> Result<()> {
+        let s = frame::SCALE as i32;
+        let sf = s as f64;
+        let font = 14.0;
+        let rows = self.series.len() as f64;
+        let widest = self
+            .series
+            .iter()
+            .map(|s| frame::text_width(&s.label, font / 1.24))
+            .fold(0.0, f64::max);
+        let (pw, ph) = chart.plotting_area().dim_in_pixel();
+        let (pw, ph) = (pw as f64 / sf, ph as f64 / sf);
+        let w = (widest + 40.0 + 30.0) / pw;
+        let h = (rows * font * 1.45 + 20.0) / ph;
+        chart
+            .configure_series_labels()
+            .position(frame::legend_corner(seen, w, h))
+            .margin(8 * s)
+            .legend_area_size(40 * s)
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK.stroke_width(s as u32))
+            .label_font(("sans-serif", font * sf))
+            .draw()
+            .map_err(|e| fail(e.to_string()))?;
+        Ok(())
     }
 }
 

@@ -322,6 +322,56 @@ impl Plan {
         Ok(results)
     }
 
+    /// The program's curve on `model`: both legs, or the approach alone
+    /// (copied as the retraction) for a law without hysteresis.
+    fn curve_on<M: LoadingModel>(
+        &self,
+        model: &M,
+        program: &LoadingProgram,
+        progress: &(dyn Fn(usize, usize) + Sync),
+    ) -> Result<Curve> {
+        if self.compute_retraction {
+            return curve_with_progress(model, program, self.quantities.observables(), progress);
+        }
+        let steps: Vec<_> = program
+            .separations()
+            .into_iter()
+            .map(|d| (d, History::Approach))
+            .collect();
+        let approach = model.states(&steps, self.quantities.observables())?;
+        Ok(Curve {
+            program: *program,
+            retract: approach.clone(),
+            approach,
+        })
+    }
+
+    /// The hysteresis energy (J), if asked for. A continuous model's
+    /// energy is integrated to the scene's tolerance; a discrete one (a
+    /// finite sample of summits) has step loads, and its trapezoid on the
+    /// program is the honest estimate.
+    fn hysteresis_on<M: LoadingModel>(
+        &self,
+        model: &M,
+        program: &LoadingProgram,
+        curve: &Curve,
+    ) -> Result<Option<f64>> {
+        let continuous = !model.is_discrete() && self.distribution.sample_points().is_none();
+        Ok(
+            if self.hysteresis_energy && self.compute_retraction && continuous {
+                Some(hysteresis_energy_to(
+                    model,
+                    program,
+                    self.budget.integrals(),
+                )?)
+            } else if self.hysteresis_energy {
+                curve.hysteresis_energy()
+            } else {
+                None
+            },
+        )
+    }
+
     fn run_on<M: LoadingModel>(
         &self,
         model: &M,
@@ -331,21 +381,7 @@ impl Plan {
     ) -> Result<Results> {
         let closest = self.closest_separation(model)?;
         let program = LoadingProgram::new(self.start, closest, self.points)?;
-        let curve = if self.compute_retraction {
-            curve_with_progress(model, &program, self.quantities.observables(), progress)?
-        } else {
-            let steps: Vec<_> = program
-                .separations()
-                .into_iter()
-                .map(|d| (d, History::Approach))
-                .collect();
-            let approach = model.states(&steps, self.quantities.observables())?;
-            Curve {
-                program,
-                retract: approach.clone(),
-                approach,
-            }
-        };
+        let curve = self.curve_on(model, &program, progress)?;
         let pull_off = if self.pull_off {
             model.pull_off(closest, self.start, PULL_OFF_SAMPLES)?
         } else {
@@ -357,22 +393,7 @@ impl Plan {
             )?),
             Err(_) => None,
         };
-        // A continuous model's energy is integrated to the scene's
-        // tolerance; a discrete one (a finite sample of summits) has step
-        // loads, and its trapezoid on the program is the honest estimate.
-        let continuous = !model.is_discrete() && self.distribution.sample_points().is_none();
-        let mut hysteresis_energy =
-            if self.hysteresis_energy && self.compute_retraction && continuous {
-                Some(hysteresis_energy_to(
-                    model,
-                    &program,
-                    self.budget.integrals(),
-                )?)
-            } else if self.hysteresis_energy {
-                curve.hysteresis_energy()
-            } else {
-                None
-            };
+        let mut hysteresis_energy = self.hysteresis_on(model, &program, &curve)?;
         // A copied retraction leg cost nothing.
         let legs: &[&[State]] = if self.compute_retraction {
             &[&curve.approach, &curve.retract]

@@ -396,6 +396,23 @@ pub fn sweep_table(
     Ok(Table::from_csv(&text))
 }
 
+/// The rows of this shard whose status is not `ok`: `(index, status)`.
+/// The status column follows the index, the varied values and the seed.
+fn failed_rows(
+    file: &ResultsFile,
+    spec: &SweepSpec,
+    options: &SweepOptions,
+) -> Vec<(usize, String)> {
+    let status_col = spec.vary.len() + 2;
+    file.rows()
+        .filter(|(i, _)| options.shard.is_none_or(|s| s.contains(*i)))
+        .filter_map(|(i, r)| {
+            let status = r.split(',').nth(status_col).unwrap_or("");
+            (status != "ok").then(|| (i, status.to_string()))
+        })
+        .collect()
+}
+
 /// Runs the points of `spec` over the scene `base` that are not yet in
 /// `out/results.csv`, calling `progress(done, total)` as points finish
 /// (once before any runs; the first point runs alone, so the second call
@@ -428,8 +445,7 @@ pub fn run_sweep(
     let header = results_header(&paths, &cols);
     let points = spec.points();
     // Every distinct value of every varied field parses into the scene.
-    let varied: Vec<String> = spec.vary.iter().map(|v| v.path.clone()).collect();
-    check_fields(&base_value, &varied, &points)?;
+    check_fields(&base_value, &paths, &points)?;
     let meta = SweepMeta {
         scene: normalised,
         spec: spec.clone(),
@@ -490,16 +506,7 @@ pub fn run_sweep(
     let file = file
         .into_inner()
         .map_err(|_| Error::invalid("out", "results file lock poisoned"))?;
-    // Status column: after the index, the varied values and the seed.
-    let status_col = spec.vary.len() + 2;
-    let failures: Vec<(usize, String)> = file
-        .rows()
-        .filter(|(i, _)| options.shard.is_none_or(|s| s.contains(*i)))
-        .filter_map(|(i, r)| {
-            let status = r.split(',').nth(status_col).unwrap_or("");
-            (status != "ok").then(|| (i, status.to_string()))
-        })
-        .collect();
+    let failures = failed_rows(&file, spec, options);
     let path = file.finish(&header)?;
     Ok(PointOutcome {
         planned: total,
