@@ -628,6 +628,7 @@ impl pulp::WithSimd for TableBatch<'_> {
 }
 
 impl AsperityLaw for InterpolatedLaw {
+    delegate_critical_points!(inner);
     fn name(&self) -> &'static str {
         self.inner.name()
     }
@@ -670,32 +671,12 @@ impl AsperityLaw for InterpolatedLaw {
         self.inner.attach_interference()
     }
 
-    fn detach_interference(&self) -> f64 {
-        self.inner.detach_interference()
-    }
-
-    fn cutoff_interference(&self) -> f64 {
-        self.inner.cutoff_interference()
-    }
-
     fn interaction_range(&self) -> f64 {
         self.inner.interaction_range()
     }
 
     fn max_interference(&self) -> f64 {
         self.inner.max_interference()
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        self.inner.breakpoints(branch)
-    }
-
-    fn pull_off(&self, control: Control) -> Option<Instability> {
-        self.inner.pull_off(control)
-    }
-
-    fn zero_load_radius(&self) -> Option<f64> {
-        self.inner.zero_load_radius()
     }
 }
 

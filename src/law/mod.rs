@@ -26,6 +26,34 @@
 //! | shaped (JKR, any axisymmetric summit) | [`shaped`] | 0 | `min delta(a)` of the profile | `min F(a)` of the profile |
 //! | tabulated (e.g. LJ sphere solver) | [`tabulated`] | jump-in | jump-out | table's minimum |
 
+/// The critical points of a law that stands in for another one, the
+/// field `$inner` (tables of an exact law): detach and cutoff
+/// interferences, breakpoints, pull-off and zero-load radius, delegated
+/// (a table's are its exact law's, not its own interpolant's).
+macro_rules! delegate_critical_points {
+    ($inner:ident) => {
+        fn detach_interference(&self) -> f64 {
+            self.$inner.detach_interference()
+        }
+
+        fn cutoff_interference(&self) -> f64 {
+            self.$inner.cutoff_interference()
+        }
+
+        fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+            self.$inner.breakpoints(branch)
+        }
+
+        fn pull_off(&self, control: Control) -> Option<Instability> {
+            self.$inner.pull_off(control)
+        }
+
+        fn zero_load_radius(&self) -> Option<f64> {
+            self.$inner.zero_load_radius()
+        }
+    };
+}
+
 pub mod bradley;
 pub mod cos;
 mod cursor;

@@ -248,6 +248,7 @@ impl Shaped {
 }
 
 impl AsperityLaw for Shaped {
+    delegate_critical_points!(exact);
     fn name(&self) -> &'static str {
         "shaped"
     }
@@ -256,26 +257,6 @@ impl AsperityLaw for Shaped {
 
     fn attach_interference(&self) -> f64 {
         0.0
-    }
-
-    fn detach_interference(&self) -> f64 {
-        self.exact.detach_interference()
-    }
-
-    fn cutoff_interference(&self) -> f64 {
-        self.exact.cutoff_interference()
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        self.exact.breakpoints(branch)
-    }
-
-    fn pull_off(&self, control: Control) -> Option<Instability> {
-        self.exact.pull_off(control)
-    }
-
-    fn zero_load_radius(&self) -> Option<f64> {
-        self.exact.zero_load_radius()
     }
 }
 
@@ -437,6 +418,7 @@ impl ShapedMd {
 }
 
 impl AsperityLaw for ShapedMd {
+    delegate_critical_points!(exact);
     fn name(&self) -> &'static str {
         "shaped_md"
     }
@@ -445,26 +427,6 @@ impl AsperityLaw for ShapedMd {
 
     fn attach_interference(&self) -> f64 {
         self.exact.attach_interference()
-    }
-
-    fn detach_interference(&self) -> f64 {
-        self.exact.detach_interference()
-    }
-
-    fn cutoff_interference(&self) -> f64 {
-        self.exact.cutoff_interference()
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        self.exact.breakpoints(branch)
-    }
-
-    fn pull_off(&self, control: Control) -> Option<Instability> {
-        self.exact.pull_off(control)
-    }
-
-    fn zero_load_radius(&self) -> Option<f64> {
-        self.exact.zero_load_radius()
     }
 }
 

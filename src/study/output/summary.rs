@@ -423,59 +423,127 @@ impl Summary {
             .iter()
             .map(|(h, x)| (h.sweep.clone(), *x))
             .collect();
-        let mc = self.montecarlo.as_ref();
-        let st = self.stiction.as_ref();
-        for (name, x) in [
-            ("pull_off_N", self.pull_off_load),
-            ("pull_off_separation_m", self.pull_off_separation),
-            ("hysteresis_energy_J", self.hysteresis_energy),
-            ("mc_max_load_N", mc.and_then(|m| m.max_load)),
-            (
-                "mc_max_load_se_N",
-                mc.and_then(|m| m.max_load_standard_error),
-            ),
-            ("mc_pull_off_N", mc.and_then(|m| m.pull_off_load)),
-            ("mc_max_abs_z", mc.and_then(|m| m.max_abs_z)),
-            ("stiction_margin_N", st.map(|t| t.margin_n)),
-            // 1 when the switch sticks (margin < 0), else 0.
-            ("sticks", st.map(|t| f64::from(u8::from(t.sticks)))),
-        ] {
-            v.push((name.into(), x));
-        }
+        v.extend(
+            RUN_SCALARS
+                .iter()
+                .map(|r| (r.name.to_string(), (r.read)(self))),
+        );
         v
     }
 }
 
+/// Which part of a run a run-level scalar belongs to: a plan reports it
+/// when the scene asks for that part.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ScalarGroup {
+    /// `[outputs] pull_off`.
+    PullOff,
+    /// `[outputs] hysteresis_energy`.
+    Hysteresis,
+    /// A `[montecarlo]` section.
+    MonteCarlo,
+    /// A `[switch]` section.
+    Switch,
+}
+
+/// A run-level scalar beside the quantities' headline numbers: its name
+/// (a sweep column and a [`Summary::scalars`] key, with its unit suffix),
+/// the part of the run it belongs to, and how a summary gives it.
+#[derive(Debug, Clone, Copy)]
+pub struct RunScalar {
+    /// The column name.
+    pub name: &'static str,
+    /// What the scene must ask for.
+    pub group: ScalarGroup,
+    /// Its value in a summary (`None`: not computed, or no such value).
+    pub read: fn(&Summary) -> Option<f64>,
+}
+
+/// Every run-level scalar, declared once: the sweep's columns
+/// ([`Plan::result_columns`]) and the summary's values
+/// ([`Summary::scalars`]) both come from this list.
+pub const RUN_SCALARS: [RunScalar; 9] = [
+    RunScalar {
+        name: "pull_off_N",
+        group: ScalarGroup::PullOff,
+        read: |s| s.pull_off_load,
+    },
+    RunScalar {
+        name: "pull_off_separation_m",
+        group: ScalarGroup::PullOff,
+        read: |s| s.pull_off_separation,
+    },
+    RunScalar {
+        name: "hysteresis_energy_J",
+        group: ScalarGroup::Hysteresis,
+        read: |s| s.hysteresis_energy,
+    },
+    RunScalar {
+        name: "mc_max_load_N",
+        group: ScalarGroup::MonteCarlo,
+        read: |s| s.montecarlo.as_ref().and_then(|m| m.max_load),
+    },
+    RunScalar {
+        name: "mc_max_load_se_N",
+        group: ScalarGroup::MonteCarlo,
+        read: |s| {
+            s.montecarlo
+                .as_ref()
+                .and_then(|m| m.max_load_standard_error)
+        },
+    },
+    RunScalar {
+        name: "mc_pull_off_N",
+        group: ScalarGroup::MonteCarlo,
+        read: |s| s.montecarlo.as_ref().and_then(|m| m.pull_off_load),
+    },
+    RunScalar {
+        name: "mc_max_abs_z",
+        group: ScalarGroup::MonteCarlo,
+        read: |s| s.montecarlo.as_ref().and_then(|m| m.max_abs_z),
+    },
+    RunScalar {
+        name: "stiction_margin_N",
+        group: ScalarGroup::Switch,
+        read: |s| s.stiction.as_ref().map(|t| t.margin_n),
+    },
+    // 1 when the switch sticks (margin < 0), else 0.
+    RunScalar {
+        name: "sticks",
+        group: ScalarGroup::Switch,
+        read: |s| s.stiction.as_ref().map(|t| f64::from(u8::from(t.sticks))),
+    },
+];
+
 impl Plan {
+    /// Whether this plan reports the run-level scalars of `group`.
+    pub fn reports(&self, group: ScalarGroup) -> bool {
+        let o = self.scene.outputs;
+        match group {
+            ScalarGroup::PullOff => o.pull_off,
+            ScalarGroup::Hysteresis => o.hysteresis_energy,
+            ScalarGroup::MonteCarlo => self.montecarlo.is_some(),
+            ScalarGroup::Switch => self.switch.is_some(),
+        }
+    }
+
     /// The columns of a sweep's `results.csv` for this plan's outputs:
     /// the headline number of every asked quantity, then the pull-off,
     /// the hysteresis energy, the Monte Carlo and stiction results when the
     /// scene asks for them (names as in [`Summary::scalars`]).
     pub fn result_columns(&self) -> Vec<String> {
-        let o = self.scene.outputs;
         let mut cols: Vec<String> = self
             .quantities
             .iter()
             .filter(|q| q.asked)
             .filter_map(|q| q.headline.as_ref().map(|h| h.sweep.clone()))
             .collect();
-        let mut add = |on: bool, names: &[&str]| {
-            if on {
-                cols.extend(names.iter().map(|n| n.to_string()));
-            }
-        };
-        add(o.pull_off, &["pull_off_N", "pull_off_separation_m"]);
-        add(o.hysteresis_energy, &["hysteresis_energy_J"]);
-        add(
-            self.montecarlo.is_some(),
-            &[
-                "mc_max_load_N",
-                "mc_max_load_se_N",
-                "mc_pull_off_N",
-                "mc_max_abs_z",
-            ],
+        cols.extend(
+            RUN_SCALARS
+                .iter()
+                .filter(|r| self.reports(r.group))
+                .map(|r| r.name.to_string()),
         );
-        add(self.switch.is_some(), &["stiction_margin_N", "sticks"]);
         cols
     }
 }
