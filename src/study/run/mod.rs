@@ -260,6 +260,17 @@ impl Plan {
     }
 }
 
+/// The approach states of `elastic` (the elastic comparison of a plastic
+/// law) at the separations of `curve`'s approach: load, area and count.
+fn elastic_approach<M: LoadingModel>(elastic: &M, curve: &Curve) -> Result<Vec<State>> {
+    let steps: Vec<(f64, History)> = curve
+        .approach
+        .iter()
+        .map(|s| (s.separation, History::Approach))
+        .collect();
+    elastic.states(&steps, &Observables::standard(true, true, false))
+}
+
 impl Results {
     /// Largest approach load (N) of the curve, if loads were computed.
     pub fn max_load(&self) -> Option<f64> {
@@ -561,15 +572,7 @@ impl Plan {
             // same sphere: `study::sphere`)
             r.regimes = self.regimes_at(r.curve.program.closest);
             if let Some(law) = self.elastic_law()? {
-                let elastic = self.model_with(law)?;
-                let steps: Vec<(f64, History)> = r
-                    .curve
-                    .approach
-                    .iter()
-                    .map(|s| (s.separation, History::Approach))
-                    .collect();
-                r.elastic_approach =
-                    Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
+                r.elastic_approach = Some(elastic_approach(&self.model_with(law)?, &r.curve)?);
             }
         }
         if let Some(sw) = &self.switch {

@@ -15,7 +15,7 @@
 use super::Results;
 use crate::electrical::{Interaction, ResistanceObservables};
 use crate::error::Result;
-use crate::loading::{History, LoadingModel, Observables};
+use crate::loading::History;
 use crate::roughsphere::{BumpElectrics, RoughSphere, SphereQuery, SphereState};
 use crate::study::plan::Plan;
 use crate::study::quantity::Record;
@@ -58,14 +58,7 @@ pub(super) fn finish(plan: &Plan, sphere: &RoughSphere, r: &mut Results) -> Resu
             .as_ref()
             .expect("a sphere plan")
             .on(plan.model_with(law)?)?;
-        let steps: Vec<(f64, History)> = r
-            .curve
-            .approach
-            .iter()
-            .map(|s| (s.separation, History::Approach))
-            .collect();
-        r.elastic_approach =
-            Some(elastic.states(&steps, &Observables::standard(true, true, false))?);
+        r.elastic_approach = Some(super::elastic_approach(&elastic, &r.curve)?);
     }
     if let Some(res) = &plan.resistance {
         if res.interaction() == Interaction::Greenwood {
