@@ -28,6 +28,7 @@
 use super::operator::HalfSpace;
 use super::{Options, Solution};
 use crate::error::{Error, Result};
+use crate::numeric::roots::brent;
 use rayon::prelude::*;
 
 /// The exponential interaction of Rey, Anciaux & Molinari (2017).
@@ -60,22 +61,22 @@ fn sums<F: Fn(usize) -> [f64; 4] + Sync>(n: usize, f: F) -> [f64; 4] {
 }
 
 /// The rigid-body start: `g = max(c - h, 0)` with `c` such that the mean is
-/// `g_mean` (bisection).
+/// `g_mean`, by Brent's method ([`brent`]) to a few ulps of `c`. The mean
+/// `m(c) = mean max(c - h, 0)` increases with `c` and lies between
+/// `c - min h` (capped below by 0) and `c - mean h`, so
+/// `m(min h + g_mean) <= g_mean <= m(mean h + g_mean)` brackets `c`.
 pub(crate) fn rigid_gap(h: &[f64], g_mean: f64) -> Vec<f64> {
     let n = h.len() as f64;
     let mean_at = |c: f64| h.iter().map(|v| (c - v).max(0.0)).sum::<f64>() / n;
+    let hmin = h.iter().cloned().fold(f64::INFINITY, f64::min);
     let hmax = h.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
     let hmean = h.iter().sum::<f64>() / n;
-    let (mut lo, mut hi) = (hmean + g_mean - 1e-300, hmax + g_mean);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mean_at(mid) < g_mean {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    h.iter().map(|v| (hi - v).max(0.0)).collect()
+    let (lo, hi) = (hmin + g_mean, hmean + g_mean);
+    let xtol = 4.0 * f64::EPSILON * (hmax - hmin + g_mean);
+    // Without a sign change (no pixel clipped: m(hi) = g_mean to rounding)
+    // the upper end is the answer.
+    let c = brent(|c| mean_at(c) - g_mean, lo, hi, xtol).unwrap_or(hi);
+    h.iter().map(|v| (c - v).max(0.0)).collect()
 }
 
 /// Solves at mean gap `g_mean > 0` from `warm` (a previous gap field,

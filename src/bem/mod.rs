@@ -11,10 +11,15 @@
 //!   exponential adhesion of Rey, Anciaux & Molinari (2017).
 //! - [`clusters`]: connected contact spots and their size distribution;
 //!   [`resistance`]: their constriction resistance.
+//! - [`compare`]: the exact states of a map beside GW (its moments) and
+//!   Persson (its radial spectrum) at the same mean pressures, with their
+//!   relative differences and warnings as data.
 //!
 //! The remaining combinations are outer monotone root-finds around these
-//! two solvers: mean-gap control on a padded map (the pressure that gives the
-//! gap) and load control with adhesion (the gap that gives the pressure).
+//! two solvers (Brent's method of [`crate::numeric::roots`] in the log of
+//! the control variable): mean-gap control on a padded map (the pressure
+//! that gives the gap) and load control with adhesion (the gap that gives
+//! the pressure).
 //!
 //! Sign conventions: heights `h` of the rigid surface point towards the
 //! elastic body; the gap is `g = u - h + const >= 0`; pressure is positive
@@ -25,6 +30,7 @@
 //! needs about 0.43 GiB periodic, 0.77 GiB padded).
 
 pub mod clusters;
+pub mod compare;
 mod contact;
 pub(crate) mod fft;
 mod gap_control;
@@ -36,6 +42,7 @@ pub use clusters::{Cluster, SizeBin};
 pub use gap_control::Exponential;
 
 use crate::error::{positive, Error, Result};
+use crate::numeric::roots::brent;
 use crate::surface::{HeightMap, Plane};
 use operator::HalfSpace;
 
@@ -366,8 +373,11 @@ impl Problem {
 }
 
 /// Finds `x > 0` with `f(x) = target` for `f` monotone (decreasing when
-/// `decreasing`): bracket by factors of 4 from `x0`, then the Illinois
-/// variant of regula falsi in `ln x`, until `|f - target| <= tol`.
+/// `decreasing`): bracket by factors of 4 from `x0`, then Brent's method
+/// ([`brent`]) in `ln x`, stopped at the first evaluation with
+/// `|f - target| <= tol` (it counts as an exact root) or when the bracket
+/// is [`LN_X_TOL`] wide. Returns the solution at the root; every solve
+/// warm-starts from the previous one (`f` keeps it).
 fn monotone_root<F>(x0: f64, target: f64, tol: f64, decreasing: bool, mut f: F) -> Result<Solution>
 where
     F: FnMut(f64) -> Result<(f64, Solution)>,
@@ -383,14 +393,13 @@ where
     }
     // fa > 0: x too large (increasing form); step down, else up.
     let step = if fa > 0.0 { 0.25 } else { 4.0 };
-    let (mut b, mut fb);
+    let (mut b, mut fb, mut sb);
     let mut k = 0;
     loop {
         b = a * step;
-        let (v, s) = eval(b)?;
-        fb = v;
+        (fb, sb) = eval(b)?;
         if fb.abs() <= tol {
-            return Ok(s);
+            return Ok(sb);
         }
         if fb.signum() != fa.signum() {
             break;
@@ -406,34 +415,61 @@ where
             });
         }
     }
-    let (mut la, mut lb) = (a.ln(), b.ln());
-    let mut side = 0;
-    for it in 0..100 {
-        let lc = (la * fb - lb * fa) / (fb - fa);
-        let (fc, s) = eval(lc.exp())?;
-        if fc.abs() <= tol || (lb - la).abs() < 1e-14 {
-            return Ok(s);
-        }
-        if fc.signum() == fb.signum() {
-            lb = lc;
-            fb = fc;
-            if side == -1 {
-                fa *= 0.5;
+    // The bracket's ends are known: Brent asks for them first.
+    let (la, lb) = (a.ln(), b.ln());
+    let mut best = (lb, fb.abs(), sb);
+    let mut failure = None;
+    let mut solves = 0;
+    let root = brent(
+        |lx| {
+            if lx == la {
+                return fa;
             }
-            side = -1;
-        } else {
-            la = lc;
-            fa = fc;
-            if side == 1 {
-                fb *= 0.5;
+            if lx == lb {
+                return fb;
             }
-            side = 1;
-        }
-        let _ = it;
+            if failure.is_some() {
+                return f64::NAN;
+            }
+            solves += 1;
+            match eval(lx.exp()) {
+                Ok((v, s)) => {
+                    if v.abs() < best.1 {
+                        best = (lx, v.abs(), s);
+                    }
+                    if v.abs() <= tol {
+                        0.0
+                    } else {
+                        v
+                    }
+                }
+                Err(e) => {
+                    failure = Some(e);
+                    f64::NAN
+                }
+            }
+        },
+        la,
+        lb,
+        LN_X_TOL,
+    );
+    if let Some(e) = failure {
+        return Err(e);
     }
-    Err(Error::NoConvergence {
-        what: "boundary elements: the control variable".into(),
-        iterations: 100,
-        residual: fa.abs().min(fb.abs()),
-    })
+    let Some(root) = root else {
+        return Err(Error::NoConvergence {
+            what: "boundary elements: the control variable".into(),
+            iterations: solves,
+            residual: best.1,
+        });
+    };
+    if root == best.0 {
+        return Ok(best.2);
+    }
+    // Brent ended on another point than the best evaluated one.
+    eval(root.exp()).map(|(_, s)| s)
 }
+
+/// Width in `ln x` at which [`monotone_root`] stops: the control variable
+/// to 1e-14 relative.
+const LN_X_TOL: f64 = 1e-14;

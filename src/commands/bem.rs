@@ -5,26 +5,18 @@
 
 use super::persson::positive_values;
 use super::{param, CommandResult};
-use crate::bem::resistance::cluster_resistance;
-use crate::bem::{
-    clusters::size_distribution, memory_estimate, Options, Problem, SizeBin, Solution,
-};
-use crate::electrical::{Interaction, ResistanceObservables, SpotResistance, Spreading};
+use crate::bem::compare::{compare, CompareError, CompareInput, Comparison, Control, Step};
+use crate::bem::{memory_estimate, Exponential, Options, SizeBin, Solution};
 use crate::error::positive;
-use crate::gw::{GwModel, RoughSurface};
-use crate::heights::Gaussian;
-use crate::law::Hertz;
-use crate::loading::{Derived, History, LoadingModel, Observables};
-use crate::persson::gw::GwOnSpectrum;
-use crate::persson::Persson;
-use crate::spectrum::radial::radial_psd;
-use crate::surface::{npy, HeightMap, Topography};
+use crate::surface::{npy, HeightMap};
 use crate::Error;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
-use std::time::Instant;
+
+pub use crate::bem::compare::{
+    Difference as BemDifference, Prediction as BemModel, Resistance as BemResistance,
+};
 
 /// What the solves hold fixed.
 #[derive(Debug, Clone, PartialEq)]
@@ -160,17 +152,6 @@ impl BemInput {
     }
 }
 
-/// Contact resistances of a state (Ohm).
-#[derive(Serialize, Debug, Clone)]
-pub struct BemResistance {
-    /// The clusters as independent parallel Holm spots.
-    pub bem_parallel_ohm: f64,
-    /// The clusters with Greenwood's interaction.
-    pub bem_greenwood_ohm: f64,
-    /// GW's on the same map's moments, at the same mean pressure.
-    pub gw_ohm: Option<f64>,
-}
-
 /// One solve: the exact boundary-element state.
 #[derive(Serialize, Debug, Clone)]
 pub struct BemState {
@@ -192,35 +173,6 @@ pub struct BemState {
     /// Contact resistance, with a resistivity.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub resistance: Option<BemResistance>,
-}
-
-/// A model's prediction at a state's mean pressure (null where it has
-/// none).
-#[derive(Serialize, Debug, Clone, Copy)]
-pub struct BemModel {
-    /// Mean pressure (Pa).
-    #[serde(rename = "pressure_Pa")]
-    pub pressure: f64,
-    /// Real-area fraction.
-    pub area_fraction: Option<f64>,
-    /// Mean gap (m).
-    pub mean_gap_m: Option<f64>,
-}
-
-/// Relative differences `model / exact - 1` at a state's mean pressure.
-#[derive(Serialize, Debug, Clone)]
-pub struct BemDifference {
-    /// Mean pressure (Pa).
-    #[serde(rename = "pressure_Pa")]
-    pub pressure: f64,
-    /// GW's area against the exact.
-    pub gw_area: Option<f64>,
-    /// GW's mean gap against the exact.
-    pub gw_mean_gap: Option<f64>,
-    /// Persson's area against the exact.
-    pub persson_area: Option<f64>,
-    /// Persson's mean gap against the exact.
-    pub persson_mean_gap: Option<f64>,
 }
 
 /// What `asperity bem --json` prints.
@@ -254,13 +206,37 @@ pub struct BemOutput {
     pub warnings: Vec<String>,
 }
 
-fn opt_rel(model: Option<f64>, exact: f64) -> Option<f64> {
-    model.filter(|_| exact != 0.0).map(|m| m / exact - 1.0)
+impl BemInput {
+    /// The core's inputs ([`compare`]).
+    fn compare_input(&self) -> CompareInput {
+        let (control, targets) = match &self.targets {
+            BemTargets::Pressures(p) => (Control::Pressure, p.clone()),
+            BemTargets::Gaps(g) => (Control::Gap, g.clone()),
+        };
+        CompareInput {
+            pixel_size: self.pixel_size,
+            contact_modulus: self.estar,
+            periodic: self.periodic,
+            control,
+            targets,
+            adhesion: self.adhesion.map(|a| Exponential {
+                energy: a.energy,
+                range: a.range,
+            }),
+            gamma: self.gamma,
+            resistivity: self.resistivity,
+            options: Options {
+                tolerance: self.tolerance,
+                max_iterations: self.max_iterations,
+                memory_limit: (self.memory_limit_mib * 1048576.0) as usize,
+            },
+        }
+    }
 }
 
 /// The exact elastic contact of `map` (heights in m) by FFT boundary
 /// elements, beside GW and Persson at the same mean pressures (`asperity
-/// bem`), and its outputs written to `input.out`.
+/// bem`, [`compare`]), and its outputs written to `input.out`.
 ///
 /// # Errors
 /// Naming an input (`{pressures[i]}`, `{estar}`, `{heights}` for the map:
@@ -269,16 +245,20 @@ fn opt_rel(model: Option<f64>, exact: f64) -> Option<f64> {
 /// [`Error::Cancelled`].
 pub fn bem(map: &HeightMap, args: &BemInput) -> CommandResult<BemOutput> {
     args.validate()?;
-    let (targets, by_gap) = match &args.targets {
-        BemTargets::Pressures(p) => (p.as_slice(), false),
-        BemTargets::Gaps(g) => (g.as_slice(), true),
-    };
-    let shown = param("heights");
-    let options = Options {
-        tolerance: args.tolerance,
-        max_iterations: args.max_iterations,
-        memory_limit: (args.memory_limit_mib * 1048576.0) as usize,
-    };
+    let memory = check_memory(map, args)?;
+    let cmp = compare(map, &args.compare_input()).map_err(|e| named_failure(e, args))?;
+    let out = output(map, args, &cmp, memory);
+    if let Some(dir) = &args.out {
+        crate::cancel::check()?;
+        let solutions: Vec<&Solution> = cmp.states.iter().map(|s| &s.solution).collect();
+        write_outputs(dir, &out, &solutions, (map.rows(), map.cols()))?;
+    }
+    Ok(out)
+}
+
+/// The solver's memory estimate (bytes) for `map`, checked against
+/// `{memory_limit_mib}` and the memory available.
+fn check_memory(map: &HeightMap, args: &BemInput) -> CommandResult<usize> {
     let memory = memory_estimate(map.rows(), map.cols(), args.periodic);
     let layout = format!(
         "{} x {} pixels{}",
@@ -290,6 +270,7 @@ pub fn bem(map: &HeightMap, args: &BemInput) -> CommandResult<BemOutput> {
             ", padded to twice the size"
         }
     );
+    let shown = param("heights");
     if memory as f64 > args.memory_limit_mib * 1048576.0 {
         return Err(Error::invalid(
             param("memory_limit_mib"),
@@ -306,219 +287,111 @@ pub fn bem(map: &HeightMap, args: &BemInput) -> CommandResult<BemOutput> {
         memory as f64,
         "crop or downsample the map",
     )?;
-    let mut problem = Problem::new(map, args.pixel_size, args.estar, args.periodic, &options)
-        .map_err(|e| {
-            super::named(
-                e,
-                &[
-                    ("topography", "heights"),
-                    ("pixel_size", "pixel_size"),
-                    ("contact_modulus", "estar"),
-                ],
-            )
-        })?;
-    if let Some(a) = args.adhesion {
-        problem = problem.with_adhesion(a.energy, a.range).map_err(|e| {
-            match e.field().map(str::to_string) {
-                Some(f) => e.renamed(&param(&f)),
-                None => e,
-            }
-        })?;
-    }
-    let spot = args
-        .resistivity
-        .map(|r| {
-            SpotResistance::same_metal(Spreading::Maxwell, r, None)
-                .map_err(|e| e.renamed(&param("resistivity")))
-        })
-        .transpose()?;
-    // GW from the finite-difference moments (as `asperity surface`), Persson from the PSD.
-    let topo = Topography::new(map.clone(), args.pixel_size).map_err(|e| match e.field() {
-        Some("heights") => e.renamed(&param("scale")),
-        _ => e.renamed(&param("pixel_size")),
-    })?;
-    let charac = topo
-        .characterise(args.periodic)
-        .map_err(|e| e.renamed(&shown))?;
-    let gw = GwOnSpectrum::from_moments(&charac.moments, args.estar).ok();
-    let psd = radial_psd(map, args.pixel_size, args.periodic).map_err(|e| e.renamed(&shown))?;
-    let persson =
-        Persson::new(psd, args.estar, args.gamma).map_err(|e| e.renamed(&param("gamma")))?;
-    let nominal_area = charac.nominal_area_m2();
+    Ok(memory)
+}
 
-    let start = Instant::now();
-    let mut warnings = Vec::new();
-    let mut solutions: Vec<Solution> = Vec::new();
-    let mut states = Vec::new();
-    let (mut gw_list, mut persson_list, mut diffs) = (Vec::new(), Vec::new(), Vec::new());
-    for &t in targets {
-        let warm = solutions.last();
-        let target = param(if by_gap { "gaps" } else { "pressures" });
-        let solved = if by_gap {
-            problem.solve_gap(t, &options, warm)
-        } else {
-            problem.solve_pressure(t, &options, warm)
-        };
-        let s = solved.map_err(|e| -> Error {
-            if e.is_bad_input() {
-                return e.renamed(&target);
-            }
-            if matches!(e, Error::Cancelled) {
-                return e;
-            }
-            // A solve that fails at these inputs: the target, the modulus
-            // and the adhesion the user wrote, named with the failure.
-            Error::invalid(
-                &target,
-                format!(
-                    "{t:e} with {} {:e} Pa{}: {e}; the inputs are outside what the solver \
-                     reaches (try a target nearer the map's scales, or {} / {})",
-                    param("estar"),
-                    args.estar,
-                    match args.adhesion {
-                        Some(a) => format!(
-                            ", {} {:e} J/m^2, {} {:e} m",
-                            param("adhesion_energy"),
-                            a.energy,
-                            param("adhesion_range"),
-                            a.range
-                        ),
-                        None => String::new(),
-                    },
-                    param("tolerance"),
-                    param("max_iterations")
-                ),
-            )
-        })?;
-        let cl = problem.clusters(&s);
-        let singles = cl.iter().filter(|c| c.pixels == 1).count();
-        if cl.len() >= 10 && singles * 2 > cl.len() {
-            warnings.push(format!(
-                "state {}: {singles} of {} clusters are single pixels: the contact spots are not resolved (use a finer map)",
-                states.len(),
-                cl.len()
-            ));
-        }
-        let p = s.mean_pressure;
-        let gw_state = gw
-            .as_ref()
-            .filter(|_| p > 0.0)
-            .and_then(|g| g.state(p).ok());
-        let pe_state = (p > 0.0).then(|| persson.state(p).ok()).flatten();
-        for (model, missing) in [("GW", gw_state.is_none()), ("Persson", pe_state.is_none())] {
-            if missing {
-                warnings.push(format!(
-                    "state {}: {model} gives no state at the mean pressure {p:e} Pa (none without \
-                     contact pressure, or outside its range): its values are null",
-                    states.len()
-                ));
-            }
-        }
-        if let Some(g) = gw_state.filter(|g| g.area_fraction > 0.1) {
-            warnings.push(format!(
-                "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity",
-                g.area_fraction
-            ));
-        }
-        let resistance = match &spot {
-            Some(sp) => {
-                let bem = cluster_resistance(&problem, &cl, sp)?;
-                let gw_r = match (&gw, gw_state) {
-                    (Some(g), Some(st)) => {
-                        // The engine's one GW integrator: Hertz summits, the
-                        // spot conductance as an observable, Greenwood's term.
-                        let surface = RoughSurface::new(
-                            g.params.density_per_m2,
-                            g.params.radius_m,
-                            g.sigma,
-                            nominal_area,
-                        )?;
-                        let law = Arc::new(Hertz::new(g.params.radius_m, args.estar)?);
-                        let model = GwModel::new(surface, Arc::new(Gaussian::new()), law)?;
-                        let r = ResistanceObservables::new(
-                            *sp,
-                            Interaction::Greenwood,
-                            nominal_area.sqrt(),
-                        );
-                        let outputs = r.add_to(Observables::LOAD)?;
-                        let state = model.state(st.h * g.sigma, History::Approach, &outputs)?;
-                        r.value(&outputs, &state.totals)
-                    }
-                    _ => None,
-                };
-                bem.map(|b| BemResistance {
-                    bem_parallel_ohm: b.parallel,
-                    bem_greenwood_ohm: b.greenwood,
-                    gw_ohm: gw_r,
-                })
-            }
-            None => None,
-        };
-        let gw_json = BemModel {
-            pressure: p,
-            area_fraction: gw_state.map(|g| g.area_fraction),
-            mean_gap_m: gw_state.map(|g| g.mean_gap),
-        };
-        let pe_json = BemModel {
-            pressure: p,
-            area_fraction: pe_state.map(|g| g.area_fraction),
-            mean_gap_m: pe_state.map(|g| g.mean_gap),
-        };
-        diffs.push(BemDifference {
-            pressure: p,
-            gw_area: opt_rel(gw_json.area_fraction, s.area_fraction()),
-            gw_mean_gap: opt_rel(gw_json.mean_gap_m, s.mean_gap),
-            persson_area: opt_rel(pe_json.area_fraction, s.area_fraction()),
-            persson_mean_gap: opt_rel(pe_json.mean_gap_m, s.mean_gap),
-        });
-        gw_list.push(gw_json);
-        persson_list.push(pe_json);
-        states.push(BemState {
-            pressure: p,
-            mean_gap_m: s.mean_gap,
-            area_fraction: s.area_fraction(),
-            clusters: cl.len(),
-            iterations: s.iterations,
-            residual: s.residual,
-            cluster_sizes_px: size_distribution(&cl),
-            resistance,
-        });
-        solutions.push(s);
+/// A failure of [`compare`] named by the command's inputs.
+fn named_failure(e: CompareError, args: &BemInput) -> Error {
+    let CompareError { step, error } = e;
+    match step {
+        Step::Problem => super::named(
+            error,
+            &[
+                ("topography", "heights"),
+                ("pixel_size", "pixel_size"),
+                ("contact_modulus", "estar"),
+            ],
+        ),
+        Step::Adhesion => match error.field().map(str::to_string) {
+            Some(f) => error.renamed(&param(&f)),
+            None => error,
+        },
+        Step::Resistivity => error.renamed(&param("resistivity")),
+        Step::Topography => match error.field() {
+            Some("heights") => error.renamed(&param("scale")),
+            _ => error.renamed(&param("pixel_size")),
+        },
+        Step::Characterise | Step::Spectrum => error.renamed(&param("heights")),
+        Step::Persson => error.renamed(&param("gamma")),
+        Step::Solve { target, .. } => solve_failure(error, target, args),
+        Step::Resistance => error,
     }
-    if gw.is_none() {
-        warnings.push(
-            "GW: the map's bandwidth leaves McCool's summit heights no variance; no GW prediction"
-                .into(),
-        );
+}
+
+/// A solve that fails at target `t`: bad input names the targets; any
+/// other failure is the inputs' (the target, the modulus and the adhesion
+/// the user wrote, named with the failure).
+fn solve_failure(e: Error, t: f64, args: &BemInput) -> Error {
+    let target = param(match args.targets {
+        BemTargets::Gaps(_) => "gaps",
+        BemTargets::Pressures(_) => "pressures",
+    });
+    if e.is_bad_input() {
+        return e.renamed(&target);
     }
-    if args.adhesion.is_some() {
-        warnings.push(
-            "GW and Persson columns are the non-adhesive theories at the same mean pressure".into(),
-        );
+    if matches!(e, Error::Cancelled) {
+        return e;
     }
-    let out = BemOutput {
+    let adhesion = match args.adhesion {
+        Some(a) => format!(
+            ", {} {:e} J/m^2, {} {:e} m",
+            param("adhesion_energy"),
+            a.energy,
+            param("adhesion_range"),
+            a.range
+        ),
+        None => String::new(),
+    };
+    Error::invalid(
+        &target,
+        format!(
+            "{t:e} with {} {:e} Pa{adhesion}: {e}; the inputs are outside what the solver \
+             reaches (try a target nearer the map's scales, or {} / {})",
+            param("estar"),
+            args.estar,
+            param("tolerance"),
+            param("max_iterations")
+        ),
+    )
+}
+
+/// The JSON record of a comparison.
+fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> BemOutput {
+    let states = cmp
+        .states
+        .iter()
+        .map(|st| {
+            let s = &st.solution;
+            BemState {
+                pressure: s.mean_pressure,
+                mean_gap_m: s.mean_gap,
+                area_fraction: s.area_fraction(),
+                clusters: st.clusters,
+                iterations: s.iterations,
+                residual: s.residual,
+                cluster_sizes_px: st.cluster_sizes.clone(),
+                resistance: st.resistance,
+            }
+        })
+        .collect();
+    BemOutput {
         states,
-        gw: gw_list,
-        persson: persson_list,
-        relative_differences: diffs,
+        gw: cmp.gw.clone(),
+        persson: cmp.persson.clone(),
+        relative_differences: cmp.differences.clone(),
         rows: map.rows(),
         cols: map.cols(),
         periodic: args.periodic,
         memory_estimate_bytes: memory,
         gamma: args.gamma,
-        solve_wall_s: start.elapsed().as_secs_f64(),
+        solve_wall_s: cmp.solve_wall_s,
         numerical_error: format!(
             "boundary elements: each state converged to the stated residual (< {:e}; gap residual over h_rms under load control, KKT residual over the full-contact RMS pressure under gap control); on a 256^2 self-affine map the area fraction moves by < 1e-5 from 1e-8 to 1e-12; discretisation: Hertz on 512^2 within 0.2 % (docs/performance.md). Persson: quadrature 1e-12 relative on the map's radial spectrum",
             args.tolerance
         ),
         model_error: "boundary elements: exact linear-elastic, frictionless, small-slope half-space solution of the pixel map (the only error is the discretisation); GW and Persson are approximations of the same problem, see relative_differences".into(),
-        warnings,
-    };
-    if let Some(dir) = &args.out {
-        crate::cancel::check()?;
-        write_outputs(dir, &out, &solutions, &problem)?;
+        warnings: cmp.warnings.iter().map(ToString::to_string).collect(),
     }
-    Ok(out)
 }
 
 impl BemOutput {
@@ -528,18 +401,20 @@ impl BemOutput {
     }
 }
 
+/// `bem.json`, the fields of every state as `.npy` maps of `shape` (rows,
+/// columns) and the two charts, in `dir`.
 fn write_outputs(
     dir: &Path,
     out: &BemOutput,
-    sols: &[Solution],
-    problem: &Problem,
+    sols: &[&Solution],
+    shape: (usize, usize),
 ) -> CommandResult<()> {
     super::create_dir(dir)?;
     super::write_file(
         &dir.join("bem.json"),
         format!("{}\n", super::json_line(out)?),
     )?;
-    let (rows, cols) = problem.shape();
+    let (rows, cols) = shape;
     for (k, s) in sols.iter().enumerate() {
         let fields: [(&str, Vec<f64>); 3] = [
             (

@@ -3,7 +3,7 @@
 
 use super::{param, CommandResult};
 use crate::error::positive;
-use crate::persson::gw::GwOnSpectrum;
+use crate::gw::GwOnMoments;
 use crate::persson::{Persson, QUAD_RTOL};
 use crate::spectrum::{Normalisation, Spectrum};
 use crate::Error;
@@ -145,52 +145,10 @@ pub struct PerssonOutput {
 /// `{pressures}`.
 pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
     positive_values("pressures", &input.pressures)?;
-    // The wavevectors' order, named by both inputs of a pair.
-    if input.q_long > input.q_roll {
-        return Err(Error::invalid(
-            param("q_long"),
-            format!(
-                "{:e} must not exceed {} = {:e}",
-                input.q_long,
-                param("q_roll"),
-                input.q_roll
-            ),
-        ));
-    }
-    if input.q_roll >= input.q_short {
-        return Err(Error::invalid(
-            param("q_roll"),
-            format!(
-                "{:e} must be below {} = {:e}",
-                input.q_roll,
-                param("q_short"),
-                input.q_short
-            ),
-        ));
-    }
+    check_wavevectors(input)?;
     positive(&param("estar"), input.estar)?;
     let norm = input.normalisation;
-    let norm_name = match norm {
-        Normalisation::HRms(_) => param("h_rms"),
-        Normalisation::SlopeRms(_) => param("slope_rms"),
-    };
-    let named = |e: Error| -> Error {
-        let f = e.field().unwrap_or("").to_string();
-        if f.is_empty() {
-            e
-        } else if matches!(f.as_str(), "m0" | "m2" | "m4") {
-            // A moment of the spectrum: every spectrum input sets it.
-            e.renamed(&format!(
-                "{f} of the spectrum from {}, {}, {}, {} and {norm_name}",
-                param("hurst"),
-                param("q_long"),
-                param("q_roll"),
-                param("q_short")
-            ))
-        } else {
-            e.renamed(&param(&f))
-        }
-    };
+    let named = |e: Error| spectrum_error(e, norm);
     // A state the solvers cannot find at an extreme pressure or modulus is
     // the inputs' fault (p/E* far outside contact mechanics), named.
     let at_pressure = |p: f64, e: Error| -> Error {
@@ -211,7 +169,9 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
         Spectrum::self_affine(input.hurst, input.q_long, input.q_roll, input.q_short, norm)
             .map_err(named)?;
     let model = Persson::new(spectrum.clone(), input.estar, input.gamma).map_err(named)?;
-    let gw = GwOnSpectrum::new(&spectrum, input.estar).map_err(named)?;
+    // GW per square metre (pressures and gaps do not depend on the area).
+    let moments = spectrum.moments().map_err(named)?;
+    let gw = GwOnMoments::new(&moments, input.estar, 1.0).map_err(named)?;
     let mut states = Vec::new();
     let mut worst_quad: f64 = 0.0;
     let mut warnings = Vec::new();
@@ -268,6 +228,61 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
         ),
         warnings,
     })
+}
+
+/// The wavevectors' order, named by both inputs of a pair.
+///
+/// # Errors
+/// Naming `{q_long}` above `{q_roll}`, or `{q_roll}` not below `{q_short}`.
+fn check_wavevectors(input: &PerssonInput) -> CommandResult<()> {
+    if input.q_long > input.q_roll {
+        return Err(Error::invalid(
+            param("q_long"),
+            format!(
+                "{:e} must not exceed {} = {:e}",
+                input.q_long,
+                param("q_roll"),
+                input.q_roll
+            ),
+        ));
+    }
+    if input.q_roll >= input.q_short {
+        return Err(Error::invalid(
+            param("q_roll"),
+            format!(
+                "{:e} must be below {} = {:e}",
+                input.q_roll,
+                param("q_short"),
+                input.q_short
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A spectrum's error named by the command's inputs: a moment of the
+/// spectrum by every spectrum input (normalised by `norm`), any other
+/// field by its own name.
+fn spectrum_error(e: Error, norm: Normalisation) -> Error {
+    let norm_name = match norm {
+        Normalisation::HRms(_) => param("h_rms"),
+        Normalisation::SlopeRms(_) => param("slope_rms"),
+    };
+    let f = e.field().unwrap_or("").to_string();
+    if f.is_empty() {
+        e
+    } else if matches!(f.as_str(), "m0" | "m2" | "m4") {
+        // A moment of the spectrum: every spectrum input sets it.
+        e.renamed(&format!(
+            "{f} of the spectrum from {}, {}, {}, {} and {norm_name}",
+            param("hurst"),
+            param("q_long"),
+            param("q_roll"),
+            param("q_short")
+        ))
+    } else {
+        e.renamed(&param(&f))
+    }
 }
 
 impl PerssonOutput {

@@ -243,17 +243,24 @@ impl GwModel {
     }
 
     /// Whether the law and distribution give closed forms for `observables`
-    /// (a sum of powers over `F_n` with closed forms; load, area and count
-    /// only).
+    /// (a sum of powers over `F_n` with closed forms: load, area, count and
+    /// the observables that are sums of powers of the law's interference,
+    /// [`PerAsperity::power_terms`](crate::loading::PerAsperity::power_terms)).
     pub fn has_closed_form(&self, observables: &Observables) -> bool {
-        observables.extras().is_empty()
-            && self.law.power_form().is_some_and(|f| {
-                f.load
+        self.law.power_form().is_some_and(|f| {
+            let closed = |terms: &[(f64, f64)]| {
+                terms
                     .iter()
-                    .chain(&f.area)
                     .all(|&(_, n)| self.distribution.closed_form_moment(n))
-                    && self.distribution.closed_form_moment(0.0)
-            })
+            };
+            closed(&f.load)
+                && closed(&f.area)
+                && self.distribution.closed_form_moment(0.0)
+                && observables
+                    .extras()
+                    .iter()
+                    .all(|e| e.power_terms(&f).is_some_and(|t| closed(&t)))
+        })
     }
 
     /// Default start of a program (m): the separation beyond which the
@@ -285,7 +292,9 @@ impl GwModel {
         (lo, hi)
     }
 
-    /// Closed forms: `eta A_n sum c sigma^n F_n((d + onset)/sigma)`.
+    /// Closed forms: `eta A_n sum c sigma^n F_n((d + onset)/sigma)` of
+    /// every observable's terms (the extra observables' from
+    /// [`Observable::power_terms`](crate::loading::Observable::power_terms)).
     fn closed_form(&self, d: f64, observables: &Observables) -> Option<State> {
         if !self.has_closed_form(observables) {
             return None;
@@ -315,6 +324,9 @@ impl GwModel {
         let count = n_total * dist.moment_above(0.0, h);
         values[2] = count;
         errors[2] = count * CLOSED_FORM_REL_ERROR;
+        for (j, extra) in observables.extras().iter().enumerate() {
+            (values[3 + j], errors[3 + j]) = sum(&extra.power_terms(&form)?);
+        }
         Some(State {
             separation: d,
             totals: Totals::new(values, errors, observables.mask()),

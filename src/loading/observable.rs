@@ -11,12 +11,18 @@
 //! per-asperity function (or, outside the crate, one [`PerAsperity`] type in
 //! [`Observable::Custom`]).
 //!
+//! An observable that is a sum of powers of the interference for a law
+//! that is one ([`PerAsperity::power_terms`]) is integrated over heights
+//! with closed-form `F_n` like the load and area
+//! ([`GwModel`](crate::gw::GwModel)); GW's summit caps
+//! ([`CapVolume`](crate::gw::CapVolume)) are one.
+//!
 //! Totals live in fixed slots (no allocation in hot loops): load, area and
 //! count in slots 0, 1, 2, further observables after them in the order they
 //! were added.
 
 use crate::error::{Error, Result};
-use crate::law::ContactState;
+use crate::law::{ContactState, PowerForm};
 use std::fmt;
 use std::sync::Arc;
 
@@ -40,6 +46,22 @@ pub trait PerAsperity: Send + Sync + fmt::Debug {
         for ((o, &load), &radius) in out.iter_mut().zip(load).zip(radius) {
             *o = self.value(&ContactState { load, radius });
         }
+    }
+
+    /// The contribution as a sum of powers of the interference past the
+    /// onset of a law whose own sums of powers are `law`
+    /// ([`AsperityLaw::power_form`](crate::law::AsperityLaw::power_form)):
+    /// terms `(c, n)` of `sum c (delta - onset)^n` (`c` in the total's unit
+    /// per m^n), exactly [`value`](PerAsperity::value) of that law's state
+    /// at every interference past the onset (and 0 before it). Over heights
+    /// `z = sigma s` at separation `d` each term then integrates to
+    /// `c sigma^n F_n((d + onset)/sigma)` (Greenwood & Williamson 1966), so
+    /// [`GwModel`](crate::gw::GwModel) sums the observable in closed form
+    /// where the distribution has closed-form `F_n`. Default `None`:
+    /// integrated by quadrature.
+    fn power_terms(&self, law: &PowerForm) -> Option<Vec<(f64, f64)>> {
+        let _ = law;
+        None
     }
 }
 
@@ -76,6 +98,19 @@ impl Observable {
             Observable::Area => "area",
             Observable::Count => "count",
             Observable::Custom(c) => c.name(),
+        }
+    }
+
+    /// The contribution as a sum of powers `(c, n)` of the interference
+    /// past the onset of a law of power form `law`: its load and area
+    /// terms, `(1, 0)` for the count (every asperity past the onset is in
+    /// contact), [`PerAsperity::power_terms`] otherwise.
+    pub fn power_terms(&self, law: &PowerForm) -> Option<Vec<(f64, f64)>> {
+        match self {
+            Observable::Load => Some(law.load.clone()),
+            Observable::Area => Some(law.area.clone()),
+            Observable::Count => Some(vec![(1.0, 0.0)]),
+            Observable::Custom(c) => c.power_terms(law),
         }
     }
 

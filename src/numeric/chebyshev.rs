@@ -19,16 +19,33 @@ pub fn clenshaw<const N: usize>(c: &[f64; N], x: f64) -> f64 {
 /// every lane `l`, coefficient `j` of lane `l` given by `c(l, j)`, with
 /// the recurrences interleaved (independent chains in flight instead of
 /// one latency-bound chain; in SIMD lanes inside a `pulp` operation): the
-/// same operations per lane as [`clenshaw`], so the same bits.
+/// same operations per lane as [`clenshaw`], so the same bits. The degree
+/// fixed at compile time; [`clenshaw_lanes_dyn`] is the same sum with the
+/// degree given at run time.
 #[inline(always)]
 pub fn clenshaw_lanes<const D: usize, const L: usize>(
+    x: &[f64; L],
+    c: impl Fn(usize, usize) -> f64,
+) -> [f64; L] {
+    clenshaw_lanes_dyn(D, x, c)
+}
+
+/// [`clenshaw_lanes`] of degree `degree` given at run time (a series of
+/// `degree + 1` coefficients `c(l, 0..=degree)`, e.g. an interpolant
+/// whose order is chosen by its error estimate):
+/// `b_j = 2 x b_(j+1) - b_(j+2) + c_j` from `j = degree` down to 1, then
+/// `x b_1 - b_2 + c_0` (Clenshaw 1955). The one lane recurrence: the same
+/// operations per lane as [`clenshaw`], so the same bits.
+#[inline(always)]
+pub fn clenshaw_lanes_dyn<const L: usize>(
+    degree: usize,
     x: &[f64; L],
     c: impl Fn(usize, usize) -> f64,
 ) -> [f64; L] {
     let mut b1 = [0.0; L];
     let mut b2 = [0.0; L];
     let x2 = x.map(|t| 2.0 * t);
-    for j in (1..=D).rev() {
+    for j in (1..=degree).rev() {
         for l in 0..L {
             let b = x2[l] * b1[l] - b2[l] + c(l, j);
             b2[l] = b1[l];
@@ -118,6 +135,22 @@ mod tests {
             let x = -1.0 + k as f64 / 20.0;
             let (p, q) = (horner(&a, x), clenshaw(&c, x));
             assert!((p - q).abs() <= 1e-15 * 4.0, "{x}: {p} {q}");
+        }
+    }
+
+    #[test]
+    fn clenshaw_lanes_are_clenshaw_bit_for_bit() {
+        let c: [[f64; 7]; 3] = [
+            [0.1, -0.2, 0.3, -0.4, 0.5, -0.6, 0.7],
+            [1e-7, 3e-8, -2e-9, 1e-10, 5e-12, -1e-13, 2e-15],
+            [-3.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1e-3],
+        ];
+        let x = [0.3, -0.999, 0.123456789];
+        let fixed = clenshaw_lanes::<6, 3>(&x, |l, j| c[l][j]);
+        let dynamic = clenshaw_lanes_dyn(6, &x, |l, j| c[l][j]);
+        for l in 0..3 {
+            assert_eq!(fixed[l].to_bits(), clenshaw(&c[l], x[l]).to_bits());
+            assert_eq!(dynamic[l].to_bits(), fixed[l].to_bits());
         }
     }
 

@@ -1,5 +1,5 @@
-//! Persson's contact theory on an isotropic spectrum, and GW on the same
-//! spectrum ([`gw`]).
+//! Persson's contact theory on an isotropic spectrum (GW on the same
+//! spectrum's moments is [`crate::gw::GwOnMoments`]).
 //!
 //! With the contact modulus `E*`, the spectrum `C(q)` from `q_0 = q_min`
 //! and (Persson 2001; Persson 2007; Yang & Persson 2008;
@@ -22,7 +22,6 @@
 //! in `ln q` elsewhere; `F` is a Gauss–Kronrod integral of its own. The
 //! relative tolerance is [`QUAD_RTOL`].
 
-pub mod gw;
 pub mod special;
 
 use crate::error::{positive, Allowed, Error, Result};

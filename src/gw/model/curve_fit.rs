@@ -29,6 +29,7 @@ use super::root_rule::{RootPlan, ROOT_BATCH};
 use super::GwModel;
 use crate::error::Result;
 use crate::loading::{History, LoadingModel, MethodUsed, Observables, State, Totals, SLOTS};
+use crate::numeric::chebyshev::clenshaw_lanes_dyn;
 use crate::special::normal::exp_lane;
 use rayon::prelude::*;
 
@@ -339,7 +340,8 @@ impl pulp::WithSimd for PanelStates<'_> {
             }
             let mut values = [[0.0; LANES]; SLOTS];
             for k in (0..SLOTS).filter(|&k| self.mask[k]) {
-                let y = clenshaw_lanes(&p.coef[k], &x);
+                let c = &p.coef[k];
+                let y = clenshaw_lanes_dyn(c.len() - 1, &x, |_, j| c[j]);
                 for (v, &y) in values[k].iter_mut().zip(&y) {
                     // Nodes are positive doubles, so ln F >= -745 there;
                     // the clamp keeps `exp_lane` in its range between them.
@@ -357,22 +359,6 @@ impl pulp::WithSimd for PanelStates<'_> {
             }));
         }
     }
-}
-
-/// `clenshaw(c, x[l])` for every lane, the recurrences interleaved.
-#[inline(always)]
-fn clenshaw_lanes(c: &[f64], x: &[f64; LANES]) -> [f64; LANES] {
-    let mut b1 = [0.0; LANES];
-    let mut b2 = [0.0; LANES];
-    let x2 = x.map(|t| 2.0 * t);
-    for &ck in c[1..].iter().rev() {
-        for l in 0..LANES {
-            let b = x2[l] * b1[l] - b2[l] + ck;
-            b2[l] = b1[l];
-            b1[l] = b;
-        }
-    }
-    std::array::from_fn(|l| x[l] * b1[l] - b2[l] + c[0])
 }
 
 /// `f` of each chunk of `items`, in order: in parallel (rayon) when the
@@ -497,6 +483,13 @@ mod tests {
         }
     }
 
+    /// `sum_j c_j T_j(x)` by the lane Clenshaw of the panels, in every lane.
+    fn series(c: &[f64], x: f64) -> f64 {
+        let y = clenshaw_lanes_dyn(c.len() - 1, &[x; LANES], |_, j| c[j]);
+        assert!(y.iter().all(|v| v.to_bits() == y[0].to_bits()));
+        y[0]
+    }
+
     /// The Lobatto coefficients reproduce a polynomial of degree `n`
     /// exactly, and its values at the nodes.
     #[test]
@@ -509,18 +502,12 @@ mod tests {
         let c = lobatto_coefficients(&y, &lobatto_cosines(n));
         for (j, &yj) in y.iter().enumerate() {
             let x = (std::f64::consts::PI * j as f64 / n as f64).cos();
-            assert!(
-                (clenshaw_lanes(&c, &[x; LANES])[0] - yj).abs() < 1e-14,
-                "node {j}"
-            );
+            assert!((series(&c, x) - yj).abs() < 1e-14, "node {j}");
         }
         // T_16's coefficient of -x^16 is -2^-15; exp(0.3x)'s c_16 ~ 1e-27.
         assert!((c[16] + 2f64.powi(-15)).abs() < 1e-15, "{}", c[16]);
         for x in [-0.95, -0.3, 0.123, 0.77] {
-            assert!(
-                (clenshaw_lanes(&c, &[x; LANES])[0] - f(x)).abs() < 1e-13,
-                "{x}"
-            );
+            assert!((series(&c, x) - f(x)).abs() < 1e-13, "{x}");
         }
     }
 }

@@ -1,0 +1,511 @@
+//! The exact boundary-element states of a height map beside the two
+//! statistical theories of the same surface at the same mean pressures:
+//! GW on the map's finite-difference moments ([`GwOnMoments`]: McCool's
+//! `eta`, `R`, `sigma`, Hertz summits, Gaussian heights, as `asperity
+//! surface` characterises a map) and Persson on the map's radial spectrum
+//! ([`Persson`], [`radial_psd`]), with the relative differences
+//! `model/exact - 1` of the real-area fraction and the mean gap, the
+//! contact resistance of the clusters and GW's with a resistivity, and what
+//! lies outside a model's validity as [`Warning`]s.
+//!
+//! The exact states are load-controlled (mean pressures) or gap-controlled
+//! (mean gaps), each warm-started from the previous one; the theories are
+//! asked at each state's mean pressure `p` (none where `p <= 0`).
+
+use super::clusters::size_distribution;
+use super::resistance::cluster_resistance;
+use super::{Cluster, Exponential, Options, Problem, SizeBin, Solution};
+use crate::electrical::{Interaction, ResistanceObservables, SpotResistance, Spreading};
+use crate::error::Error;
+use crate::gw::{Accuracy, GwOnMoments, GwPressureState};
+use crate::loading::{Derived, History, LoadingModel, Observables};
+use crate::persson::{Persson, PerssonState};
+use crate::spectrum::radial::radial_psd;
+use crate::surface::{HeightMap, Topography};
+use serde::Serialize;
+use std::fmt;
+use std::time::Instant;
+
+/// What the exact solves hold fixed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Control {
+    /// The mean pressures (Pa): load control.
+    Pressure,
+    /// The mean gaps (m): mean-gap control.
+    Gap,
+}
+
+/// The inputs of [`compare`] besides the map.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompareInput {
+    /// Pixel size `dx` (m), the same along x and y.
+    pub pixel_size: f64,
+    /// Contact modulus `E*` (Pa).
+    pub contact_modulus: f64,
+    /// Whether the map is periodic (else padded to twice its size).
+    pub periodic: bool,
+    /// What [`CompareInput::targets`] hold fixed.
+    pub control: Control,
+    /// Mean pressures (Pa) or mean gaps (m), each > 0, solved in order.
+    pub targets: Vec<f64>,
+    /// The exponential adhesion of the exact solves, if any (periodic maps
+    /// only; the theories stay non-adhesive).
+    pub adhesion: Option<Exponential>,
+    /// The Yang–Persson factor `gamma` in `[0, 1]` of Persson's mean gap.
+    pub gamma: f64,
+    /// Resistivity `rho` (Ohm m, both bodies): adds the contact resistances
+    /// (Maxwell spots).
+    pub resistivity: Option<f64>,
+    /// The solver's options.
+    pub options: Options,
+}
+
+/// The step of [`compare`] that failed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Step {
+    /// The boundary-element problem ([`Problem::new`]: the map, the pixel
+    /// size, the modulus, the memory limit).
+    Problem,
+    /// The adhesion ([`Problem::with_adhesion`]).
+    Adhesion,
+    /// The spots' resistivity ([`SpotResistance::same_metal`]).
+    Resistivity,
+    /// The map as a topography ([`Topography::new`]: the heights'
+    /// magnitude, the pixel size).
+    Topography,
+    /// The map's moments and summits ([`Topography::characterise`]).
+    Characterise,
+    /// The map's radial spectrum ([`radial_psd`]).
+    Spectrum,
+    /// Persson's theory on it ([`Persson::new`]: `gamma`).
+    Persson,
+    /// The exact solve of target `index`, of value `target`.
+    Solve {
+        /// Its index in the targets.
+        index: usize,
+        /// Its value (Pa or m).
+        target: f64,
+    },
+    /// A state's contact resistance.
+    Resistance,
+}
+
+/// A failure of [`compare`]: the step and the error of the core function
+/// called there (named by that function's arguments).
+#[derive(Debug)]
+pub struct CompareError {
+    /// Where it failed.
+    pub step: Step,
+    /// The error.
+    pub error: Error,
+}
+
+impl From<CompareError> for Error {
+    fn from(e: CompareError) -> Error {
+        e.error
+    }
+}
+
+/// A statistical theory beside the exact states.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Theory {
+    /// Greenwood–Williamson on the map's moments.
+    Gw,
+    /// Persson on the map's radial spectrum.
+    Persson,
+}
+
+impl fmt::Display for Theory {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Theory::Gw => "GW",
+            Theory::Persson => "Persson",
+        })
+    }
+}
+
+/// What lies outside a model's validity or resolution, as data (`Display`
+/// words it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Warning {
+    /// At least 10 clusters of state `state`, more than half of them
+    /// (`singles` of `clusters`) single pixels: the spots are not resolved.
+    UnresolvedSpots {
+        /// The state's index.
+        state: usize,
+        /// Single-pixel clusters.
+        singles: usize,
+        /// All clusters.
+        clusters: usize,
+    },
+    /// A theory gives no state at state `state`'s mean pressure (Pa).
+    NoPrediction {
+        /// The state's index.
+        state: usize,
+        /// The theory.
+        theory: Theory,
+        /// The mean pressure (Pa).
+        pressure: f64,
+    },
+    /// GW's real-area fraction above [`GW_AREA_LIMIT`] at a mean pressure
+    /// (Pa): beyond its light-load validity.
+    GwBeyondLightLoad {
+        /// The mean pressure (Pa).
+        pressure: f64,
+        /// GW's `A/A0` there.
+        area_fraction: f64,
+    },
+    /// McCool's summit heights have no variance on this map (bandwidth
+    /// `alpha <= 0.8968`): no GW at all.
+    NoGw,
+    /// The exact states are adhesive, the theories are not.
+    NonAdhesiveTheories,
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Warning::UnresolvedSpots {
+                state,
+                singles,
+                clusters,
+            } => write!(
+                f,
+                "state {state}: {singles} of {clusters} clusters are single pixels: the contact \
+                 spots are not resolved (use a finer map)"
+            ),
+            Warning::NoPrediction {
+                state,
+                theory,
+                pressure,
+            } => write!(
+                f,
+                "state {state}: {theory} gives no state at the mean pressure {pressure:e} Pa \
+                 (none without contact pressure, or outside its range): its values are null"
+            ),
+            Warning::GwBeyondLightLoad {
+                pressure,
+                area_fraction,
+            } => write!(
+                f,
+                "GW at p = {pressure:e} Pa: area fraction {area_fraction:.3} > 0.1, outside GW's \
+                 light-load validity"
+            ),
+            Warning::NoGw => f.write_str(
+                "GW: the map's bandwidth leaves McCool's summit heights no variance; no GW \
+                 prediction",
+            ),
+            Warning::NonAdhesiveTheories => f.write_str(
+                "GW and Persson columns are the non-adhesive theories at the same mean pressure",
+            ),
+        }
+    }
+}
+
+/// GW's real-area fraction above which [`Warning::GwBeyondLightLoad`]:
+/// GW neglects the elastic interaction of the summits.
+pub const GW_AREA_LIMIT: f64 = 0.1;
+
+/// Contact resistances of a state (Ohm).
+#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct Resistance {
+    /// The clusters as independent parallel Holm spots, `1/sum 1/R_i`.
+    pub bem_parallel_ohm: f64,
+    /// The clusters with Greenwood's (1966) interaction.
+    pub bem_greenwood_ohm: f64,
+    /// GW's on the same map's moments at the same mean pressure: Hertz
+    /// summits' spots, Greenwood's interaction over the map's area.
+    pub gw_ohm: Option<f64>,
+}
+
+/// One exact state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExactState {
+    /// The converged fields and their means.
+    pub solution: Solution,
+    /// Contact clusters (8-connected pixels in contact).
+    pub clusters: usize,
+    /// Their sizes (pixels) in logarithmic bins.
+    pub cluster_sizes: Vec<SizeBin>,
+    /// Contact resistances, with a resistivity.
+    pub resistance: Option<Resistance>,
+}
+
+/// A theory's prediction at a state's mean pressure (null where it has
+/// none).
+#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct Prediction {
+    /// Mean pressure `p` (Pa).
+    #[serde(rename = "pressure_Pa")]
+    pub pressure: f64,
+    /// Real-area fraction `A/A0`.
+    pub area_fraction: Option<f64>,
+    /// Mean gap `u` (m).
+    pub mean_gap_m: Option<f64>,
+}
+
+/// Relative differences `model/exact - 1` at a state's mean pressure
+/// (null where the model has no value or the exact one is 0).
+#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct Difference {
+    /// Mean pressure (Pa).
+    #[serde(rename = "pressure_Pa")]
+    pub pressure: f64,
+    /// GW's area against the exact.
+    pub gw_area: Option<f64>,
+    /// GW's mean gap against the exact.
+    pub gw_mean_gap: Option<f64>,
+    /// Persson's area against the exact.
+    pub persson_area: Option<f64>,
+    /// Persson's mean gap against the exact.
+    pub persson_mean_gap: Option<f64>,
+}
+
+/// What [`compare`] returns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Comparison {
+    /// The exact states, in the order of the targets.
+    pub states: Vec<ExactState>,
+    /// GW at their mean pressures.
+    pub gw: Vec<Prediction>,
+    /// Persson at their mean pressures.
+    pub persson: Vec<Prediction>,
+    /// The theories against the exact states.
+    pub differences: Vec<Difference>,
+    /// Wall-clock time of the solves and predictions (s).
+    pub solve_wall_s: f64,
+    /// What lies outside a model's validity, in the order found.
+    pub warnings: Vec<Warning>,
+}
+
+/// The map's theories: GW (none when McCool's heights have no variance),
+/// Persson, the map's nominal area `A_n` (m^2), and the spots' resistance.
+struct Theories {
+    gw: Option<GwOnMoments>,
+    persson: Persson,
+    nominal_area: f64,
+    spot: Option<SpotResistance>,
+}
+
+/// `model/exact - 1`, `None` without a model value or with `exact = 0`.
+fn relative(model: Option<f64>, exact: f64) -> Option<f64> {
+    model.filter(|_| exact != 0.0).map(|m| m / exact - 1.0)
+}
+
+/// `f` with its error tagged by `step`.
+fn at<T>(step: Step, r: crate::Result<T>) -> Result<T, CompareError> {
+    r.map_err(|error| CompareError { step, error })
+}
+
+/// The exact elastic contact of `map` (heights in m) by FFT boundary
+/// elements at `input`'s targets, beside GW and Persson at the same mean
+/// pressures (module documentation).
+///
+/// # Errors
+/// [`CompareError`]: the step and the error of the core function called
+/// there ([`Step`]); [`Error::Cancelled`] at [`Step::Solve`].
+pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, CompareError> {
+    let options = &input.options;
+    let mut problem = at(
+        Step::Problem,
+        Problem::new(
+            map,
+            input.pixel_size,
+            input.contact_modulus,
+            input.periodic,
+            options,
+        ),
+    )?;
+    if let Some(a) = input.adhesion {
+        problem = at(Step::Adhesion, problem.with_adhesion(a.energy, a.range))?;
+    }
+    let theories = Theories::new(map, input)?;
+    let start = Instant::now();
+    let mut out = Comparison {
+        states: Vec::with_capacity(input.targets.len()),
+        gw: Vec::new(),
+        persson: Vec::new(),
+        differences: Vec::new(),
+        solve_wall_s: 0.0,
+        warnings: Vec::new(),
+    };
+    for (index, &target) in input.targets.iter().enumerate() {
+        let warm = out.states.last().map(|s| &s.solution);
+        let solved = match input.control {
+            Control::Pressure => problem.solve_pressure(target, options, warm),
+            Control::Gap => problem.solve_gap(target, options, warm),
+        };
+        let s = at(Step::Solve { index, target }, solved)?;
+        let cl = problem.clusters(&s);
+        let state = theories.beside(&problem, s, &cl, &mut out)?;
+        out.states.push(state);
+    }
+    if theories.gw.is_none() {
+        out.warnings.push(Warning::NoGw);
+    }
+    if input.adhesion.is_some() {
+        out.warnings.push(Warning::NonAdhesiveTheories);
+    }
+    out.solve_wall_s = start.elapsed().as_secs_f64();
+    Ok(out)
+}
+
+impl Theories {
+    /// GW from the map's finite-difference moments (as `asperity surface`
+    /// characterises it), Persson from its radial spectrum, and the spots.
+    fn new(map: &HeightMap, input: &CompareInput) -> Result<Self, CompareError> {
+        let spot = input
+            .resistivity
+            .map(|r| {
+                at(
+                    Step::Resistivity,
+                    SpotResistance::same_metal(Spreading::Maxwell, r, None),
+                )
+            })
+            .transpose()?;
+        let topo = at(
+            Step::Topography,
+            Topography::new(map.clone(), input.pixel_size),
+        )?;
+        let charac = at(Step::Characterise, topo.characterise(input.periodic))?;
+        let nominal_area = charac.nominal_area_m2();
+        let gw = GwOnMoments::new(&charac.moments, input.contact_modulus, nominal_area).ok();
+        let psd = at(
+            Step::Spectrum,
+            radial_psd(map, input.pixel_size, input.periodic),
+        )?;
+        let persson = at(
+            Step::Persson,
+            Persson::new(psd, input.contact_modulus, input.gamma),
+        )?;
+        Ok(Theories {
+            gw,
+            persson,
+            nominal_area,
+            spot,
+        })
+    }
+
+    /// The exact state of solution `s` (clusters `cl`) with the theories
+    /// beside it, their predictions, differences and warnings appended to
+    /// `out` (the state's index is `out.states.len()`).
+    fn beside(
+        &self,
+        problem: &Problem,
+        s: Solution,
+        cl: &[Cluster],
+        out: &mut Comparison,
+    ) -> Result<ExactState, CompareError> {
+        let index = out.states.len();
+        let singles = cl.iter().filter(|c| c.pixels == 1).count();
+        if cl.len() >= 10 && singles * 2 > cl.len() {
+            out.warnings.push(Warning::UnresolvedSpots {
+                state: index,
+                singles,
+                clusters: cl.len(),
+            });
+        }
+        let p = s.mean_pressure;
+        let gw = self
+            .gw
+            .as_ref()
+            .filter(|_| p > 0.0)
+            .and_then(|g| g.state(p).ok());
+        let pe = (p > 0.0).then(|| self.persson.state(p).ok()).flatten();
+        for (theory, missing) in [(Theory::Gw, gw.is_none()), (Theory::Persson, pe.is_none())] {
+            if missing {
+                out.warnings.push(Warning::NoPrediction {
+                    state: index,
+                    theory,
+                    pressure: p,
+                });
+            }
+        }
+        if let Some(g) = gw.filter(|g| g.area_fraction > GW_AREA_LIMIT) {
+            out.warnings.push(Warning::GwBeyondLightLoad {
+                pressure: p,
+                area_fraction: g.area_fraction,
+            });
+        }
+        let resistance = self.resistance(problem, cl, gw.as_ref())?;
+        let (gw, pe) = (prediction_gw(p, gw), prediction_persson(p, pe));
+        let (area, gap) = (s.area_fraction(), s.mean_gap);
+        out.differences.push(Difference {
+            pressure: p,
+            gw_area: relative(gw.area_fraction, area),
+            gw_mean_gap: relative(gw.mean_gap_m, gap),
+            persson_area: relative(pe.area_fraction, area),
+            persson_mean_gap: relative(pe.mean_gap_m, gap),
+        });
+        out.gw.push(gw);
+        out.persson.push(pe);
+        Ok(ExactState {
+            solution: s,
+            clusters: cl.len(),
+            cluster_sizes: size_distribution(cl),
+            resistance,
+        })
+    }
+
+    /// The clusters' resistances and GW's at its state `gw`, with a
+    /// resistivity; `None` without one or without contact.
+    fn resistance(
+        &self,
+        problem: &Problem,
+        cl: &[Cluster],
+        gw: Option<&GwPressureState>,
+    ) -> Result<Option<Resistance>, CompareError> {
+        let Some(spot) = &self.spot else {
+            return Ok(None);
+        };
+        let exact = at(Step::Resistance, cluster_resistance(problem, cl, spot))?;
+        let gw_ohm = match (&self.gw, gw) {
+            (Some(model), Some(st)) => at(
+                Step::Resistance,
+                self.gw_resistance(model, st.separation, spot),
+            )?,
+            _ => None,
+        };
+        Ok(exact.map(|b| Resistance {
+            bem_parallel_ohm: b.parallel,
+            bem_greenwood_ohm: b.greenwood,
+            gw_ohm,
+        }))
+    }
+
+    /// GW's contact resistance (Ohm) at separation `d` (m): the engine's
+    /// one GW integrator on the same summits, the spot conductances as
+    /// observables ([`ResistanceObservables`], by quadrature to
+    /// [`Accuracy::DEFAULT`]), Greenwood's interaction over the map's
+    /// square of area `A_n`.
+    fn gw_resistance(
+        &self,
+        gw: &GwOnMoments,
+        d: f64,
+        spot: &SpotResistance,
+    ) -> crate::Result<Option<f64>> {
+        let model = gw.model().clone().with_accuracy(Accuracy::DEFAULT);
+        let r = ResistanceObservables::new(*spot, Interaction::Greenwood, self.nominal_area.sqrt());
+        let outputs = r.add_to(Observables::LOAD)?;
+        let state = model.state(d, History::Approach, &outputs)?;
+        Ok(r.value(&outputs, &state.totals))
+    }
+}
+
+/// GW's prediction at mean pressure `p` (Pa).
+fn prediction_gw(p: f64, s: Option<GwPressureState>) -> Prediction {
+    Prediction {
+        pressure: p,
+        area_fraction: s.map(|g| g.area_fraction),
+        mean_gap_m: s.map(|g| g.mean_gap),
+    }
+}
+
+/// Persson's prediction at mean pressure `p` (Pa).
+fn prediction_persson(p: f64, s: Option<PerssonState>) -> Prediction {
+    Prediction {
+        pressure: p,
+        area_fraction: s.map(|g| g.area_fraction),
+        mean_gap_m: s.map(|g| g.mean_gap),
+    }
+}
