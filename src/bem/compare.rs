@@ -410,8 +410,14 @@ impl Theories {
             .gw
             .as_ref()
             .filter(|_| p > 0.0)
-            .and_then(|g| g.state(p).ok());
-        let pe = (p > 0.0).then(|| self.persson.state(p).ok()).flatten();
+            .and_then(|g| g.state(p).ok())
+            .filter(|g| g.area_fraction.is_finite() && g.mean_gap.is_finite());
+        // A state whose gap is not representable (p/E* far outside contact
+        // mechanics) is no prediction: its values would be null unexplained.
+        let pe = (p > 0.0)
+            .then(|| self.persson.state(p).ok())
+            .flatten()
+            .filter(|s| s.area_fraction.is_finite() && s.mean_gap.is_finite());
         for (theory, missing) in [(Theory::Gw, gw.is_none()), (Theory::Persson, pe.is_none())] {
             if missing {
                 out.warnings.push(Warning::NoPrediction {

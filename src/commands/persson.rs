@@ -153,7 +153,23 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
     // the inputs' fault (p/E* far outside contact mechanics), named.
     let at_pressure = |p: f64, e: Error| -> Error {
         if e.is_bad_input() {
-            return e.renamed(&param("pressures"));
+            // The reason without its own field's name: the pressure and
+            // the modulus together are what is out of reach.
+            let text = e.to_string();
+            let reason = e
+                .field()
+                .and_then(|f| text.strip_prefix(&format!("{f}: ")))
+                .unwrap_or(&text)
+                .to_string();
+            return Error::invalid(
+                param("pressures"),
+                format!(
+                    "{p:e} Pa with {} {:e} Pa (p/E* = {:.3e}): {reason}",
+                    param("estar"),
+                    input.estar,
+                    p / input.estar
+                ),
+            );
         }
         Error::invalid(
             param("pressures"),
@@ -185,6 +201,15 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
                 "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity (no asperity interaction)",
                 g.area_fraction
             ));
+        }
+        for (name, value) in [("Persson's", s.mean_gap), ("GW's", g.mean_gap)] {
+            if !value.is_finite() {
+                warnings.push(format!(
+                    "{name} mean gap at p = {p:e} Pa is null: not representable at p/E* = {:.3e} \
+                     (far outside contact mechanics' range)",
+                    p / input.estar
+                ));
+            }
         }
         states.push(PerssonState {
             pressure: p,
