@@ -149,38 +149,6 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
     positive(&param("estar"), input.estar)?;
     let norm = input.normalisation;
     let named = |e: Error| spectrum_error(e, norm);
-    // A state the solvers cannot find at an extreme pressure or modulus is
-    // the inputs' fault (p/E* far outside contact mechanics), named.
-    let at_pressure = |p: f64, e: Error| -> Error {
-        if e.is_bad_input() {
-            // The reason without its own field's name: the pressure and
-            // the modulus together are what is out of reach.
-            let text = e.to_string();
-            let reason = e
-                .field()
-                .and_then(|f| text.strip_prefix(&format!("{f}: ")))
-                .unwrap_or(&text)
-                .to_string();
-            return Error::invalid(
-                param("pressures"),
-                format!(
-                    "{p:e} Pa with {} {:e} Pa (p/E* = {:.3e}): {reason}",
-                    param("estar"),
-                    input.estar,
-                    p / input.estar
-                ),
-            );
-        }
-        Error::invalid(
-            param("pressures"),
-            format!(
-                "{p:e} Pa with {} {:e} Pa (p/E* = {:.3e}): {e}",
-                param("estar"),
-                input.estar,
-                p / input.estar
-            ),
-        )
-    };
     let spectrum =
         Spectrum::self_affine(input.hurst, input.q_long, input.q_roll, input.q_short, norm)
             .map_err(named)?;
@@ -193,9 +161,9 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
     let mut warnings = Vec::new();
     for &p in &input.pressures {
         crate::cancel::check()?;
-        let s = model.state(p).map_err(|e| at_pressure(p, e))?;
+        let s = model.state(p).map_err(|e| at_pressure(input, p, e))?;
         worst_quad = worst_quad.max(s.mean_gap_error / s.mean_gap.abs().max(f64::MIN_POSITIVE));
-        let g = gw.state(p).map_err(|e| at_pressure(p, e))?;
+        let g = gw.state(p).map_err(|e| at_pressure(input, p, e))?;
         if g.area_fraction > 0.1 {
             warnings.push(format!(
                 "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity (no asperity interaction)",
@@ -253,6 +221,30 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
         ),
         warnings,
     })
+}
+
+/// A state the solvers cannot find at an extreme pressure or modulus is
+/// the inputs' fault (p/E* far outside contact mechanics): the error of
+/// pressure `p` (Pa) named by `{pressures}`, with the modulus beside it.
+fn at_pressure(input: &PerssonInput, p: f64, e: Error) -> Error {
+    let context = format!(
+        "{p:e} Pa with {} {:e} Pa (p/E* = {:.3e})",
+        param("estar"),
+        input.estar,
+        p / input.estar
+    );
+    if e.is_bad_input() {
+        // The reason without its own field's name: the pressure and the
+        // modulus together are what is out of reach.
+        let text = e.to_string();
+        let reason = e
+            .field()
+            .and_then(|f| text.strip_prefix(&format!("{f}: ")))
+            .unwrap_or(&text)
+            .to_string();
+        return Error::invalid(param("pressures"), format!("{context}: {reason}"));
+    }
+    Error::invalid(param("pressures"), format!("{context}: {e}"))
 }
 
 /// The wavevectors' order, named by both inputs of a pair.
