@@ -46,6 +46,9 @@ pub struct Headline {
     pub label: String,
     /// How the program's states are reduced to it.
     pub reduce: Reduce,
+    /// What the text report adds after the value (e.g. `" at the closest
+    /// approach"` where the label does not say which state it is).
+    pub qualifier: &'static str,
 }
 
 /// One quantity of a run's states.
@@ -103,6 +106,7 @@ impl Quantity {
                 sweep: column.clone(),
                 label: name.replace('_', " "),
                 reduce: Reduce::AtClosest,
+                qualifier: "",
             }),
             column,
             source,
@@ -242,6 +246,7 @@ impl QuantitySet {
                 sweep: sweep.into(),
                 label: label.into(),
                 reduce,
+                qualifier: "",
             })
         };
         let asked = |mut q: Quantity, on: bool| {
@@ -309,6 +314,7 @@ impl QuantitySet {
                 sweep: "resistance_ohm".into(),
                 label: "resistance".into(),
                 reduce: Reduce::AtClosest,
+                qualifier: " at the closest approach",
             }),
         );
         r.asked = asked;

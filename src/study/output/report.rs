@@ -122,12 +122,7 @@ fn headlines(out: &mut String, plan: &Plan, summary: &Summary) {
         .filter(|q| q.headline.is_some())
         .zip(&summary.headlines.0)
     {
-        let at = match h.reduce {
-            crate::study::quantity::Reduce::AtClosest if q.name == "resistance" => {
-                " at the closest approach"
-            }
-            _ => "",
-        };
+        let at = h.qualifier;
         if v.is_some() || q.asked {
             let _ = writeln!(out, "  {:<18} {}{at}", h.label, show(*v, &q.unit_text()));
         }
