@@ -369,13 +369,16 @@ impl AxisymJkr {
         Err(Error::invalid(
             "profile",
             format!(
-                "no JKR {} instability within the {} profile (radius <= {max} m): \
-                 the table ends before pull-off",
+                "no JKR {} instability of the {} profile at contact radii {lo:e} to {top:e} m{}",
                 match kind {
                     Kind::Load => "pull-off",
                     Kind::Displacement => "jump-out",
                 },
-                self.profile.name()
+                self.profile.name(),
+                match self.profile {
+                    Profile::Tabulated(_) => ": the table ends before it",
+                    _ => "",
+                }
             ),
         ))
     }

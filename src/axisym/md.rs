@@ -281,7 +281,20 @@ impl AxisymMd {
                 ),
             ));
         }
-        brent(f, 0.0, hi, 4.0 * f64::EPSILON * hi).ok_or(Error::NoConvergence {
+        // `range/e` can be decades above the root (at sigma0 = 1e-3 Pa on a
+        // 1 um paraboloid, 7e13 m against c0 = 1 cm), and Brent's absolute
+        // tolerance is relative to the bracket: halve down to the root's
+        // decade first (f(0) = -h0 < 0, so the root stays bracketed).
+        let mut lo = 0.0;
+        for _ in 0..2200 {
+            let half = 0.5 * hi;
+            if !(half > 0.0) || f(half) < 0.0 {
+                lo = half.max(0.0);
+                break;
+            }
+            hi = half;
+        }
+        brent(f, lo, hi, 4.0 * f64::EPSILON * hi).ok_or(Error::NoConvergence {
             what: "Maugis-Dugdale junction radius".into(),
             iterations: 200,
             residual: f64::NAN,
@@ -456,8 +469,12 @@ impl AxisymMd {
             .ok_or_else(|| {
                 Error::invalid(
                     "stress",
-                    "the Dugdale zone passes the sphere's equator before zero load \
-                     (range too long for this sphere)",
+                    format!(
+                        "the Dugdale zone reaches the end of the {} profile before zero \
+                         load (range w/sigma0 = {:e} m too long for it)",
+                        self.profile.name(),
+                        self.range
+                    ),
                 )
             })?;
         let r = brent(|a| self.point(a).load, lo, hi, 4.0 * f64::EPSILON * hi)

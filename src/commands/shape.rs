@@ -111,9 +111,13 @@ fn flag(e: Error) -> Error {
 /// 1e6 m^(1-n), sigma0 100 MPa. Errors naming a single input that is not
 /// about the scales keep their name.
 fn scale_flag(args: &ShapeInput, e: Error) -> Error {
+    // The profile's keys were checked when it was built, so an instability
+    // the profile does not hold (JKR's scan) is about the scales; the flat
+    // punch's refusal of Maugis-Dugdale is about the profile.
     let about_scales = !e.is_bad_input()
         || matches!(&e, crate::Error::Invalid { name, .. }
-            if name == "exponent" || name == "work_of_adhesion");
+            if name == "exponent" || name == "work_of_adhesion"
+                || (name == "profile" && args.profile != ProfileKind::Flat));
     if !about_scales {
         return flag(e);
     }
@@ -285,9 +289,17 @@ impl Model {
                 if p.load.is_finite() && p.interference.is_finite() {
                     Ok((p.load, p.interference))
                 } else {
+                    let why = match m.profile() {
+                        Profile::Sphere { .. } => "would pass the sphere's equator".to_string(),
+                        p => format!(
+                            "does not close within the {} profile (range w/sigma0 = {:e} m)",
+                            p.name(),
+                            m.range()
+                        ),
+                    };
                     Err(Error::invalid(
                         param("radii"),
-                        format!("at a = {a} m the Dugdale zone would pass the sphere's equator"),
+                        format!("at a = {a:e} m the Dugdale zone {why}"),
                     ))
                 }
             }
