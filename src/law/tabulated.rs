@@ -369,7 +369,12 @@ impl Tabulated {
 /// they agree bit for bit.
 #[inline(always)]
 fn far_field_bar(scale: f64, d: f64, h1: f64, sqrt_h1: f64, excess: f64) -> f64 {
-    let y = inverse_sqrt(1.0 - scale * d);
+    // A gap beyond the largest double (a separation near 1e300 m) is taken
+    // at the largest: the attraction there is 0, where `inverse_sqrt(inf)`
+    // would give NaN (a select: the loop stays in vector lanes).
+    let h = 1.0 - scale * d;
+    let h = if h == f64::INFINITY { f64::MAX } else { h };
+    let y = inverse_sqrt(h);
     let inv = y * y;
     let x2 = inv * inv;
     let b = x2 - 0.25 * x2 * x2 * x2 * x2;
