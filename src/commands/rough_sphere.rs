@@ -77,6 +77,9 @@ pub struct RoughSphereOutput {
     pub text: String,
 }
 
+/// The deepest central separation (units `sigma`) the command solves.
+pub const DEEPEST_D: f64 = -100.0;
+
 /// A core error about `mu`, `d`, `rho` or an option, naming the input.
 fn named(e: Error) -> Error {
     super::named(
@@ -103,6 +106,10 @@ pub fn rough_sphere(args: &RoughSphereInput) -> CommandResult<RoughSphereOutput>
     }
     for (i, &d) in args.d.iter().enumerate() {
         crate::error::finite(&param(&format!("d[{i}]")), d)?;
+        // Deeper, Newton on the finest meshes fails (d = -1000 at mu = 10),
+        // and at d = -1e300 every total came out NaN: refused with the range.
+        crate::error::Allowed::closed(DEEPEST_D, f64::INFINITY)
+            .check(&param(&format!("d[{i}]")), d)?;
     }
     for (i, &r) in args.rho.iter().enumerate() {
         crate::error::non_negative(&param(&format!("rho[{i}]")), r)?;
@@ -118,7 +125,7 @@ pub fn rough_sphere(args: &RoughSphereInput) -> CommandResult<RoughSphereOutput>
         .filter(|s| !s.converged)
         .map(|s| {
             format!(
-                "d = {}: load error estimate {:.1e} above the tolerance at the node limit",
+                "d = {:e}: load error estimate {:.1e} above the tolerance at the node limit",
                 s.d, s.load.error
             )
         })

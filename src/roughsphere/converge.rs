@@ -103,8 +103,8 @@ impl Core {
                                 ..
                             } => Error::NoConvergence {
                                 what: format!(
-                                    "rough-sphere continuation stalled at d = {cur_d} sigma \
-                                     on the way to {d} (a fold of the load curve?)"
+                                    "rough-sphere continuation stalled at d = {cur_d:e} sigma \
+                                     on the way to {d:e} (a fold of the load curve?)"
                                 ),
                                 iterations,
                                 residual,
@@ -280,8 +280,22 @@ impl Core {
                     .factor
                     .clone()
                     .filter(|_| l0.mesh.grading == Grading::Uniform && grading == Grading::Uniform);
+                // The coarse state moved onto the fitted mesh is usually
+                // within Newton's reach of the solution there; deep in
+                // contact (d = -50 sigma at mu = 10: the outer radius grows
+                // several fold) it may not be, and the continuation from
+                // far apart on the fitted mesh reaches it instead.
                 let (m, sol, fa, t) =
-                    self.continuation(&laws, mesh, d, guess, None, chord, d, false)?;
+                    match self.continuation(&laws, mesh.clone(), d, guess, None, chord, d, false) {
+                        Ok(c) => c,
+                        Err(Error::NoConvergence { .. }) => {
+                            let d0 = d.max(top);
+                            let h0: Vec<f64> =
+                                mesh.rho.iter().map(|&r| d0 + self.shape.gap(r)).collect();
+                            self.continuation(&laws, mesh, d0, h0, None, None, d, false)?
+                        }
+                        Err(e) => return Err(e),
+                    };
                 let fits = self.mesh_fits(&m, &sol.h, &sol.p);
                 state.levels[0] = Level {
                     f: self.shape_at(&m),

@@ -178,7 +178,7 @@ impl Mesh {
         let mut fresh = false;
         let mut iterations = 0;
         let fail = |iterations, residual| Error::NoConvergence {
-            what: format!("rough-sphere Newton at d = {d} sigma ({n} nodes)"),
+            what: format!("rough-sphere Newton at d = {d:e} sigma ({n} nodes)"),
             iterations,
             residual,
         };
