@@ -15,9 +15,10 @@ use std::path::{Path, PathBuf};
 pub enum Lookup {
     /// An intact entry for these parameters.
     Found(Box<Calibration>),
-    /// No entry (or one for other parameters or solver version).
+    /// No entry.
     Missing,
-    /// An entry that is damaged or altered: the note to show.
+    /// An entry that cannot be used (unreadable, not text, not an entry,
+    /// failing its checksum, or for other parameters): the note to show.
     Bad(String),
 }
 
@@ -86,14 +87,19 @@ impl CalibrationCache {
     /// cache's format, or its checksum fails), with the reason.
     pub fn lookup(&self, problem: &SphereProblem) -> Lookup {
         let path = self.path_for(problem);
-        let Ok(text) = std::fs::read_to_string(&path) else {
-            return Lookup::Missing;
-        };
         let bad = |why: &str| {
             Lookup::Bad(format!(
                 "calibration cache entry {} {why}: recomputed and stored again",
                 path.display()
             ))
+        };
+        let text = match std::fs::read(&path) {
+            Ok(bytes) => match String::from_utf8(bytes) {
+                Ok(text) => text,
+                Err(_) => return bad("is not text (damaged)"),
+            },
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Lookup::Missing,
+            Err(e) => return bad(&format!("cannot be read ({e})")),
         };
         let Ok(entry) = serde_json::from_str::<Entry>(&text) else {
             return bad("is not a calibration entry with a checksum (damaged, or an older format)");
@@ -104,10 +110,12 @@ impl CalibrationCache {
         if format!("{:016x}", fnv1a64(canonical.as_bytes())) != entry.fnv1a64 {
             return bad("fails its checksum (altered or damaged)");
         }
+        // The file's name holds the versions and parameters: an intact entry
+        // for others was copied or renamed there.
         if entry.calibration.matches(problem) {
             Lookup::Found(Box::new(entry.calibration))
         } else {
-            Lookup::Missing
+            bad("holds the calibration of other parameters or another solver version")
         }
     }
 
