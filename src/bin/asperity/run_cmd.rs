@@ -50,7 +50,12 @@ pub fn run(args: &RunArgs) -> crate::CliResult {
         // The map's path is relative to the scene file's directory.
         let base = args.scene.parent().unwrap_or(Path::new("."));
         let plan = if args.plan {
-            print!("{}", Plan::preview_in(&scene, mode, base)?);
+            let preview = Plan::preview_in(&scene, mode, base)?;
+            if args.json {
+                crate::outln!("{}", preview.to_json());
+            } else {
+                print!("{preview}");
+            }
             return Ok(());
         } else {
             planning(|| Plan::new_in(&scene, mode, base))?
@@ -85,6 +90,10 @@ pub fn execute(
 ) -> crate::CliResult {
     if plan_only {
         let preview = Plan::preview(scene, mode)?;
+        if json {
+            crate::outln!("{}", preview.to_json());
+            return Ok(());
+        }
         crate::out!("{preview}");
         for w in preview.warnings() {
             crate::outln!("  warning: {w}");

@@ -40,6 +40,43 @@ impl Preview {
     pub fn warnings(&self) -> &[String] {
         self.plan().map_or(&[], |p| &p.warnings)
     }
+
+    /// What `--plan --json` prints: `status` (`"ready"`, `"provisional"`
+    /// or `"pending"`), `title`, `decisions` (each `topic`, `choice`,
+    /// `why`, as the text shows them), `pending` (what the run gathers
+    /// first, or null) and `warnings`.
+    pub fn to_json(&self) -> String {
+        let (status, title, decisions, pending) = match self {
+            Preview::Ready(p) => ("ready", &p.scene.title, &p.decisions, None),
+            Preview::Provisional(p, pending) => {
+                ("provisional", &p.scene.title, &p.decisions, Some(pending))
+            }
+            Preview::Pending {
+                title,
+                pending,
+                decisions,
+                ..
+            } => ("pending", title, decisions, Some(pending)),
+        };
+        let decisions: Vec<serde_json::Value> = decisions
+            .iter()
+            .map(|d| {
+                serde_json::json!({
+                    "topic": d.topic(),
+                    "choice": d.choice(),
+                    "why": d.why(),
+                })
+            })
+            .collect();
+        let v = serde_json::json!({
+            "status": status,
+            "title": title,
+            "decisions": decisions,
+            "pending": pending.map(|p| p.to_string()),
+            "warnings": self.warnings(),
+        });
+        serde_json::to_string_pretty(&v).unwrap_or_default()
+    }
 }
 
 impl fmt::Display for Pending {
