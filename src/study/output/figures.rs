@@ -50,7 +50,7 @@ pub fn si_prefix_area(values: impl Iterator<Item = f64>) -> (f64, &'static str) 
 /// this time are removed from the directory, so no output of an earlier run
 /// (a `montecarlo.csv` beside a run without a population) is left to be
 /// read as this run's.
-pub const OUTPUT_FILES: [&str; 8] = [
+pub const OUTPUT_FILES: [&str; 12] = [
     "curve.csv",
     "montecarlo.csv",
     "summary.json",
@@ -59,6 +59,10 @@ pub const OUTPUT_FILES: [&str; 8] = [
     "area_load.svg",
     "count_load.svg",
     "pull_off_distribution.svg",
+    "resistance_force.svg",
+    "load_area_plastic.svg",
+    "summit_heights.svg",
+    "summit_map.svg",
 ];
 
 /// The first numeric cell of a CSV text that is not finite:
