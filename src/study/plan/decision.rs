@@ -62,6 +62,9 @@ pub enum LawReason {
     },
     /// Named in the scene.
     Given,
+    /// `auto` with a yield strength: Kogut–Etsion (the error table measures
+    /// elastic laws only, and an elastic law ignores the yield strength).
+    AutoPlastic,
     /// Named in the scene; its adhesion is left out because the JKR
     /// interference scale (m) is far below the tolerance.
     AdhesionNegligible {
@@ -468,6 +471,11 @@ fn law_why(reason: &LawReason, d: &Decision) -> String {
              full-solver law"
         ),
         LawReason::Given => "given in the scene".into(),
+        LawReason::AutoPlastic => "law.kind = \"auto\" with materials.yield_strength set: \
+             elastic-plastic summits (Kogut-Etsion loading, elastic unloading, JKR adhesion on the \
+             flattened shape when w > 0); the measured errors against the full solver are of \
+             elastic laws, which would ignore the yield strength"
+            .into(),
         LawReason::AdhesionNegligible { jkr_scale } => format!(
             "given in the scene; adhesion left out: its JKR interference scale {jkr_scale:.3e} m is \
              below 1e-6 x rtol x sigma"

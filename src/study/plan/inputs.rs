@@ -10,7 +10,7 @@ use super::FullSolver;
 use crate::error::{Error, Result};
 use crate::sphere::{Calibration, Shape, SolverOptions, SphereProblem};
 use crate::study::cache::CalibrationCache;
-use crate::study::scene::{build_contact, resolve, Resolved, Scene};
+use crate::study::scene::{build_contact, resolve, LawName, Resolved, Scene};
 use std::path::{Path, PathBuf};
 
 /// What a plan needs beyond the scene.
@@ -63,7 +63,11 @@ pub enum Pending {
 fn problem(scene: &Scene) -> Result<Option<SphereProblem>> {
     // The full-solver law is the calibrated law itself, and the reference
     // of an analytic adhesive law's model error (or of `auto`'s choice).
-    let need = FullSolver::of_scene(scene.law.kind);
+    let need = match scene.law.kind {
+        // `auto` with a yield strength chooses an elastic-plastic law.
+        LawName::Auto if scene.plasticity().ok().flatten().is_some() => FullSolver::NoCounterpart,
+        kind => FullSolver::of_scene(kind),
+    };
     let needed = match need {
         FullSolver::Itself => true,
         FullSolver::Reference => scene.accuracy.model_error,

@@ -116,7 +116,18 @@ pub(super) fn choose(
     let w = contact.adhesion.work();
     let given = scene.law.kind;
     let (kind, reason) = match given {
-        LawName::Plastic(v) => return plastic(scene, contact, v, budget, decisions),
+        LawName::Plastic(v) => return plastic(scene, contact, v, false, budget, decisions),
+        // An elastic law would ignore the yield strength the scene gives.
+        LawName::Auto if scene.plasticity()?.is_some() => {
+            return plastic(
+                scene,
+                contact,
+                Variant::KogutEtsion,
+                true,
+                budget,
+                decisions,
+            )
+        }
         LawName::Shaped => return shaped(scene, contact, decisions),
         LawName::Calibrated if w > 0.0 => {
             return calibrated(contact, calibration, None, rtol, decisions)
@@ -232,11 +243,13 @@ fn calibrated(
 }
 
 /// An elastic-plastic law: the variant's loading fit, elastic unloading from
-/// the flattened shape, and JKR adhesion on that shape when `w > 0`.
+/// the flattened shape, and JKR adhesion on that shape when `w > 0`;
+/// `auto`: chosen by `law.kind = "auto"` for a scene with a yield strength.
 fn plastic(
     scene: &Scene,
     contact: &AsperityContact,
     variant: Variant,
+    auto: bool,
     budget: &Budget,
     decisions: &mut Vec<Decision>,
 ) -> Result<LawChoice> {
@@ -268,7 +281,9 @@ fn plastic(
     } else {
         PlasticLaw::as_law(loading)
     };
-    let reason = if w > 0.0 && negligible {
+    let reason = if auto {
+        LawReason::AutoPlastic
+    } else if w > 0.0 && negligible {
         LawReason::AdhesionNegligible { jkr_scale }
     } else {
         LawReason::Given
