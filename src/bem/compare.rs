@@ -155,6 +155,17 @@ pub enum Warning {
         /// GW's `A/A0` there.
         area_fraction: f64,
     },
+    /// GW's real-area fraction above 1 at a mean pressure (Pa): its summit
+    /// areas summed past the whole nominal area (they never overlap in
+    /// GW), not a fraction; reported as null.
+    GwAreaAboveOne {
+        /// The state's index.
+        state: usize,
+        /// The mean pressure (Pa).
+        pressure: f64,
+        /// GW's summed `A/A0` there.
+        area_fraction: f64,
+    },
     /// McCool's summit heights have no variance on this map (bandwidth
     /// `alpha <= 0.8968`): no GW at all.
     NoGw,
@@ -190,6 +201,16 @@ impl fmt::Display for Warning {
                 f,
                 "GW at p = {pressure:e} Pa: area fraction {area_fraction:.3} > 0.1, outside GW's \
                  light-load validity"
+            ),
+            Warning::GwAreaAboveOne {
+                state,
+                pressure,
+                area_fraction,
+            } => write!(
+                f,
+                "state {state}: GW's area fraction at p = {pressure:e} Pa is null: its sum of \
+                 summit areas is {area_fraction:.3} of the nominal area, more than all of it (GW \
+                 holds below about 0.1, without asperity interaction)"
             ),
             Warning::NoGw => f.write_str(
                 "GW: the map's bandwidth leaves McCool's summit heights no variance; no GW \
@@ -427,14 +448,24 @@ impl Theories {
                 });
             }
         }
-        if let Some(g) = gw.filter(|g| g.area_fraction > GW_AREA_LIMIT) {
+        if let Some(g) = gw.filter(|g| g.area_fraction > GW_AREA_LIMIT && g.area_fraction <= 1.0) {
             out.warnings.push(Warning::GwBeyondLightLoad {
                 pressure: p,
                 area_fraction: g.area_fraction,
             });
         }
         let resistance = self.resistance(problem, cl, gw.as_ref())?;
-        let (gw, pe) = (prediction_gw(p, gw), prediction_persson(p, pe));
+        let (mut gw, pe) = (prediction_gw(p, gw), prediction_persson(p, pe));
+        // GW sums its summits' areas as if they never overlapped: above 1
+        // that sum is not a fraction, so it is not reported.
+        if let Some(a) = gw.area_fraction.filter(|&a| a > 1.0) {
+            out.warnings.push(Warning::GwAreaAboveOne {
+                state: index,
+                pressure: p,
+                area_fraction: a,
+            });
+            gw.area_fraction = None;
+        }
         let (area, gap) = (s.area_fraction(), s.mean_gap);
         out.differences.push(Difference {
             pressure: p,

@@ -195,6 +195,35 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
                 .map_err(|e| e.renamed(&param("adhesion_energy")))
         })
         .transpose()?;
+    for (i, s) in states.iter().enumerate() {
+        for (key, v) in [
+            ("area_fraction", s.area_fraction),
+            ("mean_gap_m", s.mean_gap_m),
+            ("gw_area_fraction", s.gw_area_fraction),
+            ("gw_mean_gap_m", s.gw_mean_gap_m),
+        ] {
+            if !v.is_finite() {
+                warnings.push(format!(
+                    "states[{i}].{key} at p = {:e} Pa is null: the model's value there is not a \
+                     finite number (the pressure is beyond what its formula resolves in double \
+                     precision)",
+                    s.pressure
+                ));
+            }
+        }
+    }
+    let pt = match (pt, input.adhesion_energy) {
+        (Some(x), Some(w)) if !x.is_finite() => {
+            warnings.push(format!(
+                "persson_tosatti_number is null: the full-contact elastic energy {:e} J/m^2 over \
+                 the work of adhesion {w:e} J/m^2 is beyond the largest double (so small a work \
+                 of adhesion cannot pull the surfaces into full contact)",
+                model.full_contact_energy()
+            ));
+            None
+        }
+        (pt, _) => pt,
+    };
     Ok(PerssonOutput {
         states,
         h_rms_m: spectrum.h_rms(),
