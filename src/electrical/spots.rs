@@ -270,14 +270,39 @@ impl Spots {
             Err(_) => m.partial_piv_lu().solve(&ones),
         };
         let total: f64 = current.iter().sum();
-        if total.is_finite() && total > 0.0 {
-            Ok(1.0 / total)
-        } else {
-            Err(Error::invalid(
-                "spots",
-                "the equal-potential system is singular: spots too close for point sources",
-            ))
+        if total.is_finite() && total > 0.0 && (1.0 / total).is_finite() {
+            return Ok(1.0 / total);
         }
+        // Why: a pair so close that its point-source mutual resistance
+        // passes a spot's own, or spots so small that their currents leave
+        // the floating-point range.
+        let own = (0..n).map(|i| m[(i, i)]);
+        let own_min = own.clone().fold(f64::INFINITY, f64::min);
+        let own_max = own.fold(0.0, f64::max);
+        let mut closest = f64::INFINITY;
+        for i in 0..n {
+            for j in 0..i {
+                closest = closest.min(self.distance(i, j));
+            }
+        }
+        let mutual_max = k / closest;
+        let r_min = self.radius.iter().copied().fold(f64::INFINITY, f64::min);
+        Err(Error::invalid(
+            "spots",
+            if mutual_max >= own_min {
+                format!(
+                    "the equal-potential system is singular: spots too close for point sources \
+                     (the closest pair is {closest:e} m apart, its mutual resistance {mutual_max:e} \
+                     Ohm above a spot's own {own_min:e} Ohm)"
+                )
+            } else {
+                format!(
+                    "the spots' own resistances (up to {own_max:e} Ohm, radii down to {r_min:e} m) \
+                     put the total current {total:e} A/V out of the floating-point range: spots \
+                     this small carry no current this solve can resolve"
+                )
+            },
+        ))
     }
 
     fn conductances(&self, spot: &SpotResistance) -> Vec<f64> {
