@@ -139,6 +139,10 @@ fn set_resistance(plan: &Plan, res: &ResistanceObservables, rec: &mut Record) {
 /// run to be blamed on it.
 pub const BLAME_DECADES: f64 = 8.0;
 
+/// The plasticity index above which a failed rough-sphere run of a plastic
+/// law is blamed on its yield strength (metals: 0.1 .. 100).
+pub const BLAME_PSI: f64 = 1e4;
+
 /// A failed rough-sphere run of a scene with an input
 /// [`BLAME_DECADES`] or more from a typical gold microswitch: bad input
 /// naming that input, with the failure (the solver cannot be expected to
@@ -146,6 +150,38 @@ pub const BLAME_DECADES: f64 = 8.0;
 /// unchanged.
 pub(super) fn blame(plan: &Plan, e: crate::Error) -> crate::Error {
     let scene = &plan.scene;
+    // A yield strength far below any metal's (1e3 Pa: psi ~ 3e6) leaves
+    // the plastic fits so far beyond their range that the sphere's local
+    // pressure has no usable shape.
+    if let Some(p) = plan
+        .plasticity
+        .as_ref()
+        .filter(|_| e.is_bad_input() || matches!(e, crate::Error::NoConvergence { .. }))
+    {
+        let c = &plan.contact;
+        let psi = crate::material::plastic::plasticity_index(
+            c.contact_modulus,
+            p.hardness(),
+            plan.surface.sigma,
+            plan.surface.radius,
+        )
+        .unwrap_or(f64::NAN);
+        if psi > BLAME_PSI {
+            let (field, value) = if scene.materials.hardness.is_some() {
+                ("materials.hardness", p.hardness())
+            } else {
+                ("materials.yield_strength", p.yield_strength())
+            };
+            return crate::Error::invalid(
+                field,
+                format!(
+                    "the rough sphere failed ({e}): {field} = {value:e} Pa gives a plasticity \
+                     index psi = {psi:.3e}, far beyond any metal's (0.1 .. 100, yield strengths \
+                     of 1e7 .. 1e10 Pa)"
+                ),
+            );
+        }
+    }
     let pick = crate::study::scene::most_extreme_input(scene, &[]);
     if crate::study::scene::decades_from_typical(scene, pick) < BLAME_DECADES {
         return e;
