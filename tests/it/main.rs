@@ -47,6 +47,7 @@ mod limits;
 mod maugis;
 mod maugis_gw;
 mod model_error;
+mod never_wrong;
 mod observables;
 mod persson;
 mod plastic;
