@@ -170,15 +170,6 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
                 g.area_fraction
             ));
         }
-        for (name, value) in [("Persson's", s.mean_gap), ("GW's", g.mean_gap)] {
-            if !value.is_finite() {
-                warnings.push(format!(
-                    "{name} mean gap at p = {p:e} Pa is null: not representable at p/E* = {:.3e} \
-                     (far outside contact mechanics' range)",
-                    p / input.estar
-                ));
-            }
-        }
         states.push(PerssonState {
             pressure: p,
             area_fraction: s.area_fraction,
