@@ -52,6 +52,8 @@ pub mod sphere;
 #[cfg(feature = "study")]
 pub mod study;
 pub mod surface;
+#[cfg(feature = "study")]
+pub mod topography;
 
 pub use error::{Error, Result};
 

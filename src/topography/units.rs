@@ -1,0 +1,58 @@
+//! Length units as instruments spell them, to metres.
+
+/// Metres per unit of a length unit as written in a file, or `None` when
+/// `unit` is no length unit. Accepts SI prefixes from pm to km with `m`,
+/// the micro sign (`µm`, `μm`), `um`, the Nanoscope and Digital Surf
+/// spellings of micrometres (`~m`, Latin-1 `æm`), and the ångström (`Å`,
+/// `A`, `Ang`, `angstrom`; `A` only where `ampere_a` is false: Igor files
+/// use SI symbols, so there `A` is the ampere).
+pub fn metres_per(unit: &str, ampere_a: bool) -> Option<f64> {
+    let u = unit.trim();
+    Some(match u {
+        "m" | "meter" | "meters" | "metre" | "metres" => 1.0,
+        "km" => 1e3,
+        "cm" => 1e-2,
+        "mm" => 1e-3,
+        "um" | "µm" | "μm" | "~m" | "æm" | "micron" | "microns" | "micrometer" | "micrometre" => {
+            1e-6
+        }
+        "nm" | "nanometer" | "nanometre" => 1e-9,
+        "Å" | "Ang" | "angstrom" | "Angstrom" => 1e-10,
+        "A" if !ampere_a => 1e-10,
+        "pm" => 1e-12,
+        _ => return None,
+    })
+}
+
+/// The canonical spelling of a length unit (`um` for every spelling of
+/// micrometres), or the unit as given when it is no length unit.
+pub fn canonical(unit: &str, ampere_a: bool) -> String {
+    match metres_per(unit, ampere_a) {
+        Some(f) if f == 1.0 => "m".into(),
+        Some(f) if f == 1e3 => "km".into(),
+        Some(f) if f == 1e-2 => "cm".into(),
+        Some(f) if f == 1e-3 => "mm".into(),
+        Some(f) if f == 1e-6 => "um".into(),
+        Some(f) if f == 1e-9 => "nm".into(),
+        Some(f) if f == 1e-10 => "A".into(),
+        Some(f) if f == 1e-12 => "pm".into(),
+        _ => unit.trim().to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spellings_of_the_same_unit_agree() {
+        for u in ["um", "µm", "μm", "~m", "æm", " um "] {
+            assert_eq!(metres_per(u, false), Some(1e-6), "{u}");
+            assert_eq!(canonical(u, false), "um");
+        }
+        assert_eq!(metres_per("A", false), Some(1e-10));
+        assert_eq!(metres_per("A", true), None);
+        assert_eq!(metres_per("V", false), None);
+        assert_eq!(canonical("V", false), "V");
+    }
+}

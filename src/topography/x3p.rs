@@ -1,0 +1,342 @@
+//! ISO 25178-72 (formerly ISO 5436-2) XML 3D surface profiles (`.x3p`):
+//! a zip archive holding `main.xml` and the binary heights.
+//!
+//! Layout (ISO 5436-2 and its openGPS reference schema `ISO5436_2.xsd`, as
+//! Gwyddion's `opengps.c` and SurfaceTopography's `X3P.py` read it):
+//! `Record1` gives `Revision` (`ISO5436 - 2000`), `FeatureType` (`SUR` for
+//! an areal map), the axes `CX`, `CY` (`AxisType` `I`: incremental, with
+//! `Increment` in m) and `CZ` (`AxisType` `A`, `DataType` `I` int16, `L`
+//! int32, `F` float32 or `D` float64, optional `Increment` and `Offset`:
+//! heights are `value x Increment + Offset` m); `Record3` gives
+//! `MatrixDimension` (`SizeX`, `SizeY`, `SizeZ` = 1) and the `DataLink`:
+//! `PointDataLink`, the archive member with the `SizeY` rows of `SizeX`
+//! little-endian values, x fastest, and optionally `ValidPointsLink`, one
+//! bit per point (least-significant first, 1 = valid). NaN heights are
+//! missing too.
+
+use super::bytes::decode;
+use super::{pick, pixel, raster, Bad, Channel, Format, Measured};
+use std::collections::HashMap;
+use std::io::{Read, Write};
+
+/// The text of every leaf element of `main.xml` by its path below the root
+/// (`Record1/Axes/CX/Increment`), namespace prefixes dropped.
+fn leaves(xml: &str) -> Result<HashMap<String, String>, Bad> {
+    use quick_xml::events::Event;
+    let mut reader = quick_xml::Reader::from_str(xml);
+    let mut path: Vec<String> = Vec::new();
+    let mut out = HashMap::new();
+    let mut text = String::new();
+    loop {
+        match reader.read_event() {
+            Ok(Event::Start(e)) => {
+                path.push(e.local_name().as_ref().to_string());
+                text.clear();
+            }
+            Ok(Event::Text(t)) => text.push_str(t.as_ref()),
+            Ok(Event::CData(t)) => text.push_str(t.as_ref()),
+            Ok(Event::End(_)) => {
+                if path.len() > 1 {
+                    out.entry(path[1..].join("/"))
+                        .or_insert_with(|| text.trim().to_string());
+                }
+                path.pop();
+                text.clear();
+            }
+            Ok(Event::Eof) => break,
+            Ok(_) => {}
+            Err(e) => {
+                return Err(Bad::corrupt(format!(
+                    "main.xml is not well-formed XML at byte {}: {e}",
+                    reader.buffer_position()
+                )))
+            }
+        }
+        if path.len() > 64 {
+            return Err(Bad::corrupt("main.xml nests deeper than 64 elements"));
+        }
+    }
+    Ok(out)
+}
+
+/// A member of the archive, read whole if its declared size is at most
+/// `limit` bytes.
+fn member<R: Read + std::io::Seek>(
+    zip: &mut zip::ZipArchive<R>,
+    name: &str,
+    limit: u64,
+) -> Result<Vec<u8>, Bad> {
+    let mut f = zip
+        .by_name(name)
+        .map_err(|e| Bad::corrupt(format!("no member '{name}' in the archive ({e})")))?;
+    if f.size() > limit {
+        return Err(Bad::corrupt(format!(
+            "member '{name}' declares {} bytes, more than the {limit} the header describes",
+            f.size()
+        )));
+    }
+    let mut out = Vec::with_capacity(f.size() as usize);
+    f.by_ref()
+        .take(limit)
+        .read_to_end(&mut out)
+        .map_err(|e| Bad::corrupt(format!("member '{name}' cannot be read: {e}")))?;
+    Ok(out)
+}
+
+pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
+    pick(&["Default".to_string()], 0, channel)?;
+    if !bytes.starts_with(b"PK\x03\x04") {
+        return Err(Bad::magic("PK\\x03\\x04 (a zip archive)"));
+    }
+    let mut zip = zip::ZipArchive::new(std::io::Cursor::new(bytes))
+        .map_err(|e| Bad::corrupt(format!("not a readable zip archive: {e}")))?;
+    let xml = member(&mut zip, "main.xml", 1 << 24)?;
+    let xml = String::from_utf8(xml).map_err(|_| Bad::corrupt("main.xml is not UTF-8"))?;
+    let x = leaves(&xml)?;
+    let get = |k: &str| {
+        x.get(k)
+            .map(String::as_str)
+            .ok_or_else(|| Bad::corrupt(format!("main.xml has no {k}")))
+    };
+    let num = |k: &str| -> Result<f64, Bad> {
+        get(k)?
+            .parse::<f64>()
+            .map_err(|_| Bad::corrupt(format!("main.xml: {k} is not a number")))
+    };
+    let count = |k: &str| -> Result<usize, Bad> {
+        get(k)?
+            .parse::<usize>()
+            .map_err(|_| Bad::corrupt(format!("main.xml: {k} is not a count")))
+    };
+    if get("Record1/FeatureType")? != "SUR" {
+        return Err(Bad::unsupported(format!(
+            "FeatureType {} (only SUR, an areal map)",
+            get("Record1/FeatureType")?
+        )));
+    }
+    for (axis, kind) in [("CX", "I"), ("CY", "I"), ("CZ", "A")] {
+        let t = get(&format!("Record1/Axes/{axis}/AxisType"))?;
+        if t != kind {
+            return Err(Bad::unsupported(format!(
+                "{axis} AxisType {t} (expected {kind})"
+            )));
+        }
+    }
+    let (nx, ny) = (
+        count("Record3/MatrixDimension/SizeX")?,
+        count("Record3/MatrixDimension/SizeY")?,
+    );
+    if count("Record3/MatrixDimension/SizeZ")? != 1 {
+        return Err(Bad::unsupported("SizeZ other than 1 (volume data)"));
+    }
+    let n = super::grid(ny, nx)?;
+    let (dx, dy) = (
+        num("Record1/Axes/CX/Increment")?,
+        num("Record1/Axes/CY/Increment")?,
+    );
+    let t = get("Record1/Axes/CZ/DataType")?;
+    let size = match t {
+        "I" => 2,
+        "L" | "F" => 4,
+        "D" => 8,
+        other => return Err(Bad::unsupported(format!("CZ DataType {other}"))),
+    };
+    let inc = x
+        .get("Record1/Axes/CZ/Increment")
+        .map_or(Ok(1.0), |_| num("Record1/Axes/CZ/Increment"))?;
+    let off = x
+        .get("Record1/Axes/CZ/Offset")
+        .map_or(Ok(0.0), |_| num("Record1/Axes/CZ/Offset"))?;
+    let link = get("Record3/DataLink/PointDataLink")
+        .map_err(|_| Bad::unsupported("no Record3/DataLink/PointDataLink (inline DataList)"))?;
+    let want = (n as u64) * size as u64;
+    crate::study::memory::ensure(
+        "topography",
+        "reading the X3P heights",
+        want as f64 + 8.0 * n as f64,
+        "",
+    )
+    .map_err(|e| Bad::corrupt(e.to_string()))?;
+    let data = member(&mut zip, link, want)?;
+    let data = raster(&data, ny, nx, size)?;
+    let mut z: Vec<f64> = match t {
+        "I" => decode(data, |b| f64::from(i16::from_le_bytes(b))),
+        "L" => decode(data, |b| f64::from(i32::from_le_bytes(b))),
+        "F" => decode(data, |b| f64::from(f32::from_le_bytes(b))),
+        _ => decode(data, f64::from_le_bytes),
+    };
+    if inc != 1.0 || off != 0.0 {
+        z.iter_mut().for_each(|v| *v = *v * inc + off);
+    }
+    for v in z.iter_mut() {
+        if !v.is_finite() {
+            *v = f64::NAN;
+        }
+    }
+    if let Some(valid) = x.get("Record3/DataLink/ValidPointsLink") {
+        let bits = member(&mut zip, valid, n.div_ceil(8) as u64)?;
+        if bits.len() < n.div_ceil(8) {
+            return Err(Bad::truncated(format!(
+                "'{valid}' has {} bytes for {n} points",
+                bits.len()
+            )));
+        }
+        for (k, v) in z.iter_mut().enumerate() {
+            if bits[k / 8] >> (k % 8) & 1 == 0 {
+                *v = f64::NAN;
+            }
+        }
+    }
+    Ok(Measured {
+        format: Format::X3p,
+        channel: "Default".into(),
+        channels: vec!["Default".into()],
+        unit: "m".into(),
+        rows: ny,
+        cols: nx,
+        heights: z,
+        pixel_size: Some((pixel(dx, "x")?, pixel(dy, "y")?)),
+        periodic: false,
+    })
+}
+
+/// The bytes of an X3P file holding the row-major `rows x cols` heights
+/// `z` (m; NaN = missing, written as NaN and as an invalid point) with pixel
+/// sizes `dx`, `dy` (m): float64 data (`CZ` `DataType` `D`, no increment),
+/// the increments in Rust's shortest round-trip form, MD5 checksums of the
+/// data and of `main.xml` (`md5checksum.hex`), as ISO 5436-2 asks. Reading
+/// it back gives the same bits.
+///
+/// # Errors
+/// [`crate::Error::Invalid`] named `topography` when `z` is not `rows x
+/// cols`, [`crate::Error::Io`] when the archive cannot be assembled.
+pub fn to_x3p(
+    z: &[f64],
+    rows: usize,
+    cols: usize,
+    dx: f64,
+    dy: f64,
+    software: &str,
+) -> crate::Result<Vec<u8>> {
+    if z.len() != rows * cols {
+        return Err(crate::Error::invalid(
+            "topography",
+            format!("{} heights for {rows} x {cols} pixels", z.len()),
+        ));
+    }
+    let data: Vec<u8> = z.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let missing = z.iter().any(|v| v.is_nan());
+    let valid: Option<Vec<u8>> = missing.then(|| {
+        let mut b = vec![0u8; z.len().div_ceil(8)];
+        for (k, v) in z.iter().enumerate() {
+            if !v.is_nan() {
+                b[k / 8] |= 1 << (k % 8);
+            }
+        }
+        b
+    });
+    let valid_link = valid.as_ref().map_or(String::new(), |b| {
+        format!(
+            "\n      <ValidPointsLink>bindata/valid.bin</ValidPointsLink>\n      \
+             <MD5ChecksumValidPoints>{}</MD5ChecksumValidPoints>",
+            super::md5::hex(b)
+        )
+    });
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8" standalone="no" ?>
+<p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:schemaLocation="http://www.opengps.eu/2008/ISO5436_2 http://www.opengps.eu/2008/ISO5436_2/ISO5436_2.xsd">
+  <Record1>
+    <Revision>ISO5436 - 2000</Revision>
+    <FeatureType>SUR</FeatureType>
+    <Axes>
+      <CX>
+        <AxisType>I</AxisType>
+        <DataType>D</DataType>
+        <Increment>{dx:e}</Increment>
+        <Offset>0</Offset>
+      </CX>
+      <CY>
+        <AxisType>I</AxisType>
+        <DataType>D</DataType>
+        <Increment>{dy:e}</Increment>
+        <Offset>0</Offset>
+      </CY>
+      <CZ>
+        <AxisType>A</AxisType>
+        <DataType>D</DataType>
+      </CZ>
+    </Axes>
+  </Record1>
+  <Record2>
+    <Date>1970-01-01T00:00:00</Date>
+    <Instrument>
+      <Manufacturer>asperity</Manufacturer>
+      <Model>{software}</Model>
+      <Serial>not available</Serial>
+      <Version>{version}</Version>
+    </Instrument>
+    <CalibrationDate>1970-01-01T00:00:00</CalibrationDate>
+    <ProbingSystem>
+      <Type>Software</Type>
+      <Identification>asperity</Identification>
+    </ProbingSystem>
+    <Comment>heights in m</Comment>
+  </Record2>
+  <Record3>
+    <MatrixDimension>
+      <SizeX>{cols}</SizeX>
+      <SizeY>{rows}</SizeY>
+      <SizeZ>1</SizeZ>
+    </MatrixDimension>
+    <DataLink>
+      <PointDataLink>bindata/data.bin</PointDataLink>
+      <MD5ChecksumPointData>{md5}</MD5ChecksumPointData>{valid_link}
+    </DataLink>
+  </Record3>
+  <Record4>
+    <ChecksumFile>md5checksum.hex</ChecksumFile>
+  </Record4>
+</p:ISO5436_2>
+"#,
+        version = env!("CARGO_PKG_VERSION"),
+        md5 = super::md5::hex(&data),
+    );
+    let io = |e: &dyn std::fmt::Display| crate::Error::io("X3P archive", e);
+    let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    let opts = zip::write::SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated)
+        .large_file(data.len() >= u32::MAX as usize);
+    let mut put = |name: &str, b: &[u8]| -> crate::Result<()> {
+        w.start_file(name, opts).map_err(|e| io(&e))?;
+        w.write_all(b).map_err(|e| io(&e))
+    };
+    put("main.xml", xml.as_bytes())?;
+    put("bindata/data.bin", &data)?;
+    if let Some(b) = &valid {
+        put("bindata/valid.bin", b)?;
+    }
+    let sum = format!("{} *main.xml\n", super::md5::hex(xml.as_bytes()));
+    put("md5checksum.hex", sum.as_bytes())?;
+    let out = w.finish().map_err(|e| io(&e))?;
+    Ok(out.into_inner())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn writes_and_reads_back_bit_for_bit() {
+        let mut z: Vec<f64> = (0..35).map(|k| (k as f64 * 0.37).sin() * 1e-7).collect();
+        z[9] = f64::NAN;
+        let bytes = to_x3p(&z, 5, 7, 1.234567890123e-7, 3.3e-7, "test").unwrap();
+        let m = read(&bytes, &Channel::Default).unwrap();
+        assert_eq!((m.rows, m.cols), (5, 7));
+        assert_eq!(m.pixel_size, Some((1.234567890123e-7, 3.3e-7)));
+        assert_eq!(m.missing(), 1);
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&m.heights), bits(&z));
+        let err = read(b"PK\x03\x04 not really", &Channel::Default).unwrap_err();
+        assert!(err.to_string().contains("zip"), "{err}");
+    }
+}
