@@ -66,7 +66,7 @@ impl MeasuredSummits {
         let heights = c.summits.iter().map(|s| s.height_m - origin).collect();
         let radii = c.summits.iter().map(|s| 1.0 / s.curvature_per_m).collect();
         let population = Population::from_summits(heights, Radii::PerSummit(radii))?;
-        let area = c.stats.candidates as f64 * c.pixel_size_m * c.pixel_size_m;
+        let area = c.stats.candidates as f64 * c.pixel_size_m * c.pixel_size_y_m;
         Ok(MeasuredSummits {
             sum: MonteCarlo::new(Arc::new(population), law)?,
             factor: nominal_area / area,

@@ -17,11 +17,13 @@ pub const MAX_HEIGHT: f64 = 1e3;
 /// a map whose heights differ only there is flat.
 const ROUNDOFF_ULPS: f64 = 1e3;
 
-/// A height map with its pixel size: the starting point of a study.
+/// A height map with its pixel sizes: the starting point of a study.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Topography {
     map: HeightMap,
     pixel_size: f64,
+    /// The pixel size along y (m), `pixel_size` unless given apart.
+    pixel_size_y: f64,
     /// The largest height magnitude (m), kept for the roundoff test.
     largest: f64,
 }
@@ -33,8 +35,10 @@ pub struct Characterisation {
     pub rows: usize,
     /// Columns of the map (along x).
     pub cols: usize,
-    /// Pixel size `dx` (m), the same along x and y.
+    /// Pixel size `dx` (m) along x (a row).
     pub pixel_size_m: f64,
+    /// Pixel size `dy` (m) along y (a column): `dx` for square pixels.
+    pub pixel_size_y_m: f64,
     /// Whether the map was treated as periodic.
     pub periodic: bool,
     /// The removed mean plane (the mean only when periodic).
@@ -56,7 +60,20 @@ impl Topography {
     /// [`crate::Error::Invalid`] naming `heights` when the largest
     /// magnitude is above [`MAX_HEIGHT`].
     pub fn new(map: HeightMap, pixel_size: f64) -> Result<Self> {
+        Topography::with_pixels(map, pixel_size, pixel_size)
+    }
+
+    /// A map of heights in m with pixels of `dx` along x (a row) and `dy`
+    /// along y (a column), both in [`PIXEL_SIZE_RANGE`] (m): instruments
+    /// often sample the slow axis more coarsely. Every measure (plane,
+    /// moments, curvatures, densities, areas) uses each direction's own
+    /// size.
+    ///
+    /// # Errors
+    /// As [`Topography::new`]; a bad `dy` is named `pixel_size_y`.
+    pub fn with_pixels(map: HeightMap, pixel_size: f64, dy: f64) -> Result<Self> {
         PIXEL_SIZE_RANGE.check("pixel_size", pixel_size)?;
+        PIXEL_SIZE_RANGE.check("pixel_size_y", dy)?;
         let largest = map.heights().iter().fold(0.0, |m: f64, z| m.max(z.abs()));
         if !(largest <= MAX_HEIGHT) {
             return Err(Error::invalid(
@@ -70,6 +87,7 @@ impl Topography {
         Ok(Topography {
             map,
             pixel_size,
+            pixel_size_y: dy,
             largest,
         })
     }
@@ -79,9 +97,14 @@ impl Topography {
         &self.map
     }
 
-    /// The pixel size (m).
+    /// The pixel size along x (m).
     pub fn pixel_size(&self) -> f64 {
         self.pixel_size
+    }
+
+    /// The pixel size along y (m).
+    pub fn pixel_size_y(&self) -> f64 {
+        self.pixel_size_y
     }
 
     /// Removes the mean plane (the mean only if `periodic`), then measures
@@ -95,15 +118,17 @@ impl Topography {
     /// roundoff level, within 1000 ulps of the largest height (a constant
     /// map of 3e-9 m used to give a GW radius of 8.9e10 m).
     pub fn characterise(&self, periodic: bool) -> Result<Characterisation> {
-        let (rows, cols, dx) = (self.map.rows(), self.map.cols(), self.pixel_size);
+        let (rows, cols) = (self.map.rows(), self.map.cols());
+        let (dx, dy) = (self.pixel_size, self.pixel_size_y);
         let heights = self.map.heights();
-        let plane = Plane::fit(heights, rows, cols, dx, periodic);
+        let plane = Plane::fit_xy(heights, rows, cols, (dx, dy), periodic);
         // One fused pass over the residual heights, made row by row.
         let columns = plane.columns(cols);
-        let scan = scan::scan(rows, cols, dx, periodic, |i, out| {
+        let scan = scan::scan(rows, cols, (dx, dy), periodic, |i, out| {
             plane.residual_row(i, &heights[i * cols..(i + 1) * cols], &columns, out)
         });
-        let moments = Moments::from_sums(&scan.sums, rows, cols, dx, periodic).check_not_flat()?;
+        let moments =
+            Moments::from_sums(&scan.sums, rows, cols, (dx, dy), periodic).check_not_flat()?;
         let largest = self.largest;
         let roundoff = ROUNDOFF_ULPS * f64::EPSILON * largest;
         if !(moments.m0.sqrt() > roundoff) {
@@ -122,11 +147,12 @@ impl Topography {
         } else {
             (rows - 2) * (cols - 2)
         };
-        let stats = SummitStats::new(&summits, candidates, dx);
+        let stats = SummitStats::new(&summits, candidates, (dx, dy));
         Ok(Characterisation {
             rows,
             cols,
             pixel_size_m: dx,
+            pixel_size_y_m: dy,
             periodic,
             plane,
             moments,
@@ -152,9 +178,9 @@ impl Characterisation {
         NayakPrediction::from_moments(&self.moments)
     }
 
-    /// Nominal area of the map, `rows cols dx^2` (m^2).
+    /// Nominal area of the map, `rows cols dx dy` (m^2).
     pub fn nominal_area_m2(&self) -> f64 {
-        (self.rows * self.cols) as f64 * self.pixel_size_m * self.pixel_size_m
+        (self.rows * self.cols) as f64 * self.pixel_size_m * self.pixel_size_y_m
     }
 }
 

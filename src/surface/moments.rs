@@ -72,27 +72,39 @@ impl Moments {
     /// (row-major, `rows, cols >= 3`, pixel size `dx` in m).
     #[cfg(test)]
     pub(crate) fn measure(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Self {
-        let scan = super::scan::scan(rows, cols, dx, periodic, |i, out| {
+        let scan = super::scan::scan(rows, cols, (dx, dx), periodic, |i, out| {
             out.copy_from_slice(&z[i * cols..(i + 1) * cols])
         });
-        Moments::from_sums(&scan.sums, rows, cols, dx, periodic)
+        Moments::from_sums(&scan.sums, rows, cols, (dx, dx), periodic)
     }
 
     /// The moments from the difference sums of a `rows x cols` map
     /// (`[z^2, x first, y first, x second, y second]`, see `scan.rs`):
-    /// each sum divided by its number of differences.
+    /// each sum divided by its number of differences, the x differences by
+    /// powers of `dx`, the y ones by powers of `dy`.
     pub(crate) fn from_sums(
         t: &DiffSums,
         rows: usize,
         cols: usize,
-        dx: f64,
+        (dx, dy): (f64, f64),
         periodic: bool,
     ) -> Self {
         let (r, c) = (rows as f64, cols as f64);
         let n = |a: f64, b: f64| if periodic { r * c } else { a * b };
         let m0 = t[0] / (r * c);
-        let m2 = (t[1] / n(r, c - 1.0) + t[2] / n(r - 1.0, c)) / 2.0 / (dx * dx);
-        let m4 = (t[3] / n(r, c - 2.0) + t[4] / n(r - 2.0, c)) / 2.0 / (dx * dx * dx * dx);
+        let (m2, m4) = if dx == dy {
+            (
+                (t[1] / n(r, c - 1.0) + t[2] / n(r - 1.0, c)) / 2.0 / (dx * dx),
+                (t[3] / n(r, c - 2.0) + t[4] / n(r - 2.0, c)) / 2.0 / (dx * dx * dx * dx),
+            )
+        } else {
+            (
+                (t[1] / n(r, c - 1.0) / (dx * dx) + t[2] / n(r - 1.0, c) / (dy * dy)) / 2.0,
+                (t[3] / n(r, c - 2.0) / (dx * dx * dx * dx)
+                    + t[4] / n(r - 2.0, c) / (dy * dy * dy * dy))
+                    / 2.0,
+            )
+        };
         Moments { m0, m2, m4 }
     }
 

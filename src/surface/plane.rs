@@ -1,5 +1,5 @@
 //! The mean plane: the least-squares plane `z = c0 + c1 x + c2 y` over all
-//! pixels (x = j dx along a row, y = i dx down the columns).
+//! pixels (x = j dx along a row, y = i dy down the columns).
 //!
 //! On a complete regular grid the normal equations decouple about the
 //! centre `(x_c, y_c) = ((cols-1)/2, (rows-1)/2) dx`:
@@ -27,8 +27,21 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// Fits the plane to a row-major map (`periodic`: the mean only).
+    /// Fits the plane to a row-major map of square pixels `dx` (`periodic`:
+    /// the mean only).
     pub(crate) fn fit(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Plane {
+        Plane::fit_xy(z, rows, cols, (dx, dx), periodic)
+    }
+
+    /// Fits the plane to a row-major map of pixels `dx` x `dy` (`periodic`:
+    /// the mean only).
+    pub(crate) fn fit_xy(
+        z: &[f64],
+        rows: usize,
+        cols: usize,
+        (dx, dy): (f64, f64),
+        periodic: bool,
+    ) -> Plane {
         let jc = (cols as f64 - 1.0) / 2.0;
         let ic = (rows as f64 - 1.0) / 2.0;
         // Per row: sum z and sum (j - jc) z in LANES interleaved
@@ -54,7 +67,7 @@ impl Plane {
         Plane {
             c0: mean - cx * jc - cy * ic,
             slope_x: cx / dx,
-            slope_y: cy / dx,
+            slope_y: cy / dy,
             mean,
             per_px: (cx, cy),
             centre: (jc, ic),

@@ -49,13 +49,22 @@ struct Scratch {
     mask: Vec<u8>,
 }
 
-/// Scans a `rows x cols` map (`rows, cols >= 3`) of pixel size `dx` whose
-/// residual row `i` `fill(i, out)` writes into `out` (`cols` values).
-pub(crate) fn scan<F>(rows: usize, cols: usize, dx: f64, periodic: bool, fill: F) -> ScanResult
+/// Scans a `rows x cols` map (`rows, cols >= 3`) of pixels `dx` x `dy`
+/// whose residual row `i` `fill(i, out)` writes into `out` (`cols` values).
+pub(crate) fn scan<F>(
+    rows: usize,
+    cols: usize,
+    (dx, dy): (f64, f64),
+    periodic: bool,
+    fill: F,
+) -> ScanResult
 where
     F: Fn(usize, &mut [f64]) + Sync,
 {
-    let kappa_scale = 1.0 / (2.0 * dx * dx);
+    let kappa_scale = Kappa {
+        x: 1.0 / (2.0 * dx * dx),
+        y: 1.0 / (2.0 * dy * dy),
+    };
     let blocks = rows.div_ceil(BLOCK_ROWS);
     let parts: Vec<ScanResult> = (0..blocks)
         .into_par_iter()
@@ -95,7 +104,7 @@ fn scan_block<F>(
     block: std::ops::Range<usize>,
     rows: usize,
     periodic: bool,
-    kappa_scale: f64,
+    kappa_scale: Kappa,
     fill: &F,
     scratch: &mut Scratch,
 ) -> ScanResult
@@ -257,27 +266,40 @@ fn mark_wrapped_edges(up: &[f64], mid: &[f64], down: &[f64], periodic: bool, mas
     }
 }
 
+/// The curvature factors `1/(2 dx^2)` and `1/(2 dy^2)`.
+#[derive(Clone, Copy)]
+struct Kappa {
+    x: f64,
+    y: f64,
+}
+
 /// Appends the summits `mask` marks on row `i`, in column order, with the
-/// curvature `-(5-point Laplacian) kappa_scale` (`kappa_scale = 1/(2 dx^2)`).
+/// curvature `-(d2x/dx^2 + d2y/dy^2)/2` from the 3-point second differences
+/// (`-(5-point Laplacian) / (2 dx^2)` on square pixels, computed so).
 fn collect_summits(
     i: usize,
     up: &[f64],
     mid: &[f64],
     down: &[f64],
     mask: &[u8],
-    kappa_scale: f64,
+    kappa_scale: Kappa,
     out: &mut Vec<Summit>,
 ) {
     let n = mid.len();
     let mut push = |j: usize| {
         let (l, r) = (if j == 0 { n - 1 } else { j - 1 }, (j + 1) % n);
         let c = mid[j];
-        let lap = up[j] + down[j] + mid[l] + mid[r] - 4.0 * c;
+        let curvature_per_m = if kappa_scale.x == kappa_scale.y {
+            -(up[j] + down[j] + mid[l] + mid[r] - 4.0 * c) * kappa_scale.x
+        } else {
+            -((mid[l] + mid[r] - 2.0 * c) * kappa_scale.x
+                + (up[j] + down[j] - 2.0 * c) * kappa_scale.y)
+        };
         out.push(Summit {
             row: i,
             col: j,
             height_m: c,
-            curvature_per_m: -lap * kappa_scale,
+            curvature_per_m,
         });
     };
     let mut chunks = mask.chunks_exact(8);
@@ -418,7 +440,7 @@ mod tests {
         for (rows, cols) in [(3, 3), (3, 5), (4, 6), (5, 7), (7, 9), (65, 13), (130, 37)] {
             for periodic in [false, true] {
                 let z = rough(rows, cols, (rows * 1000 + cols) as u64);
-                let got = scan(rows, cols, 1.0, periodic, |i, out| {
+                let got = scan(rows, cols, (1.0, 1.0), periodic, |i, out| {
                     out.copy_from_slice(&z[i * cols..(i + 1) * cols])
                 });
                 let (sums, summits) = reference(&z, rows, cols, periodic);

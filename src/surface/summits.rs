@@ -45,17 +45,18 @@ pub struct SummitStats {
 /// in row-major order.
 #[cfg(test)]
 pub(crate) fn find(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Vec<Summit> {
-    super::scan::scan(rows, cols, dx, periodic, |i, out| {
+    super::scan::scan(rows, cols, (dx, dx), periodic, |i, out| {
         out.copy_from_slice(&z[i * cols..(i + 1) * cols])
     })
     .summits
 }
 
 impl SummitStats {
-    /// Statistics of `summits` found among `candidates` pixels of size `dx`.
-    pub(crate) fn new(summits: &[Summit], candidates: usize, dx: f64) -> Self {
+    /// Statistics of `summits` found among `candidates` pixels of `dx` x
+    /// `dy`.
+    pub(crate) fn new(summits: &[Summit], candidates: usize, (dx, dy): (f64, f64)) -> Self {
         let n = summits.len();
-        let density_per_m2 = n as f64 / (candidates as f64 * dx * dx);
+        let density_per_m2 = n as f64 / (candidates as f64 * dx * dy);
         if n == 0 {
             return SummitStats {
                 count: 0,
@@ -116,12 +117,12 @@ mod tests {
         );
         // Wrapped Laplacian at (3,3): up 1, down z[0][3] = 0, left 0, right z[3][0] = 0.
         assert_eq!(p[1].curvature_per_m, -(1.0 - 12.0) * 2.0);
-        let st = SummitStats::new(&p, 16, dx);
+        let st = SummitStats::new(&p, 16, (dx, dx));
         assert_eq!(st.count, 2);
         assert_eq!(st.density_per_m2, 2.0 / 4.0);
         assert_eq!(st.mean_height_m, Some(2.5));
         assert_eq!(st.height_std_m, Some(0.5));
         assert_eq!(st.radius_m, Some(1.0 / 19.0));
-        assert_eq!(SummitStats::new(&[], 4, dx).radius_m, None);
+        assert_eq!(SummitStats::new(&[], 4, (dx, dx)).radius_m, None);
     }
 }

@@ -131,8 +131,8 @@ pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
             format!("{}: no summits: no map", path.display()),
         ));
     }
-    let dx = c.pixel_size_m;
-    let (w, h) = (c.cols as f64 * dx, c.rows as f64 * dx);
+    let (dx, dy) = (c.pixel_size_m, c.pixel_size_y_m);
+    let (w, h) = (c.cols as f64 * dx, c.rows as f64 * dy);
     let (u, name) = unit(w.max(h));
     let (lo, hi) = c
         .summits
@@ -173,7 +173,7 @@ pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
     chart
         .draw_series(c.summits.iter().map(|s| {
             Circle::new(
-                (s.col as f64 * dx / u, s.row as f64 * dx / u),
+                (s.col as f64 * dx / u, s.row as f64 * dy / u),
                 radius,
                 height_colour((s.height_m - lo) / span).filled(),
             )
