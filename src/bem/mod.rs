@@ -147,6 +147,7 @@ pub struct Problem {
     rows: usize,
     cols: usize,
     pixel_size: f64,
+    pixel_size_y: f64,
     contact_modulus: f64,
     periodic: bool,
     heights: Vec<f64>,
@@ -174,6 +175,32 @@ impl Problem {
         options: &Options,
     ) -> Result<Self> {
         positive("pixel_size", pixel_size)?;
+        Problem::with_pixels(
+            map,
+            (pixel_size, pixel_size),
+            contact_modulus,
+            periodic,
+            options,
+        )
+    }
+
+    /// As [`Problem::new`] with rectangular pixels of `dx` along x (a row)
+    /// by `dy` along y (a column) (m): the Love coefficient of a rectangle
+    /// ([`operator::love_rect`]), the periodic wavenumbers
+    /// `2 pi (kx/(cols dx), ky/(rows dy))`, the plane and gradients in
+    /// physical coordinates; square pixels give [`Problem::new`]'s bits.
+    ///
+    /// # Errors
+    /// As [`Problem::new`]; `pixel_size_y` for a bad `dy`.
+    pub fn with_pixels(
+        map: &HeightMap,
+        (pixel_size, pixel_size_y): (f64, f64),
+        contact_modulus: f64,
+        periodic: bool,
+        options: &Options,
+    ) -> Result<Self> {
+        positive("pixel_size", pixel_size)?;
+        positive("pixel_size_y", pixel_size_y)?;
         positive("contact_modulus", contact_modulus)?;
         let (rows, cols) = (map.rows(), map.cols());
         let need = memory_estimate(rows, cols, periodic);
@@ -188,7 +215,13 @@ impl Problem {
                 ),
             ));
         }
-        let plane = Plane::fit(map.heights(), rows, cols, pixel_size, periodic);
+        let plane = Plane::fit_xy(
+            map.heights(),
+            rows,
+            cols,
+            (pixel_size, pixel_size_y),
+            periodic,
+        );
         let heights = plane.residual(map.heights(), cols);
         let n = heights.len() as f64;
         let h_rms = (heights.iter().map(|v| v * v).sum::<f64>() / n).sqrt();
@@ -198,8 +231,17 @@ impl Problem {
                 "flat: no contact problem to solve",
             ));
         }
-        let op = HalfSpace::new(rows, cols, pixel_size, contact_modulus, periodic);
-        // Full-contact RMS pressure E* g/2, g from the discrete gradient.
+        let op = HalfSpace::with_pixels(
+            rows,
+            cols,
+            (pixel_size, pixel_size_y),
+            contact_modulus,
+            periodic,
+        );
+        // Full-contact RMS pressure E* g/2, g from the discrete gradient
+        // (differences down a column in units of dx: (dx/dy)^2 = 1 exactly
+        // for square pixels).
+        let ry = (pixel_size / pixel_size_y).powi(2);
         let mut g2 = 0.0;
         for i in 0..rows {
             for j in 0..cols {
@@ -208,7 +250,7 @@ impl Problem {
                     g2 += (heights[k + 1] - heights[k]).powi(2);
                 }
                 if i + 1 < rows {
-                    g2 += (heights[k + cols] - heights[k]).powi(2);
+                    g2 += ry * (heights[k + cols] - heights[k]).powi(2);
                 }
             }
         }
@@ -217,6 +259,7 @@ impl Problem {
             rows,
             cols,
             pixel_size,
+            pixel_size_y,
             contact_modulus,
             periodic,
             heights,
@@ -252,9 +295,14 @@ impl Problem {
         (self.rows, self.cols)
     }
 
-    /// Pixel size (m).
+    /// Pixel size (m) along x (a row).
     pub fn pixel_size(&self) -> f64 {
         self.pixel_size
+    }
+
+    /// Pixel sizes `(dx, dy)` (m) along x (a row) and y (a column).
+    pub fn pixel_sizes(&self) -> (f64, f64) {
+        (self.pixel_size, self.pixel_size_y)
     }
 
     /// Contact modulus (Pa).

@@ -71,14 +71,36 @@ fn love_f(x: f64, y: f64) -> f64 {
 /// Love's coefficient `int_pixel dA'/|x - x'|` (m) of a square pixel of
 /// side `dx` centred at the origin, at `(x, y)`.
 pub fn love_pixel(x: f64, y: f64, dx: f64) -> f64 {
-    let a = dx / 2.0;
-    love_f(x + a, y + a) - love_f(x - a, y + a) - love_f(x + a, y - a) + love_f(x - a, y - a)
+    love_rect(x, y, dx, dx)
+}
+
+/// Love's coefficient `int_pixel dA'/|x - x'|` (m) of a rectangular pixel
+/// of sides `dx` (along x) and `dy` (along y) centred at the origin, at
+/// `(x, y)`: `F(x + a, y + b) - F(x - a, y + b) - F(x + a, y - b) +
+/// F(x - a, y - b)`, `a = dx/2`, `b = dy/2` (Love 1929; Johnson, Contact
+/// Mechanics, 3.25).
+pub fn love_rect(x: f64, y: f64, dx: f64, dy: f64) -> f64 {
+    let (a, b) = (dx / 2.0, dy / 2.0);
+    love_f(x + a, y + b) - love_f(x - a, y + b) - love_f(x + a, y - b) + love_f(x - a, y - b)
 }
 
 impl HalfSpace {
     /// The half-space on `rows x cols` pixels of side `dx` (m), contact
     /// modulus `estar` (Pa); `periodic` or padded.
     pub fn new(rows: usize, cols: usize, dx: f64, estar: f64, periodic: bool) -> Self {
+        HalfSpace::with_pixels(rows, cols, (dx, dx), estar, periodic)
+    }
+
+    /// The half-space on `rows x cols` pixels of `dx` (along x, a row) by
+    /// `dy` (along y, a column) (m), contact modulus `estar` (Pa);
+    /// `periodic` or padded.
+    pub fn with_pixels(
+        rows: usize,
+        cols: usize,
+        (dx, dy): (f64, f64),
+        estar: f64,
+        periodic: bool,
+    ) -> Self {
         let (fr, fc) = if periodic {
             (rows, cols)
         } else {
@@ -90,7 +112,7 @@ impl HalfSpace {
         let (mut compliance, mut stiffness) = (vec![0.0; fft.spectrum_len()], Vec::new());
         if periodic {
             stiffness = vec![0.0; fft.spectrum_len()];
-            let (lx, ly) = (cols as f64 * dx, rows as f64 * dx);
+            let (lx, ly) = (cols as f64 * dx, rows as f64 * dy);
             for kx in 0..nh {
                 for ky in 0..fr {
                     let q = 2.0 * PI * (kx as f64 / lx).hypot(signed_index(ky, fr) / ly);
@@ -103,10 +125,10 @@ impl HalfSpace {
         } else {
             let mut g = vec![0.0; fr * fc];
             g.par_chunks_mut(fc).enumerate().for_each(|(i, row)| {
-                let y = signed_index(i, fr) * dx;
+                let y = signed_index(i, fr) * dy;
                 for (j, v) in row.iter_mut().enumerate() {
                     let x = signed_index(j, fc) * dx;
-                    *v = love_pixel(x, y, dx) / (PI * estar);
+                    *v = love_rect(x, y, dx, dy) / (PI * estar);
                 }
             });
             let mut spec = vec![Complex::new(0.0, 0.0); fft.spectrum_len()];

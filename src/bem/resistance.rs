@@ -34,12 +34,14 @@ pub fn cluster_resistance(
     if clusters.is_empty() {
         return Ok(None);
     }
-    let dx = problem.pixel_size();
+    // A cluster's spot has its area (pixels dx dy); sqrt(dx dx) = dx exactly.
+    let (dx, dy) = problem.pixel_sizes();
+    let side = (dx * dy).sqrt();
     let x = clusters.iter().map(|c| (c.x_px + 0.5) * dx).collect();
-    let y = clusters.iter().map(|c| (c.y_px + 0.5) * dx).collect();
+    let y = clusters.iter().map(|c| (c.y_px + 0.5) * dy).collect();
     let a = clusters
         .iter()
-        .map(|c| (c.pixels as f64 / std::f64::consts::PI).sqrt() * dx)
+        .map(|c| (c.pixels as f64 / std::f64::consts::PI).sqrt() * side)
         .collect();
     let spots = Spots::merging(x, y, a)?.spots;
     Ok(Some(ClusterResistance {

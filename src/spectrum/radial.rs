@@ -8,7 +8,7 @@
 //!    (the window suppresses the leakage of the edges' discontinuity, at the
 //!    cost of a resolution of about two bins). A periodic map is used as is.
 //! 3. `h_q = (1/N) sum h(x) exp(-i q.x)` on the FFT grid,
-//!    `q = 2 pi (kx/(cols dx), ky/(rows dx))`; `sum_q |h_q|^2 = <h^2>`.
+//!    `q = 2 pi (kx/(cols dx), ky/(rows dy))`; `sum_q |h_q|^2 = <h^2>`.
 //! 4. Annuli of width `dq = 2 pi/(dx min(rows, cols))`, the `b`-th covering
 //!    `[(b - 1/2) dq, (b + 1/2) dq)`, `b = 1, 2, ...` up to the grid's corner:
 //!    `C_b = sum_{q in b} |h_q|^2 / (pi (q_hi^2 - q_lo^2))`, so that
@@ -25,8 +25,13 @@ use std::f64::consts::PI;
 
 /// Detrended (and, unless periodic, Hann-windowed) heights, row-major.
 pub fn prepared_heights(map: &HeightMap, pixel_size: f64, periodic: bool) -> Vec<f64> {
+    prepared_heights_xy(map, (pixel_size, pixel_size), periodic)
+}
+
+/// As [`prepared_heights`] with pixels of `dx` (along x) by `dy` (m).
+pub fn prepared_heights_xy(map: &HeightMap, pixels: (f64, f64), periodic: bool) -> Vec<f64> {
     let (rows, cols) = (map.rows(), map.cols());
-    let plane = Plane::fit(map.heights(), rows, cols, pixel_size, periodic);
+    let plane = Plane::fit_xy(map.heights(), rows, cols, pixels, periodic);
     let mut z = plane.residual(map.heights(), cols);
     if !periodic {
         let hann = |n: usize| -> Vec<f64> {
@@ -55,18 +60,28 @@ pub fn prepared_heights(map: &HeightMap, pixel_size: f64, periodic: bool) -> Vec
 /// named `spectrum` when the map is flat after detrending.
 pub fn radial_psd(map: &HeightMap, pixel_size: f64, periodic: bool) -> Result<Spectrum> {
     positive("pixel_size", pixel_size)?;
+    radial_psd_xy(map, (pixel_size, pixel_size), periodic)
+}
+
+/// As [`radial_psd`] with pixels of `dx` (along x, a row) by `dy` (along
+/// y) (m): `q = 2 pi (kx/(cols dx), ky/(rows dy))`, annuli of width
+/// `dq = 2 pi / min(cols dx, rows dy)` (the coarser of the two grid
+/// spacings in q); square pixels give [`radial_psd`]'s bits.
+///
+/// # Errors
+/// As [`radial_psd`]; `pixel_size_y` for a bad `dy`.
+pub fn radial_psd_xy(map: &HeightMap, (dx, dy): (f64, f64), periodic: bool) -> Result<Spectrum> {
+    positive("pixel_size", dx)?;
+    positive("pixel_size_y", dy)?;
     let (rows, cols) = (map.rows(), map.cols());
-    let z = prepared_heights(map, pixel_size, periodic);
+    let z = prepared_heights_xy(map, (dx, dy), periodic);
     let fft = Fft2::new(rows, cols);
     let mut spec = vec![Complex::new(0.0, 0.0); fft.spectrum_len()];
     let mut work = spec.clone();
     fft.forward(&z, &mut spec, &mut work);
     let n = (rows * cols) as f64;
-    let dq = 2.0 * PI / (pixel_size * rows.min(cols) as f64);
-    let (qx0, qy0) = (
-        2.0 * PI / (cols as f64 * pixel_size),
-        2.0 * PI / (rows as f64 * pixel_size),
-    );
+    let (qx0, qy0) = (2.0 * PI / (cols as f64 * dx), 2.0 * PI / (rows as f64 * dy));
+    let dq = qx0.max(qy0);
     let nh = fft.half_cols();
     let corner = ((cols / 2) as f64 * qx0).hypot((rows / 2) as f64 * qy0);
     let bins = (corner / dq + 0.5).floor() as usize + 1;

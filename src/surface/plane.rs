@@ -27,12 +27,6 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// Fits the plane to a row-major map of square pixels `dx` (`periodic`:
-    /// the mean only).
-    pub(crate) fn fit(z: &[f64], rows: usize, cols: usize, dx: f64, periodic: bool) -> Plane {
-        Plane::fit_xy(z, rows, cols, (dx, dx), periodic)
-    }
-
     /// Fits the plane to a row-major map of pixels `dx` x `dy` (`periodic`:
     /// the mean only).
     pub(crate) fn fit_xy(
@@ -144,11 +138,11 @@ mod tests {
         let z: Vec<f64> = (0..rows * cols)
             .map(|k| 3e-6 + 1e-3 * (k % cols) as f64 * dx - 2e-3 * (k / cols) as f64 * dx)
             .collect();
-        let p = Plane::fit(&z, rows, cols, dx, false);
+        let p = Plane::fit_xy(&z, rows, cols, (dx, dx), false);
         assert!((p.slope_x - 1e-3).abs() < 1e-15 && (p.slope_y + 2e-3).abs() < 1e-15);
         assert!((p.c0 - 3e-6).abs() < 1e-18);
         assert!(p.residual(&z, cols).iter().all(|r| r.abs() < 1e-18));
-        let q = Plane::fit(&z, rows, cols, dx, true);
+        let q = Plane::fit_xy(&z, rows, cols, (dx, dx), true);
         assert_eq!((q.slope_x, q.slope_y), (0.0, 0.0));
         let r = q.residual(&z, cols);
         assert!(r.iter().sum::<f64>().abs() < 1e-18);
