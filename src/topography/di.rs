@@ -204,6 +204,25 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     if images.is_empty() {
         return Err(Bad::corrupt("no image section"));
     }
+    // Every image the header lists must be in the file, not only the one
+    // read: a file cut short is refused whichever channel is asked for.
+    for (k, im) in images.iter().enumerate() {
+        let at = |key: &str| {
+            im.section
+                .get(key)
+                .and_then(|v| v.trim().parse::<usize>().ok())
+        };
+        if let (Some(offset), Some(length)) = (at("data offset"), at("data length")) {
+            if offset.saturating_add(length) > bytes.len() {
+                return Err(Bad::truncated(format!(
+                    "image {k} '{}' ends at byte {}, the file has {}",
+                    im.name,
+                    offset.saturating_add(length),
+                    bytes.len()
+                )));
+            }
+        }
+    }
     let names: Vec<String> = images.iter().map(|i| i.name.clone()).collect();
     // The first channel with a length unit; else the first.
     let scales: Vec<Result<(f64, String), Bad>> = images

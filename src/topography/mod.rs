@@ -31,11 +31,13 @@ mod md5;
 mod nc;
 mod opd;
 mod opdx;
+mod sanity;
 mod sdf;
 mod sur;
 pub mod units;
 mod x3p;
 
+pub use sanity::{pixel_sizes, unit_warnings, PIXEL_AGREEMENT};
 pub use x3p::to_x3p;
 
 use crate::error::{Error, Result};

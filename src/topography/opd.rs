@@ -109,6 +109,14 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             }
         }
     }
+    // The directory's blocks end where the file ends: a file cut short is
+    // refused whichever block it loses.
+    if pos > bytes.len() {
+        return Err(Bad::truncated(format!(
+            "the directory's blocks end at byte {pos}, the file has {}",
+            bytes.len()
+        )));
+    }
     if arrays.is_empty() {
         return Err(Bad::corrupt("no height array (RAW DATA, OPD, Raw, ...)"));
     }

@@ -40,6 +40,42 @@ pub fn canonical(unit: &str, ampere_a: bool) -> String {
     }
 }
 
+/// The height unit of a `.npy` or text map, which carries none
+/// (`--height-unit`, scene key `surface.height_unit`): `nm`, `um` or `m`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HeightUnit {
+    /// Nanometres (1e-9 m).
+    Nm,
+    /// Micrometres (1e-6 m).
+    Um,
+    /// Metres.
+    M,
+}
+
+impl HeightUnit {
+    /// Metres per unit.
+    pub fn metres(self) -> f64 {
+        match self {
+            HeightUnit::Nm => 1e-9,
+            HeightUnit::Um => 1e-6,
+            HeightUnit::M => 1.0,
+        }
+    }
+}
+
+impl crate::named::Named for HeightUnit {
+    const ALL: &'static [Self] = &[HeightUnit::Nm, HeightUnit::Um, HeightUnit::M];
+    const WHAT: &'static str = "height unit";
+    fn name(self) -> &'static str {
+        match self {
+            HeightUnit::Nm => "nm",
+            HeightUnit::Um => "um",
+            HeightUnit::M => "m",
+        }
+    }
+}
+crate::serde_by_name!(HeightUnit);
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -54,5 +90,15 @@ mod tests {
         assert_eq!(metres_per("A", true), None);
         assert_eq!(metres_per("V", false), None);
         assert_eq!(canonical("V", false), "V");
+    }
+
+    #[test]
+    fn height_units_by_name() {
+        use crate::named::Named;
+        assert_eq!(HeightUnit::parse("nm").unwrap().metres(), 1e-9);
+        assert_eq!(HeightUnit::parse("um").unwrap().metres(), 1e-6);
+        assert_eq!(HeightUnit::parse("m").unwrap().metres(), 1.0);
+        let e = HeightUnit::parse("mm").unwrap_err().to_string();
+        assert!(e.contains("nm, um, m"), "{e}");
     }
 }
