@@ -3,7 +3,7 @@
 //! GW on the map's finite-difference moments ([`GwOnMoments`]: McCool's
 //! `eta`, `R`, `sigma`, Hertz summits, Gaussian heights, as `asperity
 //! surface` characterises a map) and Persson on the map's radial spectrum
-//! ([`Persson`], [`radial_psd`]), with the relative differences
+//! ([`Persson`], [`radial_psd_xy`]), with the relative differences
 //! `model/exact - 1` of the real-area fraction and the mean gap, the
 //! contact resistance of the clusters and GW's with a resistivity, and what
 //! lies outside a model's validity as [`Warning`]s.
@@ -20,7 +20,7 @@ use crate::error::Error;
 use crate::gw::{Accuracy, GwOnMoments, GwPressureState};
 use crate::loading::{Derived, History, LoadingModel, Observables};
 use crate::persson::{Persson, PerssonState};
-use crate::spectrum::radial::radial_psd;
+use crate::spectrum::radial::radial_psd_xy;
 use crate::surface::{HeightMap, Topography};
 use serde::Serialize;
 use std::fmt;
@@ -35,11 +35,24 @@ pub enum Control {
     Gap,
 }
 
+impl CompareInput {
+    /// The pixel sizes `(dx, dy)` (m).
+    pub fn pixels(&self) -> (f64, f64) {
+        (
+            self.pixel_size,
+            self.pixel_size_y.unwrap_or(self.pixel_size),
+        )
+    }
+}
+
 /// The inputs of [`compare`] besides the map.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CompareInput {
-    /// Pixel size `dx` (m), the same along x and y.
+    /// Pixel size `dx` (m) along x (a row).
     pub pixel_size: f64,
+    /// Pixel size `dy` (m) along y (a column), when it differs from `dx`
+    /// (rectangular pixels: [`Problem::with_pixels`]).
+    pub pixel_size_y: Option<f64>,
     /// Contact modulus `E*` (Pa).
     pub contact_modulus: f64,
     /// Whether the map is periodic (else padded to twice its size).
@@ -63,19 +76,19 @@ pub struct CompareInput {
 /// The step of [`compare`] that failed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Step {
-    /// The boundary-element problem ([`Problem::new`]: the map, the pixel
+    /// The boundary-element problem ([`Problem::with_pixels`]: the map, the pixel
     /// size, the modulus, the memory limit).
     Problem,
     /// The adhesion ([`Problem::with_adhesion`]).
     Adhesion,
     /// The spots' resistivity ([`SpotResistance::same_metal`]).
     Resistivity,
-    /// The map as a topography ([`Topography::new`]: the heights'
+    /// The map as a topography ([`Topography::with_pixels`]: the heights'
     /// magnitude, the pixel size).
     Topography,
     /// The map's moments and summits ([`Topography::characterise`]).
     Characterise,
-    /// The map's radial spectrum ([`radial_psd`]).
+    /// The map's radial spectrum ([`radial_psd_xy`]).
     Spectrum,
     /// Persson's theory on it ([`Persson::new`]: `gamma`).
     Persson,
@@ -329,9 +342,9 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
     let options = &input.options;
     let mut problem = at(
         Step::Problem,
-        Problem::new(
+        Problem::with_pixels(
             map,
-            input.pixel_size,
+            input.pixels(),
             input.contact_modulus,
             input.periodic,
             options,
@@ -386,14 +399,14 @@ impl Theories {
             .transpose()?;
         let topo = at(
             Step::Topography,
-            Topography::new(map.clone(), input.pixel_size),
+            Topography::with_pixels(map.clone(), input.pixel_size, input.pixels().1),
         )?;
         let charac = at(Step::Characterise, topo.characterise(input.periodic))?;
         let nominal_area = charac.nominal_area_m2();
         let gw = GwOnMoments::new(&charac.moments, input.contact_modulus, nominal_area).ok();
         let psd = at(
             Step::Spectrum,
-            radial_psd(map, input.pixel_size, input.periodic),
+            radial_psd_xy(map, input.pixels(), input.periodic),
         )?;
         let persson = at(
             Step::Persson,

@@ -81,8 +81,11 @@ impl BemAdhesion {
 /// The input of [`bem`] besides the map.
 #[derive(Debug, Clone)]
 pub struct BemInput {
-    /// Pixel size (m), the same along x and y.
+    /// Pixel size (m) along x (a row), and along y unless `pixel_size_y`.
     pub pixel_size: f64,
+    /// Pixel size (m) along y (a column) when it differs from x
+    /// (rectangular pixels: [`Problem::with_pixels`]).
+    pub pixel_size_y: Option<f64>,
     /// Contact modulus E* (Pa).
     pub estar: f64,
     /// Mean pressures or mean gaps.
@@ -119,6 +122,9 @@ impl BemInput {
     /// Naming the input and its range.
     pub fn validate(&self) -> CommandResult<()> {
         positive(&param("pixel_size"), self.pixel_size)?;
+        if let Some(dy) = self.pixel_size_y {
+            positive(&param("pixel_size_y"), dy)?;
+        }
         positive(&param("estar"), self.estar)?;
         crate::error::Allowed::closed(1e-15, 1e-2).check(&param("tolerance"), self.tolerance)?;
         if self.max_iterations == 0 {
@@ -138,6 +144,7 @@ impl BemInput {
     pub fn new(pixel_size: f64, estar: f64, targets: BemTargets) -> Self {
         BemInput {
             pixel_size,
+            pixel_size_y: None,
             estar,
             targets,
             periodic: false,
@@ -215,6 +222,7 @@ impl BemInput {
         };
         CompareInput {
             pixel_size: self.pixel_size,
+            pixel_size_y: self.pixel_size_y,
             contact_modulus: self.estar,
             periodic: self.periodic,
             control,
@@ -299,6 +307,7 @@ fn named_failure(e: CompareError, args: &BemInput) -> Error {
             &[
                 ("topography", "heights"),
                 ("pixel_size", "pixel_size"),
+                ("pixel_size_y", "pixel_size_y"),
                 ("contact_modulus", "estar"),
             ],
         ),
@@ -309,6 +318,7 @@ fn named_failure(e: CompareError, args: &BemInput) -> Error {
         Step::Resistivity => error.renamed(&param("resistivity")),
         Step::Topography => match error.field() {
             Some("heights") => error.renamed(&param("scale")),
+            Some("pixel_size_y") => error.renamed(&param("pixel_size_y")),
             _ => error.renamed(&param("pixel_size")),
         },
         Step::Characterise | Step::Spectrum => error.renamed(&param("heights")),

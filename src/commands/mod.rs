@@ -39,6 +39,7 @@ pub mod bem;
 pub mod fn_;
 pub mod heating;
 pub mod law;
+pub mod measured;
 pub mod persson;
 pub mod punch;
 pub mod rough_sphere;

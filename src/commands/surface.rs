@@ -12,8 +12,10 @@ use std::path::Path;
 /// The input of [`characterise`] besides the map.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct SurfaceInput {
-    /// Pixel size (m), the same along x and y.
+    /// Pixel size (m) along x (a row), and along y unless `pixel_size_y`.
     pub pixel_size: f64,
+    /// Pixel size (m) along y (a column) when it differs from x.
+    pub pixel_size_y: Option<f64>,
     /// Treat the map as periodic: remove only the mean, wrap differences and
     /// summit neighbours around every edge.
     pub periodic: bool,
@@ -80,6 +82,13 @@ pub struct SurfaceJson {
     pub gw_from_moments: GwJson,
     /// Plasticity index with `--estar` and `--hardness`.
     pub plasticity_index: Option<f64>,
+    /// Where the map came from (a map read from a file).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub source: Option<super::measured::SourceJson>,
+    /// Warnings about the map: a `--pixel-size` that disagrees with the
+    /// file's, units that are probably wrong
+    /// ([`super::measured::unit_warnings`]).
+    pub warnings: Vec<String>,
 }
 
 /// Reads the height map in `path` by its extension (`.npy`, or a text
@@ -171,8 +180,10 @@ pub fn characterise(
     map: HeightMap,
     input: &SurfaceInput,
 ) -> CommandResult<(SurfaceJson, Characterisation)> {
-    let topo = Topography::new(map, input.pixel_size).map_err(|e| match e.field() {
+    let dy = input.pixel_size_y.unwrap_or(input.pixel_size);
+    let topo = Topography::with_pixels(map, input.pixel_size, dy).map_err(|e| match e.field() {
         Some("heights") => e.renamed(&param("scale")),
+        Some("pixel_size_y") => e.renamed(&param("pixel_size_y")),
         _ => e.renamed(&param("pixel_size")),
     })?;
     let c = topo
@@ -205,6 +216,8 @@ pub fn characterise(
             sigma_m: gw.sigma_m,
         },
         plasticity_index: psi,
+        source: None,
+        warnings: Vec::new(),
     };
     Ok((out, c))
 }

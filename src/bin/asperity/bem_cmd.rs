@@ -4,23 +4,44 @@
 
 use crate::CliError;
 use asperity::commands::bem::{bem, BemAdhesion, BemInput, BemTargets};
-use asperity::commands::surface::{map_name, read_map};
+use asperity::commands::measured::{
+    export, height_unit, plane_rms, read_measured, unit_warnings, ReadOptions,
+};
+use asperity::commands::surface::map_name;
 use asperity::commands::Vocabulary;
+use asperity::topography::Channel;
 use clap::Args;
 use std::path::PathBuf;
 
 /// Arguments of `asperity bem`.
 #[derive(Args, Debug)]
 pub struct BemArgs {
-    /// The rigid rough surface: NumPy `.npy` or a text matrix, as for
-    /// `asperity surface` (heights in the file's unit, see --scale).
+    /// The rigid rough surface: any map `asperity surface` reads (an
+    /// instrument file with its pixel sizes and unit, `.npy` or a text
+    /// matrix).
     map: PathBuf,
-    /// Pixel size (m), the same along x and y.
+    /// Pixel size (m), the same along x and y; needed for `.npy` and text
+    /// maps. Given for a file that has its own, it must agree to 1e-9 or it
+    /// wins with a warning.
     #[arg(long, allow_hyphen_values = true)]
-    pixel_size: f64,
-    /// Factor from the file's height unit to metres.
+    pixel_size: Option<f64>,
+    /// Unit of a `.npy` or text map's heights: nm, um or m (default m).
+    #[arg(long)]
+    height_unit: Option<String>,
+    /// Factor on the heights after their unit.
     #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     scale: f64,
+    /// The channel of a file with several, by name or index from 0 (default:
+    /// the height channel).
+    #[arg(long)]
+    channel: Option<String>,
+    /// Fill missing pixels (NaN or masked in the file) from their neighbours
+    /// instead of refusing the map.
+    #[arg(long)]
+    fill_missing: bool,
+    /// Also write the map read, in m, to this `.x3p` or `.npy` file.
+    #[arg(long)]
+    export: Option<PathBuf>,
     /// Contact modulus E* (Pa).
     #[arg(long, allow_hyphen_values = true)]
     estar: f64,
@@ -75,7 +96,8 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
         crate::list::parse_opt("--pressures", args.pressures.as_deref())?,
         crate::list::parse_opt("--gaps", args.gaps.as_deref())?,
     )?;
-    let mut input = BemInput::new(args.pixel_size, args.estar, targets);
+    // The pixel size is checked once the map says whether it has its own.
+    let mut input = BemInput::new(args.pixel_size.unwrap_or(1.0), args.estar, targets);
     input.periodic = args.periodic;
     input.adhesion = BemAdhesion::from_options(args.adhesion_energy, args.adhesion_range)?;
     input.gamma = args.gamma;
@@ -88,7 +110,33 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     let words = Vocabulary::cli().with("heights", map_name(&args.map, args.scale));
     let failed = |e| CliError::with(e, &words);
     input.validate().map_err(failed)?;
-    let map = read_map(&args.map, args.scale).map_err(failed)?;
-    let out = bem(&map, &input).map_err(failed)?;
+    let options = ReadOptions {
+        channel: args
+            .channel
+            .as_deref()
+            .map_or(Channel::Default, Channel::parse),
+        fill_missing: args.fill_missing,
+        height_unit: args
+            .height_unit
+            .as_deref()
+            .map(height_unit)
+            .transpose()
+            .map_err(failed)?,
+        scale: args.scale,
+    };
+    let read = read_measured(&args.map, &options).map_err(failed)?;
+    let (pixels, mut warnings) = read.pixels(args.pixel_size).map_err(failed)?;
+    if let Some(path) = &args.export {
+        export(path, &read.map, pixels).map_err(failed)?;
+    }
+    input.pixel_size = pixels.0;
+    input.pixel_size_y = Some(pixels.1);
+    input.periodic = args.periodic || read.periodic;
+    let rms = plane_rms(&read.map, pixels, input.periodic);
+    warnings.extend(unit_warnings(rms, pixels));
+    let mut out = bem(&read.map, &input).map_err(failed)?;
+    let mut words_first: Vec<String> = warnings.iter().map(|w| words.words_in(w)).collect();
+    words_first.append(&mut out.warnings);
+    out.warnings = words_first;
     crate::print_output(&out, &out.text(), args.json)
 }

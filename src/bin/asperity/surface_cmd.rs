@@ -3,27 +3,50 @@
 //! [`asperity::commands::surface`].
 
 use crate::CliError;
+use asperity::commands::measured::{
+    export, height_unit, read_measured, unit_warnings, ReadOptions,
+};
 use asperity::commands::surface::{
-    characterise, map_name, read_map, write_outputs, SurfaceInput, SurfaceJson,
+    characterise, map_name, write_outputs, SurfaceInput, SurfaceJson,
 };
 use asperity::commands::Vocabulary;
+use asperity::topography::Channel;
 use clap::Args;
 use std::path::PathBuf;
 
 /// Arguments of `asperity surface`.
 #[derive(Args, Debug)]
 pub struct SurfaceArgs {
-    /// The height map: NumPy `.npy` (2-D float64/float32, C order) or a text
-    /// matrix (`.txt`, `.csv`, `.asc`; whitespace or comma separated).
+    /// The height map: an instrument file (`.x3p`, `.sdf`, `.gwy`, `.sur`,
+    /// `.di`/`.spm`/`.001`, `.ibw`, `.opd`, `.opdx`, `.nc`, `.frt`: heights,
+    /// pixel sizes and unit from the file), NumPy `.npy` (2-D float64/float32,
+    /// C order) or a text matrix (`.txt`, `.csv`, `.asc`).
     file: PathBuf,
-    /// Pixel size (m), the same along x and y.
+    /// Pixel size (m), the same along x and y; needed for `.npy` and text
+    /// maps. Given for a file that has its own, it must agree to 1e-9 or it
+    /// wins with a warning.
     #[arg(long, allow_hyphen_values = true)]
-    pixel_size: f64,
-    /// Factor from the file's height unit to metres (e.g. 1e-9 for nm).
+    pixel_size: Option<f64>,
+    /// Unit of a `.npy` or text map's heights: nm, um or m (default m).
+    #[arg(long)]
+    height_unit: Option<String>,
+    /// Factor on the heights after their unit (e.g. 1e-9 for nm).
     #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     scale: f64,
+    /// The channel of a file with several, by name or index from 0 (default:
+    /// the height channel).
+    #[arg(long)]
+    channel: Option<String>,
+    /// Fill missing pixels (NaN or masked in the file) from their neighbours
+    /// instead of refusing the map.
+    #[arg(long)]
+    fill_missing: bool,
+    /// Also write the map read, in m, to this `.x3p` (with its pixel sizes)
+    /// or `.npy` file.
+    #[arg(long)]
+    export: Option<PathBuf>,
     /// Treat the map as periodic: remove only the mean, wrap differences and
-    /// summit neighbours around every edge.
+    /// summit neighbours around every edge (also when the file says so).
     #[arg(long)]
     periodic: bool,
     /// Contact modulus E* (Pa), with --hardness for the plasticity index.
@@ -45,15 +68,37 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
     // The map's content is named by its file (and the scale).
     let words = Vocabulary::cli().with("heights", map_name(&args.file, args.scale));
     let failed = |e| CliError::with(e, &words);
-    asperity::error::positive("{pixel_size}", args.pixel_size).map_err(failed)?;
-    let map = read_map(&args.file, args.scale).map_err(failed)?;
+    let options = ReadOptions {
+        channel: args
+            .channel
+            .as_deref()
+            .map_or(Channel::Default, Channel::parse),
+        fill_missing: args.fill_missing,
+        height_unit: args
+            .height_unit
+            .as_deref()
+            .map(height_unit)
+            .transpose()
+            .map_err(failed)?,
+        scale: args.scale,
+    };
+    let read = read_measured(&args.file, &options).map_err(failed)?;
+    let (pixels, mut warnings) = read.pixels(args.pixel_size).map_err(failed)?;
+    if let Some(path) = &args.export {
+        export(path, &read.map, pixels).map_err(failed)?;
+    }
     let input = SurfaceInput {
-        pixel_size: args.pixel_size,
-        periodic: args.periodic,
+        pixel_size: pixels.0,
+        pixel_size_y: Some(pixels.1),
+        periodic: args.periodic || read.periodic,
         estar: args.estar,
         hardness: args.hardness,
     };
-    let (out, c) = characterise(map, &input).map_err(failed)?;
+    let source = read.source(pixels);
+    let (mut out, c) = characterise(read.map, &input).map_err(failed)?;
+    out.source = Some(source);
+    warnings.extend(unit_warnings(out.rms_height_m, pixels));
+    out.warnings = warnings.iter().map(|w| words.words_in(w)).collect();
     if let Some(dir) = &args.out {
         write_outputs(dir, &out, &c).map_err(failed)?;
     }
@@ -68,6 +113,17 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
 fn print_table(o: &SurfaceJson) -> crate::CliResult {
     let opt = |x: Option<f64>| x.map_or("none".to_string(), |v| format!("{v:.6e}"));
     crate::outln!("map                        {} x {} pixels", o.rows, o.cols);
+    if let Some(s) = &o.source {
+        crate::outln!(
+            "source                     {} channel '{}' (unit {}), pixels {:.6e} x {:.6e} m, {} missing",
+            s.format,
+            s.channel,
+            if s.unit.is_empty() { "none" } else { &s.unit },
+            s.pixel_size_m[0],
+            s.pixel_size_m[1],
+            s.missing
+        );
+    }
     crate::outln!("rms height                 {:.6e} m", o.rms_height_m);
     crate::outln!(
         "m0, m2, m4                 {:.6e} m^2, {:.6e}, {:.6e} 1/m^2",
@@ -112,5 +168,8 @@ fn print_table(o: &SurfaceJson) -> crate::CliResult {
                 "{p:.6}"
             ))
     );
+    for w in &o.warnings {
+        crate::outln!("warning: {w}");
+    }
     Ok(())
 }
