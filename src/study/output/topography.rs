@@ -18,8 +18,11 @@ pub struct TopographySummary {
     pub rows: usize,
     /// Columns.
     pub cols: usize,
-    /// Pixel size (m).
+    /// Pixel size (m) along x (a row).
     pub pixel_size_m: f64,
+    /// Pixel size (m) along y (a column; equal to `pixel_size_m` for
+    /// square pixels).
+    pub pixel_size_y_m: f64,
     /// Whether periodic rules were used.
     pub periodic: bool,
     /// RMS height after the mean plane is removed (m).
@@ -128,6 +131,7 @@ pub fn summary(plan: &Plan, results: &Results) -> Option<TopographySummary> {
         rows: c.rows,
         cols: c.cols,
         pixel_size_m: c.pixel_size_m,
+        pixel_size_y_m: c.pixel_size_y_m,
         periodic: c.periodic,
         rms_height_m: c.moments.rms_height(),
         m0: c.moments.m0,

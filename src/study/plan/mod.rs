@@ -56,7 +56,7 @@ pub use sphere::SpherePlan;
 pub use topography::TopographyPlan;
 
 use crate::electrical::{Heating, ResistanceObservables, Switch};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel, RoughSurface};
 use crate::heights::HeightDistribution;
 use crate::law::interpolated::InterpolatedLaw;
@@ -167,6 +167,19 @@ pub struct Plan {
     pub sphere: Option<SpherePlan>,
 }
 
+/// A refusal with the measured map's warnings appended (a height unit
+/// that is probably wrong explains most refusals of a measured scene).
+fn with_map_warnings(e: Error, inputs: &Inputs) -> Error {
+    let warnings = inputs.map.as_ref().map_or(&[][..], |r| &r.warnings[..]);
+    match e {
+        Error::Invalid { name, reason } if !warnings.is_empty() => Error::Invalid {
+            name,
+            reason: format!("{reason}; note: {}", warnings.join("; ")),
+        },
+        other => other,
+    }
+}
+
 impl Plan {
     /// Gathers the scene's expensive inputs ([`Inputs::gather`]: a measured
     /// map is read, a `calibrated` law's calibration taken from the cache
@@ -202,6 +215,7 @@ impl Plan {
         Plan::build(scene, mode, inputs)
             .map_err(|e| crate::study::scene::map_derived(scene, e))
             .and_then(validity::checked)
+            .map_err(|e| with_map_warnings(e, inputs))
     }
 
     /// What `asperity run --plan` shows, without running anything

@@ -21,6 +21,7 @@ use crate::axisym::ProfileKind;
 use crate::electrical::{Interaction, Spreading};
 use crate::heights::DistributionKind;
 use crate::named::Named;
+use crate::topography::units::HeightUnit;
 use schemars::generate::SchemaSettings;
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde_json::Value;
@@ -167,6 +168,10 @@ named_schema!(
 named_schema!(
     SummitSource,
     "Which model of a measured map the study uses."
+);
+named_schema!(
+    HeightUnit,
+    "The unit of a .npy or text map's heights, which the file does not give."
 );
 
 impl JsonSchema for LawName {

@@ -23,6 +23,7 @@ use crate::electrical::heating::{
 use crate::electrical::{Conductor, Interaction, Spreading};
 use crate::heights::DistributionKind;
 use crate::montecarlo::MAX_SUMMITS;
+use crate::topography::units::HeightUnit;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -361,23 +362,40 @@ pub struct SurfaceSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(extend("x-unit" = "m"), length(min = 2))]
     pub heights: Option<Vec<f64>>,
-    /// A measured height map (`.npy`, or a text matrix `.txt`/`.csv`/`.asc`),
-    /// path relative to the scene file's directory. The summits come from
-    /// the map (`docs/surface.md`, "Scenes from measurements"): `density`,
-    /// `radius` and `sigma` must then not be given, and `distribution`
-    /// must stay `"gaussian"`.
+    /// A measured height map, path relative to the scene file's directory:
+    /// an instrument file (`.x3p`, `.sdf`, `.gwy`, `.sur`, `.di`/`.spm`,
+    /// `.ibw`, `.opd`, `.opdx`, `.nc`, `.frt`: heights, pixel sizes and unit
+    /// from the file, its height channel), `.npy` or a text matrix
+    /// (`.txt`/`.csv`/`.asc`). The summits come from the map
+    /// (`docs/surface.md`, "Scenes from measurements"): `density`, `radius`
+    /// and `sigma` must then not be given, and `distribution` must stay
+    /// `"gaussian"`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub topography: Option<String>,
-    /// Pixel size of the map (m), > 0; required with `topography`, only
-    /// with it.
+    /// Pixel size of the map (m), > 0, the same along x and y; required
+    /// with a `.npy` or text `topography`, only with `topography`. For a
+    /// file that gives its own it may be left out; given anyway, it must
+    /// agree with the file's to 1e-9 (relative) or it wins with a warning.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(extend("x-unit" = "m", "exclusiveMinimum" = 0.0))]
     pub pixel_size: Option<f64>,
-    /// Factor from the map's height unit to metres (e.g. `1e-9` for nm),
-    /// > 0; default 1. Only with `topography`.
+    /// Unit of a `.npy` or text map's heights: `"nm"`, `"um"` or `"m"`
+    /// (default `"m"`); not for the instrument files, which give their own.
+    /// Only with `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("default" = "m"))]
+    pub height_unit: Option<HeightUnit>,
+    /// Factor on the map's heights after `height_unit` (e.g. `1e-9` for
+    /// nm), > 0; default 1. Only with `topography`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0, "default" = 1.0))]
     pub height_scale: Option<f64>,
+    /// Fill the map's missing pixels (NaN or masked in the file) from their
+    /// neighbours instead of refusing the map; default false. Only with
+    /// `topography`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("default" = false))]
+    pub fill_missing: Option<bool>,
     /// Treat the map as periodic (remove only the mean, wrap neighbours);
     /// default false. Only with `topography`.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -1,6 +1,6 @@
 //! `[surface] topography = "map.npy"`: scenes from a measured height map.
 //!
-//! A scene with a topography gives the map and its `pixel_size` instead of
+//! A scene with a topography gives the map (and its `pixel_size`) instead of
 //! the summit statistics; [`resolve`] reads the map (path relative to the
 //! scene file's directory), characterises it
 //! ([`Topography::characterise`]) and turns the scene into an ordinary one
@@ -16,11 +16,20 @@
 //! - `summits = "moments"`: Gaussian heights with McCool's GW parameters from
 //!   the measured moments ([`crate::surface::GwParameters`]).
 //!
-//! `nominal_area` defaults to the map's area (`rows cols pixel_size^2`).
+//! `nominal_area` defaults to the map's area (`rows cols dx dy`).
+//!
+//! The map is any format of [`crate::topography`]: an instrument file gives
+//! its heights in m and its pixel sizes (`pixel_size` may then be left out;
+//! given, it must agree to [`crate::topography::PIXEL_AGREEMENT`] or it wins
+//! with a warning); a `.npy` or text map takes `height_unit` and needs
+//! `pixel_size`. Missing pixels are refused unless `fill_missing`.
 
 use super::schema::{Scene, SurfaceSpec};
 use crate::error::{positive, Error, Result};
-use crate::surface::{npy, text, Characterisation, HeightMap, Topography};
+use crate::named::Named;
+use crate::surface::{Characterisation, HeightMap, Topography};
+use crate::topography::units::HeightUnit;
+use crate::topography::{self, Channel, Format};
 use std::path::{Path, PathBuf};
 
 /// The scene field every error about the map names.
@@ -33,10 +42,14 @@ pub use super::summit_source::SummitSource;
 pub struct TopographySpec {
     /// The map's path as written in the scene.
     pub path: String,
-    /// Pixel size (m).
-    pub pixel_size: f64,
-    /// Factor from the map's unit to metres (default 1).
+    /// Pixel size (m), when the scene gives one.
+    pub pixel_size: Option<f64>,
+    /// Unit of a `.npy` or text map's heights (default m).
+    pub height_unit: Option<HeightUnit>,
+    /// Factor on the heights after their unit (default 1).
     pub height_scale: f64,
+    /// Fill missing pixels instead of refusing them (default false).
+    pub fill_missing: bool,
     /// Periodic rules (default false).
     pub periodic: bool,
     /// The model the study uses (default measured).
@@ -55,16 +68,17 @@ impl TopographySpec {
         let Some(path) = &s.topography else {
             return Ok(None);
         };
-        let pixel_size = s.pixel_size.ok_or_else(|| {
-            Error::invalid("surface.pixel_size", "required with surface.topography")
-        })?;
-        positive("surface.pixel_size", pixel_size)?;
+        if let Some(p) = s.pixel_size {
+            positive("surface.pixel_size", p)?;
+        }
         let height_scale = s.height_scale.unwrap_or(1.0);
         positive("surface.height_scale", height_scale)?;
         Ok(Some(TopographySpec {
             path: path.clone(),
-            pixel_size,
+            pixel_size: s.pixel_size,
+            height_unit: s.height_unit,
             height_scale,
+            fill_missing: s.fill_missing.unwrap_or(false),
             periodic: s.periodic.unwrap_or(false),
             summits: s.summits.unwrap_or(SummitSource::Measured),
             compare: s.compare.unwrap_or(false),
@@ -106,7 +120,9 @@ pub(super) fn validate_surface(s: &SurfaceSpec, sphere: bool) -> Result<()> {
     if s.topography.is_none() {
         for (name, given) in [
             ("surface.pixel_size", s.pixel_size.is_some()),
+            ("surface.height_unit", s.height_unit.is_some()),
             ("surface.height_scale", s.height_scale.is_some()),
+            ("surface.fill_missing", s.fill_missing.is_some()),
             ("surface.periodic", s.periodic.is_some()),
             ("surface.summits", s.summits.is_some()),
             ("surface.compare", s.compare.is_some()),
@@ -156,34 +172,90 @@ pub(super) fn validate_surface(s: &SurfaceSpec, sphere: bool) -> Result<()> {
     TopographySpec::of(s).map(|_| ())
 }
 
-/// Reads a height map by its extension: `.npy`, or a text matrix (`.txt`,
-/// `.csv`, `.asc`).
+/// Reads a height map by its extension (any format of
+/// [`crate::topography`]), its default channel; refuses missing pixels.
 ///
 /// # Errors
 /// [`Error::Invalid`] naming `surface.topography`, with the file and the
-/// reason (unreadable, unknown extension, bad content).
+/// reason (unreadable, unknown extension, bad content with the format,
+/// missing pixels).
 pub fn read_map(path: &Path) -> Result<HeightMap> {
-    let shown = path.display();
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .unwrap_or_default();
-    crate::study::memory::check_map(path).map_err(|e| e.renamed(&format!("{FIELD} = {shown}")))?;
-    let bytes = std::fs::read(path)
-        .map_err(|e| Error::invalid(FIELD, format!("{shown}: cannot read: {e}")))?;
-    let map = match ext.as_str() {
-        "npy" => npy::parse(&bytes),
-        "txt" | "csv" | "asc" => match std::str::from_utf8(&bytes) {
-            Ok(t) => text::parse(t),
-            Err(_) => Err(Error::invalid(FIELD, "not UTF-8 text")),
-        },
-        _ => Err(Error::invalid(
-            FIELD,
-            format!("unknown extension '{ext}': expected .npy, .txt, .csv or .asc"),
-        )),
+    let spec = TopographySpec {
+        path: path.display().to_string(),
+        pixel_size: None,
+        height_unit: None,
+        height_scale: 1.0,
+        periodic: false,
+        fill_missing: false,
+        summits: SummitSource::Measured,
+        compare: false,
     };
-    map.map_err(|e| Error::invalid(FIELD, format!("{shown}: {e}")))
+    read_measured(path, &spec).map(|m| m.map)
+}
+
+/// A map read for a scene.
+#[derive(Debug, Clone)]
+pub struct SceneMap {
+    /// The heights (m), complete.
+    pub map: HeightMap,
+    /// The file's format.
+    pub format: Format,
+    /// The pixel sizes the file gives (m), if any.
+    pub file_pixels: Option<(f64, f64)>,
+    /// Whether the file says the map is periodic.
+    pub periodic: bool,
+}
+
+/// Reads the map at `path` as `spec` says (unit, scale, missing pixels).
+///
+/// # Errors
+/// [`Error::Invalid`] naming `surface.topography` (with the file), or
+/// `surface.height_unit` given for an instrument file.
+fn read_measured(path: &Path, spec: &TopographySpec) -> Result<SceneMap> {
+    let shown = path.display().to_string();
+    let format = topography::format_of(path).map_err(|e| Error::invalid(FIELD, e.to_string()))?;
+    if spec.height_unit.is_some() && !matches!(format, Format::Npy | Format::Text) {
+        return Err(Error::invalid(
+            "surface.height_unit",
+            format!(
+                "only for .npy and text maps: {shown} is a {} file, which gives its own unit",
+                format.describe()
+            ),
+        ));
+    }
+    let mut m = topography::read(path, &Channel::Default).map_err(|e| match e {
+        Error::OutOfMemory { .. } => e.renamed(&format!("{FIELD} = {shown}")),
+        _ if e.field() == Some(shown.as_str()) => Error::invalid(FIELD, e.to_string()),
+        _ => Error::invalid(FIELD, format!("{shown}: {e}")),
+    })?;
+    let missing = m.missing();
+    if missing > 0 {
+        if !spec.fill_missing {
+            return Err(Error::invalid(
+                FIELD,
+                format!(
+                    "{shown}: {missing} of {} pixels are missing (NaN or masked in the file): \
+                     refused, or filled from their neighbours with surface.fill_missing = true",
+                    m.heights.len()
+                ),
+            ));
+        }
+        m.fill_missing()
+            .map_err(|e| Error::invalid(FIELD, format!("{shown}: {e}")))?;
+    }
+    let (file_pixels, periodic) = (m.pixel_size, m.periodic);
+    let to_m = spec.height_unit.map_or(1.0, HeightUnit::metres);
+    let map = m
+        .into_map()
+        .map_err(|e| Error::invalid(FIELD, format!("{shown}: {e}")))?
+        .scaled(to_m * spec.height_scale)
+        .map_err(|e| e.renamed("surface.height_scale"))?;
+    Ok(SceneMap {
+        map,
+        format,
+        file_pixels,
+        periodic,
+    })
 }
 
 /// A scene's topography, read and characterised.
@@ -198,6 +270,9 @@ pub struct Resolved {
     pub file: PathBuf,
     /// What the map gave.
     pub characterisation: Characterisation,
+    /// Warnings about the map: a `pixel_size` that disagrees with the
+    /// file's, units that are probably wrong.
+    pub warnings: Vec<String>,
 }
 
 /// Reads and characterises the scene's map (its path relative to
@@ -214,16 +289,30 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
         return Ok(None);
     };
     let file = base_dir.join(&spec.path);
-    let map = read_map(&file)?
-        .scaled(spec.height_scale)
-        .map_err(|e| e.renamed("surface.height_scale"))?;
-    let topo = Topography::new(map, spec.pixel_size).map_err(|e| match e.field() {
+    let read = read_measured(&file, &spec)?;
+    let ((dx, dy), mut warnings) = topography::pixel_sizes(
+        read.file_pixels,
+        spec.pixel_size,
+        "surface.pixel_size",
+        read.format,
+    )?;
+    let periodic = spec.periodic || read.periodic;
+    let topo = Topography::with_pixels(read.map, dx, dy).map_err(|e| match e.field() {
         Some("heights") => e.renamed("surface.height_scale"),
         _ => e.renamed("surface.pixel_size"),
     })?;
     let c = topo
-        .characterise(spec.periodic)
+        .characterise(periodic)
         .map_err(|e| Error::invalid(FIELD, format!("{}: {e}", file.display())))?;
+    warnings.extend(topography::unit_warnings(
+        c.moments.rms_height(),
+        (dx, dy),
+        &format!(
+            "surface.height_unit = \"{}\"",
+            HeightUnit::names().join("\" | \"")
+        ),
+        "surface.height_scale",
+    ));
     if c.stats.count < 2 {
         return Err(Error::invalid(
             FIELD,
@@ -266,7 +355,9 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
     }
     s.topography = None;
     s.pixel_size = None;
+    s.height_unit = None;
     s.height_scale = None;
+    s.fill_missing = None;
     s.periodic = None;
     s.summits = None;
     s.compare = None;
@@ -278,5 +369,6 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
         spec,
         file,
         characterisation: c,
+        warnings,
     }))
 }
