@@ -53,6 +53,9 @@ fn json_has_exactly_the_contract_keys() {
         "summits",
         "gw_from_moments",
         "plasticity_index",
+        // Where the map came from, and warnings about its units.
+        "source",
+        "warnings",
     ];
     top.sort_unstable();
     assert_eq!(keys(&v), top);
@@ -287,6 +290,7 @@ fn run_on_the_measured_topography_scene_reports_both_models() {
             "other",
             "periodic",
             "pixel_size_m",
+            "pixel_size_y_m",
             "rms_height_m",
             "rows",
             "summits"

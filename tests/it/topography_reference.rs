@@ -3,14 +3,17 @@
 //! shape, pixel sizes to 1e-12 relative, missing pixels in the same places,
 //! heights to 1e-12 of the map's RMS (64 sampled pixels, the extrema, the
 //! mean and 4 weighted sums over every pixel), and the RMS height after the
-//! least-squares mean plane.
+//! least-squares mean plane (`asperity surface`'s `rms_height_m`, through
+//! the command's reader and characterisation).
 #![cfg(feature = "study")]
 
+use asperity::commands::measured::{read_measured, ReadOptions};
+use asperity::commands::surface::{characterise, SurfaceInput};
 use asperity::topography::{read, Channel, Measured};
 use serde_json::Value;
 use std::path::Path;
 
-const DIR: &str = "tests/data/topography";
+const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/topography");
 
 fn reference() -> Value {
     let text = std::fs::read_to_string(format!("{DIR}/reference.json")).unwrap();
@@ -169,4 +172,49 @@ fn every_sample_reads_as_surface_topography_reads_it() {
         report.push(format!("{name}: {worst:.1e}"));
     }
     eprintln!("worst height error / RMS: {}", report.join(", "));
+}
+
+/// `rms_height_m` of `asperity surface FILE` (missing pixels filled, the
+/// file's pixel sizes, 1e-7 m for the one file without) against the RMS
+/// after the least-squares plane that `reference.py` computes with numpy.
+#[test]
+fn surface_rms_height_is_the_rms_after_the_mean_plane() {
+    let r = reference();
+    let mut checked = 0;
+    for s in r["samples"].as_array().unwrap() {
+        let name = s["file"].as_str().unwrap();
+        let Some(want) = s["plane_rms_m"].as_f64() else {
+            continue; // a single profile: no plane
+        };
+        let options = ReadOptions {
+            fill_missing: true,
+            ..ReadOptions::default()
+        };
+        let m = read_measured(Path::new(&format!("{DIR}/{name}")), &options)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let (pixels, _) = m.pixels(m.file_pixels.is_none().then_some(1e-7)).unwrap();
+        let input = SurfaceInput {
+            pixel_size: pixels.0,
+            pixel_size_y: Some(pixels.1),
+            ..SurfaceInput::default()
+        };
+        let std = f(&s["std_m"]);
+        let out = match characterise(m.map, &input) {
+            Ok((out, _)) => out,
+            // A plane (nc-1.nc): numpy's residual is roundoff too.
+            Err(e) if e.to_string().contains("flat") && want < 1e-12 * std => {
+                checked += 1;
+                continue;
+            }
+            Err(e) => panic!("{name}: {e}"),
+        };
+        let err = (out.rms_height_m - want).abs();
+        assert!(
+            err <= 1e-12 * std.max(want),
+            "{name}: rms {:e} vs {want:e} (std {std:e})",
+            out.rms_height_m
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 22);
 }
