@@ -348,12 +348,7 @@ pub(crate) fn grid(rows: usize, cols: usize) -> Parsed<usize> {
 
 /// `rows x cols` values of `size` bytes from `data` (exactly that many
 /// bytes or more): their bytes.
-pub(crate) fn raster<'a>(
-    data: &'a [u8],
-    rows: usize,
-    cols: usize,
-    size: usize,
-) -> Parsed<&'a [u8]> {
+pub(crate) fn raster(data: &[u8], rows: usize, cols: usize, size: usize) -> Parsed<&[u8]> {
     let n = grid(rows, cols)?;
     let want = n
         .checked_mul(size)

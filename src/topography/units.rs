@@ -27,17 +27,19 @@ pub fn metres_per(unit: &str, ampere_a: bool) -> Option<f64> {
 /// The canonical spelling of a length unit (`um` for every spelling of
 /// micrometres), or the unit as given when it is no length unit.
 pub fn canonical(unit: &str, ampere_a: bool) -> String {
-    match metres_per(unit, ampere_a) {
-        Some(f) if f == 1.0 => "m".into(),
-        Some(f) if f == 1e3 => "km".into(),
-        Some(f) if f == 1e-2 => "cm".into(),
-        Some(f) if f == 1e-3 => "mm".into(),
-        Some(f) if f == 1e-6 => "um".into(),
-        Some(f) if f == 1e-9 => "nm".into(),
-        Some(f) if f == 1e-10 => "A".into(),
-        Some(f) if f == 1e-12 => "pm".into(),
-        _ => unit.trim().to_string(),
-    }
+    let names = [
+        (1.0, "m"),
+        (1e3, "km"),
+        (1e-2, "cm"),
+        (1e-3, "mm"),
+        (1e-6, "um"),
+        (1e-9, "nm"),
+        (1e-10, "A"),
+        (1e-12, "pm"),
+    ];
+    metres_per(unit, ampere_a)
+        .and_then(|f| names.iter().find(|(m, _)| *m == f))
+        .map_or_else(|| unit.trim().to_string(), |(_, n)| (*n).to_string())
 }
 
 /// The height unit of a `.npy` or text map, which carries none

@@ -304,7 +304,10 @@ pub fn to_x3p(
     let io = |e: &dyn std::fmt::Display| crate::Error::io("X3P archive", e);
     let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
     let opts = zip::write::SimpleFileOptions::default()
-        .compression_method(zip::CompressionMethod::Deflated)
+        // Stored: reading is then a copy (about the cost of a .npy), where
+        // inflating float64 heights, which barely compress, costs 3x
+        // (docs/performance.md, "Reading measured maps").
+        .compression_method(zip::CompressionMethod::Stored)
         .large_file(data.len() >= u32::MAX as usize);
     let mut put = |name: &str, b: &[u8]| -> crate::Result<()> {
         w.start_file(name, opts).map_err(|e| io(&e))?;

@@ -294,7 +294,7 @@ impl Plan {
     /// approach ([`LoadingModel::separation_at_load`]: the load met to `rtol`).
     ///
     /// # Errors
-    /// [`Error::Invalid`](crate::Error::Invalid) naming `program.max_load` when the load is not
+    /// [`Error::Invalid`] naming `program.max_load` when the load is not
     /// reached.
     pub fn closest_separation(&self, model: &impl LoadingModel) -> Result<f64> {
         match self.target {
