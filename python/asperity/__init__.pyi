@@ -9,7 +9,7 @@ RuntimeError. The full documentation is in each function's docstring.
 """
 
 import os
-from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -110,9 +110,23 @@ def surface(
     periodic: bool = False,
     estar: Optional[float] = None,
     hardness: Optional[float] = None,
+    pixel_size_y: Optional[float] = None,
 ) -> Dict[str, Any]:
-    """`asperity surface --json` on a 2-D height map (m) with square pixels
-    of `pixel_size` (m): moments, summits, GW parameters, plasticity index."""
+    """`asperity surface --json` on a 2-D height map (m) with pixels of
+    `pixel_size` (m) along x and `pixel_size_y` along y (default: square):
+    moments, summits, GW parameters, plasticity index."""
+
+def read_topography(
+    path: Union[str, "os.PathLike[str]"],
+    channel: Union[str, int, None] = None,
+    height_unit: Optional[str] = None,
+    fill_missing: bool = False,
+) -> Tuple[np.ndarray, Dict[str, Any]]:
+    """Read a measured map (AFM, profilometer, interferometer, exchange
+    formats, `.npy`, text): 2-D heights in m (NaN where missing unless
+    `fill_missing`) and a dict of `format`, `channel`, `unit`,
+    `pixel_size_m` ((dx, dy) m or None), `rows`, `cols`, `missing`,
+    `periodic`."""
 
 def shape(
     profile: str,

@@ -177,12 +177,16 @@ pub fn spots_py(
 ///     A real, finite 2-D array (rows along y, columns along x) of heights
 ///     in m, at least 3 x 3.
 /// pixel_size : float
-///     Pixel size (m), > 0, the same along x and y.
+///     Pixel size (m), > 0, along x (a row), and along y unless
+///     ``pixel_size_y``.
 /// periodic : bool
 ///     Treat the map as periodic (remove only the mean, wrap neighbours).
 /// estar, hardness : float, optional
 ///     Contact modulus E* and hardness H (Pa), together: the plasticity
 ///     index (E*/H) sqrt(sigma/R).
+/// pixel_size_y : float, optional
+///     Pixel size (m), > 0, along y (a column) when it differs from x
+///     (``read_topography``'s ``pixel_size_m``).
 ///
 /// Returns
 /// -------
@@ -198,7 +202,7 @@ pub fn spots_py(
 /// >>> h = numpy.load("examples/data/measured-topography.npy")
 /// >>> asperity.surface(h, pixel_size=50e-9)["rms_height_m"]
 #[pyfunction]
-#[pyo3(name = "surface", signature = (heights, pixel_size, periodic = false, estar = None, hardness = None))]
+#[pyo3(name = "surface", signature = (heights, pixel_size, periodic = false, estar = None, hardness = None, pixel_size_y = None))]
 pub fn surface_py(
     py: Python<'_>,
     heights: &Bound<'_, PyAny>,
@@ -206,9 +210,11 @@ pub fn surface_py(
     periodic: bool,
     estar: Option<f64>,
     hardness: Option<f64>,
+    pixel_size_y: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
     let map = arrays::height_map(heights, "heights")?;
     let input = cmd::surface::SurfaceInput {
+        pixel_size_y,
         pixel_size,
         periodic,
         estar,
@@ -228,6 +234,83 @@ pub fn surface_py(
         cmd::surface::characterise(map, &input).map(|(out, _)| out)
     })?;
     serialised(py, &out, true)
+}
+
+/// Read a measured map from an instrument or exchange file: AFM,
+/// profilometer and interferometer formats with their pixel sizes and
+/// units (``.x3p``, ``.sdf``, ``.gwy``, ``.sur``, ``.di``/``.spm``,
+/// ``.ibw``, ``.opd``, ``.opdx``, ``.nc``, ``.frt``), ``.npy`` or a text
+/// matrix.
+///
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The file; its format by its extension.
+/// channel : str or int, optional
+///     The channel of a file with several, by name or index from 0
+///     (default: the height channel).
+/// height_unit : str, optional
+///     ``"nm"``, ``"um"`` or ``"m"``: the unit of a ``.npy`` or text map's
+///     heights (default m); not for the instrument formats, which give
+///     their own.
+/// fill_missing : bool
+///     Fill missing pixels (NaN or masked in the file) from their
+///     neighbours; by default they stay NaN (counted in ``missing``).
+///
+/// Returns
+/// -------
+/// tuple
+///     ``(heights, meta)``: a 2-D float64 array of heights in m (rows along
+///     y, columns along x) and a dict: ``format``, ``channel``, ``unit``
+///     (the instrument's height unit), ``pixel_size_m`` (``(dx, dy)`` in m,
+///     or None when the file has none), ``rows``, ``cols``, ``missing``,
+///     ``periodic``.
+///
+/// Examples
+/// --------
+/// >>> h, meta = asperity.read_topography("tests/data/topography/sdf-1.sdf")
+/// >>> meta["pixel_size_m"]
+/// (1e-06, 1e-06)
+#[pyfunction]
+#[pyo3(name = "read_topography", signature = (path, channel = None, height_unit = None, fill_missing = false))]
+pub fn read_topography_py(
+    py: Python<'_>,
+    path: PathBuf,
+    channel: Option<&Bound<'_, PyAny>>,
+    height_unit: Option<&str>,
+    fill_missing: bool,
+) -> PyResult<Py<PyAny>> {
+    use asperity::topography::Channel;
+    let channel = match channel {
+        None => Channel::Default,
+        Some(c) => match c.extract::<usize>() {
+            Ok(i) => Channel::Index(i),
+            Err(_) => Channel::Name(c.extract::<String>().map_err(|_| {
+                pyo3::exceptions::PyTypeError::new_err(
+                    "channel must be a str (a name) or an int (an index from 0)",
+                )
+            })?),
+        },
+    };
+    let unit = height_unit
+        .map(cmd::measured::height_unit)
+        .transpose()
+        .map_err(|e| guard::py_err(e, &words()))?;
+    let (heights, meta) = guard::long(py, "read_topography", &words(), || {
+        cmd::measured::read_topography(&path, &channel, unit, fill_missing)
+    })?;
+    let shape = [meta.rows, meta.cols];
+    let array = PyArray::from_vec(py, heights).reshape(shape)?.into_any();
+    let d = pyo3::types::PyDict::new(py);
+    d.set_item("format", meta.format)?;
+    d.set_item("channel", &meta.channel)?;
+    d.set_item("unit", &meta.unit)?;
+    d.set_item("pixel_size_m", meta.pixel_size_m.map(|[dx, dy]| (dx, dy)))?;
+    d.set_item("rows", meta.rows)?;
+    d.set_item("cols", meta.cols)?;
+    d.set_item("missing", meta.missing)?;
+    d.set_item("periodic", meta.periodic)?;
+    Ok((array, d).into_pyobject(py)?.into_any().unbind())
 }
 
 /// The Greenwood–Williamson integrals F_n(h) = int_h^inf (s - h)^n phi(s) ds

@@ -28,6 +28,7 @@ fn _asperity(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::heating_py, m)?)?;
     m.add_function(wrap_pyfunction!(commands::spots_py, m)?)?;
     m.add_function(wrap_pyfunction!(commands::surface_py, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::read_topography_py, m)?)?;
     m.add_function(wrap_pyfunction!(commands::fn_values, m)?)?;
     m.add_function(wrap_pyfunction!(commands::shape_py, m)?)?;
     m.add_function(wrap_pyfunction!(commands::punch_py, m)?)?;
