@@ -56,9 +56,7 @@ impl Plan {
         let mut warnings =
             plasticity_decision(plasticity, &surface, &contact, &law, &mut decisions)?;
         warnings.extend(calibration.and_then(|c| c.note.clone()));
-        if let Some(r) = resolved {
-            warnings.extend(r.warnings.iter().cloned());
-        }
+        warnings.extend(resolved.iter().flat_map(|r| r.warnings.iter().cloned()));
         let model = model.with_accuracy(accuracy);
         let (target, start, listed) = program(scene, mode, &budget, &model, &mut decisions)?;
         let tabulation = tabulation(&law, &model, start, target, &budget, mode);
