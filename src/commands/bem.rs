@@ -84,7 +84,7 @@ pub struct BemInput {
     /// Pixel size (m) along x (a row), and along y unless `pixel_size_y`.
     pub pixel_size: f64,
     /// Pixel size (m) along y (a column) when it differs from x
-    /// (rectangular pixels: [`Problem::with_pixels`]).
+    /// (rectangular pixels: [`crate::bem::Problem::with_pixels`]).
     pub pixel_size_y: Option<f64>,
     /// Contact modulus E* (Pa).
     pub estar: f64,

@@ -202,8 +202,8 @@ impl GwOnMoments {
     /// The state at mean pressure `p > 0` (Pa): the separation where the
     /// load reaches `p A_n` ([`LoadingModel::separation_at_load`], to a
     /// few ulps of the separation, the load met to 1e-12), searched from
-    /// the interaction onset or up to [`START_STRIDES`] strides of
-    /// [`START_STRIDE`] `sigma` lower where the load there is still below
+    /// the interaction onset or up to `START_STRIDES` (4) strides of
+    /// `START_STRIDE` (40) `sigma` lower where the load there is still below
     /// the target.
     ///
     /// # Errors
