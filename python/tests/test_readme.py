@@ -14,7 +14,7 @@ OUTPUTS = ["load_area.png", "resistance_force.png"]
 
 
 def test_readme_blocks_run_from_the_repository_root():
-    assert len(BLOCKS) == 7
+    assert len(BLOCKS) == 8
     try:
         for code in BLOCKS:
             if "SLURMCluster" in code:
