@@ -25,33 +25,13 @@ pub struct SurfaceInput {
     pub hardness: Option<f64>,
 }
 
-/// The summits of `asperity surface --json`.
-#[derive(Serialize, Debug, Clone)]
-pub struct SummitsJson {
-    /// Strict 8-neighbour summits.
-    pub count: usize,
-    /// Summits per area (1/m^2).
-    pub density_per_m2: f64,
-    /// Mean summit curvature (1/m).
-    pub mean_curvature_per_m: Option<f64>,
-    /// Mean summit radius (m).
-    pub radius_m: Option<f64>,
-    /// Summit-height standard deviation (m).
-    pub height_std_m: Option<f64>,
-    /// Mean summit height above the mean plane (m).
-    pub mean_height_m: Option<f64>,
-}
+/// The summits of `asperity surface --json` (the run summary's
+/// measured-summit statistics).
+pub use crate::study::output::MeasuredJson as SummitsJson;
 
-/// GW parameters from the spectral moments (McCool).
-#[derive(Serialize, Debug, Clone)]
-pub struct GwJson {
-    /// Summit density (1/m^2).
-    pub density_per_m2: f64,
-    /// Summit radius (m).
-    pub radius_m: f64,
-    /// Summit-height standard deviation (m).
-    pub sigma_m: Option<f64>,
-}
+/// GW parameters from the spectral moments (McCool), as in a run's
+/// summary.
+pub use crate::study::output::MomentsJson as GwJson;
 
 /// What `asperity surface --json` prints.
 #[derive(Serialize, Debug, Clone)]
@@ -202,19 +182,8 @@ pub fn characterise(
         rms_gradient: c.moments.rms_gradient(),
         rms_curvature_per_m: c.moments.rms_curvature(),
         bandwidth_alpha: c.bandwidth_alpha(),
-        summits: SummitsJson {
-            count: s.count,
-            density_per_m2: s.density_per_m2,
-            mean_curvature_per_m: s.mean_curvature_per_m,
-            radius_m: s.radius_m,
-            height_std_m: s.height_std_m,
-            mean_height_m: s.mean_height_m,
-        },
-        gw_from_moments: GwJson {
-            density_per_m2: gw.density_per_m2,
-            radius_m: gw.radius_m,
-            sigma_m: gw.sigma_m,
-        },
+        summits: SummitsJson::of(s),
+        gw_from_moments: GwJson::of(&gw),
         plasticity_index: psi,
         source: None,
         warnings: Vec::new(),

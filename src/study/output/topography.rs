@@ -6,6 +6,7 @@ use crate::study::plan::Plan;
 use crate::study::plot::surface::{write_summit_heights, write_summit_map};
 use crate::study::quantity::Headlines;
 use crate::study::run::Results;
+use crate::surface::{GwParameters, SummitStats};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -63,6 +64,20 @@ pub struct MeasuredJson {
     pub mean_height_m: Option<f64>,
 }
 
+impl MeasuredJson {
+    /// The statistics of a map's measured summits.
+    pub fn of(s: &SummitStats) -> Self {
+        MeasuredJson {
+            count: s.count,
+            density_per_m2: s.density_per_m2,
+            mean_curvature_per_m: s.mean_curvature_per_m,
+            radius_m: s.radius_m,
+            height_std_m: s.height_std_m,
+            mean_height_m: s.mean_height_m,
+        }
+    }
+}
+
 /// McCool's GW parameters.
 #[derive(Debug, Clone, Serialize)]
 pub struct MomentsJson {
@@ -72,6 +87,17 @@ pub struct MomentsJson {
     pub radius_m: f64,
     /// `sigma_s` (m).
     pub sigma_m: Option<f64>,
+}
+
+impl MomentsJson {
+    /// McCool's parameters from a map's spectral moments.
+    pub fn of(gw: &GwParameters) -> Self {
+        MomentsJson {
+            density_per_m2: gw.density_per_m2,
+            radius_m: gw.radius_m,
+            sigma_m: gw.sigma_m,
+        }
+    }
 }
 
 /// Another model's headline numbers.
@@ -139,19 +165,8 @@ pub fn summary(plan: &Plan, results: &Results) -> Option<TopographySummary> {
         m4: c.moments.m4,
         bandwidth_alpha: c.bandwidth_alpha(),
         model: t.spec.summits.name(),
-        summits: MeasuredJson {
-            count: s.count,
-            density_per_m2: s.density_per_m2,
-            mean_curvature_per_m: s.mean_curvature_per_m,
-            radius_m: s.radius_m,
-            height_std_m: s.height_std_m,
-            mean_height_m: s.mean_height_m,
-        },
-        gw_from_moments: MomentsJson {
-            density_per_m2: gw.density_per_m2,
-            radius_m: gw.radius_m,
-            sigma_m: gw.sigma_m,
-        },
+        summits: MeasuredJson::of(s),
+        gw_from_moments: MomentsJson::of(&gw),
         other: results
             .topography
             .as_ref()
