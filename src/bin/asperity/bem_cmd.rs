@@ -4,12 +4,9 @@
 
 use crate::CliError;
 use asperity::commands::bem::{bem, BemAdhesion, BemInput, BemTargets};
-use asperity::commands::measured::{
-    export, height_unit, plane_rms, read_measured, unit_warnings, ReadOptions,
-};
+use asperity::commands::measured::{plane_rms, unit_warnings};
 use asperity::commands::surface::map_name;
 use asperity::commands::Vocabulary;
-use asperity::topography::Channel;
 use clap::Args;
 use std::path::PathBuf;
 
@@ -110,25 +107,16 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     let words = Vocabulary::cli().with("heights", map_name(&args.map, args.scale));
     let failed = |e| CliError::with(e, &words);
     input.validate().map_err(failed)?;
-    let options = ReadOptions {
-        channel: args
-            .channel
-            .as_deref()
-            .map_or(Channel::Default, Channel::parse),
+    let flags = crate::map_read::MapFlags {
+        channel: args.channel.as_deref(),
         fill_missing: args.fill_missing,
-        height_unit: args
-            .height_unit
-            .as_deref()
-            .map(height_unit)
-            .transpose()
-            .map_err(failed)?,
+        height_unit: args.height_unit.as_deref(),
         scale: args.scale,
+        pixel_size: args.pixel_size,
+        export: args.export.as_deref(),
     };
-    let read = read_measured(&args.map, &options).map_err(failed)?;
-    let (pixels, mut warnings) = read.pixels(args.pixel_size).map_err(failed)?;
-    if let Some(path) = &args.export {
-        export(path, &read.map, pixels).map_err(failed)?;
-    }
+    let (read, pixels, mut warnings) =
+        crate::map_read::read_map(&args.map, &flags).map_err(failed)?;
     input.pixel_size = pixels.0;
     input.pixel_size_y = Some(pixels.1);
     input.periodic = args.periodic || read.periodic;

@@ -14,6 +14,7 @@ mod interrupt;
 mod law_cmd;
 mod list;
 mod map_cmd;
+mod map_read;
 mod persson_cmd;
 mod pipe;
 mod progress;

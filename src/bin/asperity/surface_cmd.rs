@@ -3,14 +3,11 @@
 //! [`asperity::commands::surface`].
 
 use crate::CliError;
-use asperity::commands::measured::{
-    export, height_unit, read_measured, unit_warnings, ReadOptions,
-};
+use asperity::commands::measured::unit_warnings;
 use asperity::commands::surface::{
     characterise, map_name, write_outputs, SurfaceInput, SurfaceJson,
 };
 use asperity::commands::Vocabulary;
-use asperity::topography::Channel;
 use clap::Args;
 use std::path::PathBuf;
 
@@ -68,25 +65,16 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
     // The map's content is named by its file (and the scale).
     let words = Vocabulary::cli().with("heights", map_name(&args.file, args.scale));
     let failed = |e| CliError::with(e, &words);
-    let options = ReadOptions {
-        channel: args
-            .channel
-            .as_deref()
-            .map_or(Channel::Default, Channel::parse),
+    let flags = crate::map_read::MapFlags {
+        channel: args.channel.as_deref(),
         fill_missing: args.fill_missing,
-        height_unit: args
-            .height_unit
-            .as_deref()
-            .map(height_unit)
-            .transpose()
-            .map_err(failed)?,
+        height_unit: args.height_unit.as_deref(),
         scale: args.scale,
+        pixel_size: args.pixel_size,
+        export: args.export.as_deref(),
     };
-    let read = read_measured(&args.file, &options).map_err(failed)?;
-    let (pixels, mut warnings) = read.pixels(args.pixel_size).map_err(failed)?;
-    if let Some(path) = &args.export {
-        export(path, &read.map, pixels).map_err(failed)?;
-    }
+    let (read, pixels, mut warnings) =
+        crate::map_read::read_map(&args.file, &flags).map_err(failed)?;
     let input = SurfaceInput {
         pixel_size: pixels.0,
         pixel_size_y: Some(pixels.1),
