@@ -31,6 +31,7 @@
 pub mod axisym;
 pub mod bem;
 pub mod cancel;
+pub mod capillary;
 #[cfg(feature = "study")]
 pub mod commands;
 pub mod electrical;

@@ -15,6 +15,7 @@ mod common;
 
 mod axisym;
 mod bem;
+mod capillary;
 mod chart_rules;
 mod cli_bem;
 mod cli_electrical;

@@ -3,7 +3,8 @@
 use crate::progress::Progress;
 use crate::CliError;
 use asperity::study::sweep::{
-    merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary, DEFAULT_MAX_CPU_SECONDS,
+    humidity_charts, merge, run_sweep, Design, Shard, SweepOptions, SweepSpec, Vary,
+    DEFAULT_MAX_CPU_SECONDS,
 };
 use clap::Args;
 use std::path::PathBuf;
@@ -169,6 +170,12 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
             outcome.planned,
             outcome.path.display()
         )));
+    }
+    // A humidity sweep also draws pull-off and sticking against RH, dry beside wet.
+    if options.shard.is_none() {
+        for path in humidity_charts(&scene, &spec, &outcome.path, &args.out).map_err(as_flag)? {
+            eprintln!("chart: {}", path.display());
+        }
     }
     Ok(())
 }

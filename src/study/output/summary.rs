@@ -462,7 +462,7 @@ pub struct RunScalar {
 /// Every run-level scalar, declared once: the sweep's columns
 /// ([`Plan::result_columns`]) and the summary's values
 /// ([`Summary::scalars`]) both come from this list.
-pub const RUN_SCALARS: [RunScalar; 9] = [
+pub const RUN_SCALARS: [RunScalar; 10] = [
     RunScalar {
         name: "pull_off_N",
         group: ScalarGroup::PullOff,
@@ -512,6 +512,13 @@ pub const RUN_SCALARS: [RunScalar; 9] = [
         name: "sticks",
         group: ScalarGroup::Switch,
         read: |s| s.stiction.as_ref().map(|t| f64::from(u8::from(t.sticks))),
+    },
+    // The share of the pull-off population's switches that stick (0 or 1
+    // without a population).
+    RunScalar {
+        name: "sticks_probability",
+        group: ScalarGroup::Switch,
+        read: |s| s.stiction.as_ref().map(|t| t.sticks_probability),
     },
 ];
 

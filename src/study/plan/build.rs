@@ -33,6 +33,15 @@ impl Plan {
         let budget = Budget::new(scene.accuracy.rtol);
         let calibration = inputs.calibration.as_ref();
         let law = law::choose(scene, &contact, mode, &budget, calibration, &mut decisions)?;
+        let (law, wet_warnings) = super::wet::apply(
+            scene,
+            &contact,
+            surface.sigma,
+            law,
+            mode,
+            &budget,
+            &mut decisions,
+        )?;
         let reference = reference_law(&law, calibration, &contact)?;
         let topography = topography_plan(resolved, &law, &contact, &mut decisions)?;
         let sphere = super::sphere::plan(
@@ -55,6 +64,7 @@ impl Plan {
         let plasticity = scene.plasticity()?;
         let mut warnings =
             plasticity_decision(plasticity, &surface, &contact, &law, &mut decisions)?;
+        warnings.extend(wet_warnings);
         warnings.extend(calibration.and_then(|c| c.note.clone()));
         warnings.extend(resolved.iter().flat_map(|r| r.warnings.iter().cloned()));
         let model = model.with_accuracy(accuracy);

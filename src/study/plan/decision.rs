@@ -71,6 +71,25 @@ pub enum LawReason {
         /// `(pi^2 w^2 R/K^2)^(1/3)` (m).
         jkr_scale: f64,
     },
+    /// Menisci at `adhesion.relative_humidity` beside the dry law: the
+    /// exact two-zone law (meniscus and solid Dugdale zones on one elastic
+    /// sphere) or the dry law with the rigid (Derjaguin) meniscus beside it,
+    /// whichever the model-error rule picks.
+    Meniscus {
+        /// The dry law's name.
+        dry: String,
+        /// Whether the exact two-zone law was built.
+        exact: bool,
+        /// Pull-off error of the Derjaguin meniscus against the elastic one
+        /// (relative), if `lambda_m` is in the Maugis–Dugdale range.
+        error: Option<f64>,
+        /// The scene's tolerance (the law-choice share).
+        rtol: f64,
+        /// Kelvin radius `r_K` (m).
+        kelvin_radius: f64,
+        /// Meniscus height `h_m` (m).
+        height: f64,
+    },
     /// The full-solver law, from the on-disk cache or computed at run time.
     Calibrated {
         /// Whether the cache already holds it.
@@ -479,6 +498,36 @@ fn law_why(reason: &LawReason, d: &Decision) -> String {
         LawReason::AdhesionNegligible { jkr_scale } => format!(
             "given in the scene; adhesion left out: its JKR interference scale {jkr_scale:.3e} m is \
              below 1e-6 x rtol x sigma"
+        ),
+        LawReason::Meniscus {
+            dry,
+            exact,
+            error,
+            rtol,
+            kelvin_radius,
+            height,
+        } => format!(
+            "menisci at adhesion.relative_humidity (Kelvin radius {kelvin_radius:.3e} m, meniscus \
+             height {height:.3e} m) beside the dry law {dry}: {}",
+            match (exact, error) {
+                (true, Some(e)) => format!(
+                    "the rigid (Derjaguin) meniscus is off by {e:.2e} > rtol = {rtol:e} in the \
+                     pull-off, so the exact two-zone Maugis-Dugdale law (meniscus and the solid's \
+                     Dugdale zone on one elastic sphere)"
+                ),
+                (true, None) => "the exact two-zone Maugis-Dugdale law (meniscus and the \
+                     solid's Dugdale zone on one elastic sphere)"
+                    .into(),
+                (false, Some(e)) if *e <= *rtol => format!(
+                    "the rigid (Derjaguin) meniscus beside it, within rtol = {rtol:e} of the \
+                     elastic meniscus (pull-off error {e:.2e})"
+                ),
+                (false, Some(e)) => format!(
+                    "the rigid (Derjaguin) meniscus beside it (no exact two-zone form for this \
+                     law; pull-off error {e:.2e} against the elastic meniscus)"
+                ),
+                (false, None) => "the rigid (Derjaguin) meniscus beside it".into(),
+            }
         ),
         LawReason::Calibrated { cached, path, auto } => format!(
             "{}full Lennard-Jones sphere solver (paraboloid), tabulated on both branches to 100 pi \

@@ -38,6 +38,7 @@ mod program;
 mod sphere;
 mod topography;
 pub mod validity;
+mod wet;
 
 pub use budget::{
     Budget, Share, CALIBRATED_MIN_RTOL, REFERENCE_RTOL, RTOL_RANGE, SPHERE_TOLERANCE_RANGE,

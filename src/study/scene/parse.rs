@@ -68,6 +68,7 @@ impl Scene {
         distribution_parameters(s)?;
         non_negative("adhesion.w", self.adhesion.w)?;
         positive("adhesion.z0", self.adhesion.z0)?;
+        self.adhesion.meniscus()?;
         self.validate_features()?;
         let p = &self.program;
         if let Some(start) = p.start_separation {

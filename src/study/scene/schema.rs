@@ -440,6 +440,71 @@ pub struct AdhesionSpec {
     /// `[1e-15, 1]`.
     #[schemars(extend("x-unit" = "m"), range(min = MIN_LENGTH, max = MAX_LENGTH))]
     pub z0: f64,
+    /// Relative humidity of the surrounding vapour, in `[0, 1)`: water (or the
+    /// liquid below) condenses into menisci around the contacts, which pull
+    /// beside the dry adhesion `w`, `z0` (Kelvin radius
+    /// `r_K = gamma V_m/(R_g T ln(1/RH))`, Laplace pressure `gamma/r_K`).
+    /// Absent or 0: dry.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "1"), range(min = 0.0, max = 1.0))]
+    pub relative_humidity: Option<f64>,
+    /// Surface tension `gamma` of the condensing liquid (N/m), > 0; default
+    /// water at 20 C, 0.0728.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "N/m", "exclusiveMinimum" = 0.0, "default" = 0.0728))]
+    pub surface_tension: Option<f64>,
+    /// Contact angle of the liquid on the rough body (degrees), in
+    /// `[0, 180]`; default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "deg", "default" = 0.0), range(min = 0.0, max = 180.0))]
+    pub contact_angle_1: Option<f64>,
+    /// Contact angle of the liquid on the flat (degrees), in `[0, 180]`;
+    /// default 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "deg", "default" = 0.0), range(min = 0.0, max = 180.0))]
+    pub contact_angle_2: Option<f64>,
+    /// Molar volume `V_m` of the liquid (m^3/mol), > 0; default water,
+    /// 1.8e-5.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "m^3/mol", "exclusiveMinimum" = 0.0, "default" = 1.8e-5))]
+    pub molar_volume: Option<f64>,
+    /// Temperature `T` of the liquid and vapour (K), > 0; default 293.15.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(extend("x-unit" = "K", "exclusiveMinimum" = 0.0, "default" = 293.15))]
+    pub temperature: Option<f64>,
+}
+
+impl AdhesionSpec {
+    /// The meniscus these keys describe (`None` when dry: no
+    /// `relative_humidity`, or 0, or a liquid that does not wet the gap).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfRange`] naming the `adhesion.*` key and its range.
+    pub fn meniscus(&self) -> crate::Result<Option<crate::capillary::Meniscus>> {
+        use crate::capillary as c;
+        let Some(rh) = self.relative_humidity else {
+            return Ok(None);
+        };
+        let angle = |x: Option<f64>, key: &str| -> crate::Result<f64> {
+            let x = x.unwrap_or(0.0);
+            crate::error::Allowed::closed(0.0, 180.0).check(key, x)?;
+            Ok(x.to_radians())
+        };
+        let t1 = angle(self.contact_angle_1, "adhesion.contact_angle_1")?;
+        let t2 = angle(self.contact_angle_2, "adhesion.contact_angle_2")?;
+        c::Meniscus::new(
+            self.surface_tension.unwrap_or(c::WATER_SURFACE_TENSION),
+            t1,
+            t2,
+            self.molar_volume.unwrap_or(c::WATER_MOLAR_VOLUME),
+            self.temperature.unwrap_or(c::ROOM_TEMPERATURE),
+            rh,
+        )
+        .map_err(|e| match e.field().map(str::to_string) {
+            Some(f) if !f.starts_with("adhesion.") => e.renamed(&format!("adhesion.{f}")),
+            _ => e,
+        })
+    }
 }
 
 /// `[law]`: the single-asperity law.

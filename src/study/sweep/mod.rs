@@ -12,11 +12,13 @@
 //! bytes.
 
 mod edit;
+mod humidity;
 mod run;
 mod spec;
 mod store;
 
 pub use edit::set_field;
+pub use humidity::{humidity_charts, HUMIDITY_PATH};
 pub use run::{run_sweep, sweep_table, PointOutcome, SweepOptions, DEFAULT_MAX_CPU_SECONDS};
 pub use spec::{
     Design, Shard, SweepPoint, SweepSpec, Vary, BYTES_PER_POINT, BYTES_PER_VALUE, MAX_POINTS,
