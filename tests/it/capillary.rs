@@ -439,3 +439,62 @@ fn flooded_force_by_hand() {
     assert_eq!(f.regime, Regime::Transition);
     assert!(flooded_force(&m, &gaps[..15], 4, 4, dx, dx).is_err());
 }
+
+/// The humid switch example and the README's humidity sweep, through the
+/// library calls `asperity sweep` makes (`run_sweep`, then
+/// `humidity_charts`): 19 points from RH 0.05 to 0.95, every point a
+/// result, both charts written, the wet pull-off above the dry one. With
+/// `ASPERITY_HUMIDITY_OUT=DIR` the sweep is kept in `DIR` and the report
+/// at RH 0.1, 0.5, 0.9 is printed (the README's numbers).
+#[test]
+fn humid_switch_sweep_writes_its_charts() {
+    use asperity::study::output::Summary;
+    use asperity::study::sweep::{
+        humidity_charts, run_sweep, Design, SweepOptions, SweepSpec, Vary,
+    };
+    use asperity::study::{Plan, PlanMode, Scene};
+    let root = env!("CARGO_MANIFEST_DIR");
+    let text = std::fs::read_to_string(format!("{root}/examples/scenes/rf-mems-switch-humid.toml"))
+        .unwrap();
+    let scene = Scene::from_toml(&text).unwrap();
+    let keep = std::env::var("ASPERITY_HUMIDITY_OUT").ok();
+    let tmp = std::env::temp_dir().join(format!("asperity-humidity-{}", std::process::id()));
+    let out = keep.as_ref().map_or(tmp.clone(), std::path::PathBuf::from);
+    let spec = SweepSpec {
+        vary: vec![Vary::parse("adhesion.relative_humidity=0.05:0.95:19").unwrap()],
+        design: Design::Grid,
+        log: false,
+        seed: 0,
+    };
+    let outcome = run_sweep(&scene, &spec, &out, &SweepOptions::default(), &|_, _| {}).unwrap();
+    assert_eq!(outcome.failed, 0);
+    let charts = humidity_charts(&scene, &spec, &outcome.path, &out).unwrap();
+    assert_eq!(charts.len(), 2, "{charts:?}");
+    for c in &charts {
+        let svg = std::fs::read_to_string(c).unwrap();
+        assert!(svg.contains("relative humidity") && svg.contains("dry (no meniscus)"));
+    }
+    if keep.is_some() {
+        for rh in [0.0, 0.1, 0.5, 0.9] {
+            let mut s = scene.clone();
+            s.adhesion.relative_humidity = (rh > 0.0).then_some(rh);
+            let plan = Plan::new(&s, PlanMode::Planned).unwrap();
+            let sum = Summary::new(&plan, &plan.run().unwrap());
+            let st = sum.stiction.as_ref().unwrap();
+            let m = s.adhesion.meniscus().unwrap();
+            println!(
+                "RH {rh}: pull-off {:.4e} N, margin {:.4e} N, sticks {}, probability {}, r_K {:?}, h_m {:?}, law {}, warnings {:?}",
+                st.pull_off_n,
+                st.margin_n,
+                st.sticks,
+                st.sticks_probability,
+                m.map(|m| m.kelvin_radius()),
+                m.map(|m| m.height()),
+                plan.law.name,
+                plan.warnings
+            );
+        }
+    } else {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+}

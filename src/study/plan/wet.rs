@@ -105,8 +105,8 @@ pub fn warnings(
             "adhesion.relative_humidity: the menisci merge (Kelvin radius {rk:.3e} m, meniscus \
              height {:.3e} m, against the summit radius {radius:.3e} m and the summit-height \
              standard deviation {sigma:.3e} m): per-summit menisci no longer hold and the \
-             interface floods; the flooded model of the bem and persson commands with a \
-             relative humidity applies",
+             interface floods (the flooded model, Laplace pressure on the area where the gap \
+             is below the meniscus height, applies instead)",
             m.height()
         ));
     }
