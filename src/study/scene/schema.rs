@@ -451,26 +451,26 @@ pub struct AdhesionSpec {
     /// Surface tension `gamma` of the condensing liquid (N/m), > 0; default
     /// water at 20 C, 0.0728.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "N/m", "exclusiveMinimum" = 0.0, "default" = 0.0728))]
+    #[schemars(extend("x-unit" = "N/m", "default" = 0.0728))]
     pub surface_tension: Option<f64>,
     /// Contact angle of the liquid on the rough body (degrees), in
     /// `[0, 180]`; default 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "deg", "default" = 0.0), range(min = 0.0, max = 180.0))]
+    #[schemars(extend("x-unit" = "deg", "default" = 0.0))]
     pub contact_angle_1: Option<f64>,
     /// Contact angle of the liquid on the flat (degrees), in `[0, 180]`;
     /// default 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "deg", "default" = 0.0), range(min = 0.0, max = 180.0))]
+    #[schemars(extend("x-unit" = "deg", "default" = 0.0))]
     pub contact_angle_2: Option<f64>,
     /// Molar volume `V_m` of the liquid (m^3/mol), > 0; default water,
     /// 1.8e-5.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "m^3/mol", "exclusiveMinimum" = 0.0, "default" = 1.8e-5))]
+    #[schemars(extend("x-unit" = "m^3/mol", "default" = 1.8e-5))]
     pub molar_volume: Option<f64>,
     /// Temperature `T` of the liquid and vapour (K), > 0; default 293.15.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "K", "exclusiveMinimum" = 0.0, "default" = 293.15))]
+    #[schemars(extend("x-unit" = "K", "default" = 293.15))]
     pub temperature: Option<f64>,
 }
 
@@ -482,9 +482,14 @@ impl AdhesionSpec {
     /// [`crate::Error::OutOfRange`] naming the `adhesion.*` key and its range.
     pub fn meniscus(&self) -> crate::Result<Option<crate::capillary::Meniscus>> {
         use crate::capillary as c;
-        let Some(rh) = self.relative_humidity else {
-            return Ok(None);
+        // The liquid's keys are checked even when dry.
+        let positive = |x: Option<f64>, key: &str| match x {
+            Some(v) => crate::error::Allowed::POSITIVE.check(key, v).map(|_| ()),
+            None => Ok(()),
         };
+        positive(self.surface_tension, "adhesion.surface_tension")?;
+        positive(self.molar_volume, "adhesion.molar_volume")?;
+        positive(self.temperature, "adhesion.temperature")?;
         let angle = |x: Option<f64>, key: &str| -> crate::Result<f64> {
             let x = x.unwrap_or(0.0);
             crate::error::Allowed::closed(0.0, 180.0).check(key, x)?;
@@ -492,6 +497,9 @@ impl AdhesionSpec {
         };
         let t1 = angle(self.contact_angle_1, "adhesion.contact_angle_1")?;
         let t2 = angle(self.contact_angle_2, "adhesion.contact_angle_2")?;
+        let Some(rh) = self.relative_humidity else {
+            return Ok(None);
+        };
         c::Meniscus::new(
             self.surface_tension.unwrap_or(c::WATER_SURFACE_TENSION),
             t1,
