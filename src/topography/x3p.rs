@@ -83,6 +83,49 @@ fn member<R: Read + std::io::Seek>(
     Ok(out)
 }
 
+/// Refuses all but an areal map: `FeatureType` `SUR`, incremental x and y
+/// axes and an absolute z axis (`get` reads a leaf of `main.xml`).
+fn check_areal<'a>(get: &dyn Fn(&str) -> Result<&'a str, Bad>) -> Result<(), Bad> {
+    if get("Record1/FeatureType")? != "SUR" {
+        return Err(Bad::unsupported(format!(
+            "FeatureType {} (only SUR, an areal map)",
+            get("Record1/FeatureType")?
+        )));
+    }
+    for (axis, kind) in [("CX", "I"), ("CY", "I"), ("CZ", "A")] {
+        let t = get(&format!("Record1/Axes/{axis}/AxisType"))?;
+        if t != kind {
+            return Err(Bad::unsupported(format!(
+                "{axis} AxisType {t} (expected {kind})"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Sets to NaN the heights `z` whose bit in the archive member `valid`
+/// (one bit a point, least-significant first, 1 = valid) is 0.
+fn mask_invalid<R: Read + std::io::Seek>(
+    zip: &mut zip::ZipArchive<R>,
+    valid: &str,
+    z: &mut [f64],
+) -> Result<(), Bad> {
+    let n = z.len();
+    let bits = member(zip, valid, n.div_ceil(8) as u64)?;
+    if bits.len() < n.div_ceil(8) {
+        return Err(Bad::truncated(format!(
+            "'{valid}' has {} bytes for {n} points",
+            bits.len()
+        )));
+    }
+    for (k, v) in z.iter_mut().enumerate() {
+        if bits[k / 8] >> (k % 8) & 1 == 0 {
+            *v = f64::NAN;
+        }
+    }
+    Ok(())
+}
+
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     pick(&["Default".to_string()], 0, channel)?;
     if !bytes.starts_with(b"PK\x03\x04") {
@@ -108,20 +151,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             .parse::<usize>()
             .map_err(|_| Bad::corrupt(format!("main.xml: {k} is not a count")))
     };
-    if get("Record1/FeatureType")? != "SUR" {
-        return Err(Bad::unsupported(format!(
-            "FeatureType {} (only SUR, an areal map)",
-            get("Record1/FeatureType")?
-        )));
-    }
-    for (axis, kind) in [("CX", "I"), ("CY", "I"), ("CZ", "A")] {
-        let t = get(&format!("Record1/Axes/{axis}/AxisType"))?;
-        if t != kind {
-            return Err(Bad::unsupported(format!(
-                "{axis} AxisType {t} (expected {kind})"
-            )));
-        }
-    }
+    check_areal(&get)?;
     let (nx, ny) = (
         count("Record3/MatrixDimension/SizeX")?,
         count("Record3/MatrixDimension/SizeY")?,
@@ -174,18 +204,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         }
     }
     if let Some(valid) = x.get("Record3/DataLink/ValidPointsLink") {
-        let bits = member(&mut zip, valid, n.div_ceil(8) as u64)?;
-        if bits.len() < n.div_ceil(8) {
-            return Err(Bad::truncated(format!(
-                "'{valid}' has {} bytes for {n} points",
-                bits.len()
-            )));
-        }
-        for (k, v) in z.iter_mut().enumerate() {
-            if bits[k / 8] >> (k % 8) & 1 == 0 {
-                *v = f64::NAN;
-            }
-        }
+        mask_invalid(&mut zip, valid, &mut z)?;
     }
     Ok(Measured {
         format: Format::X3p,
@@ -242,7 +261,51 @@ pub fn to_x3p(
             super::md5::hex(b)
         )
     });
-    let xml = format!(
+    let xml = main_xml(
+        rows,
+        cols,
+        dx,
+        dy,
+        software,
+        &super::md5::hex(&data),
+        &valid_link,
+    );
+    let io = |e: &dyn std::fmt::Display| crate::Error::io("X3P archive", e);
+    let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    let opts = zip::write::SimpleFileOptions::default()
+        // Stored: reading is then a copy (about the cost of a .npy), where
+        // inflating float64 heights, which barely compress, costs 3x
+        // (docs/performance.md, "Reading measured maps").
+        .compression_method(zip::CompressionMethod::Stored)
+        .large_file(data.len() >= u32::MAX as usize);
+    let mut put = |name: &str, b: &[u8]| -> crate::Result<()> {
+        w.start_file(name, opts).map_err(|e| io(&e))?;
+        w.write_all(b).map_err(|e| io(&e))
+    };
+    put("main.xml", xml.as_bytes())?;
+    put("bindata/data.bin", &data)?;
+    if let Some(b) = &valid {
+        put("bindata/valid.bin", b)?;
+    }
+    let sum = format!("{} *main.xml\n", super::md5::hex(xml.as_bytes()));
+    put("md5checksum.hex", sum.as_bytes())?;
+    let out = w.finish().map_err(|e| io(&e))?;
+    Ok(out.into_inner())
+}
+
+/// The `main.xml` of [`to_x3p`]: the axes, the matrix of `rows x cols`
+/// float64 heights and its data links (`md5` the data's checksum,
+/// `valid_link` the valid points' link or empty).
+fn main_xml(
+    rows: usize,
+    cols: usize,
+    dx: f64,
+    dy: f64,
+    software: &str,
+    md5: &str,
+    valid_link: &str,
+) -> String {
+    format!(
         r#"<?xml version="1.0" encoding="UTF-8" standalone="no" ?>
 <p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:schemaLocation="http://www.opengps.eu/2008/ISO5436_2 http://www.opengps.eu/2008/ISO5436_2/ISO5436_2.xsd">
   <Record1>
@@ -299,29 +362,7 @@ pub fn to_x3p(
 </p:ISO5436_2>
 "#,
         version = env!("CARGO_PKG_VERSION"),
-        md5 = super::md5::hex(&data),
-    );
-    let io = |e: &dyn std::fmt::Display| crate::Error::io("X3P archive", e);
-    let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
-    let opts = zip::write::SimpleFileOptions::default()
-        // Stored: reading is then a copy (about the cost of a .npy), where
-        // inflating float64 heights, which barely compress, costs 3x
-        // (docs/performance.md, "Reading measured maps").
-        .compression_method(zip::CompressionMethod::Stored)
-        .large_file(data.len() >= u32::MAX as usize);
-    let mut put = |name: &str, b: &[u8]| -> crate::Result<()> {
-        w.start_file(name, opts).map_err(|e| io(&e))?;
-        w.write_all(b).map_err(|e| io(&e))
-    };
-    put("main.xml", xml.as_bytes())?;
-    put("bindata/data.bin", &data)?;
-    if let Some(b) = &valid {
-        put("bindata/valid.bin", b)?;
-    }
-    let sum = format!("{} *main.xml\n", super::md5::hex(xml.as_bytes()));
-    put("md5checksum.hex", sum.as_bytes())?;
-    let out = w.finish().map_err(|e| io(&e))?;
-    Ok(out.into_inner())
+    )
 }
 
 #[cfg(test)]
