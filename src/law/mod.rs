@@ -54,6 +54,26 @@ macro_rules! delegate_critical_points {
     };
 }
 
+/// The cutoff and breakpoints of an adhesive law whose force acts only in
+/// contact (JKR, its shaped form, COS): the load is zero below the jump-out
+/// interference `detach_interference`, where the attached branch ends; the
+/// approach branch kinks at first contact (0), the retraction branch jumps
+/// at detachment.
+macro_rules! cutoff_at_detach {
+    () => {
+        fn cutoff_interference(&self) -> f64 {
+            self.detach_interference()
+        }
+
+        fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+            match branch {
+                Branch::Approach => vec![0.0],
+                Branch::Retract => vec![self.detach_interference()],
+            }
+        }
+    };
+}
+
 pub mod bradley;
 pub mod cos;
 mod cursor;
