@@ -236,13 +236,7 @@ impl Cos {
 }
 
 impl AsperityLaw for Cos {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Cos.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "cos"
-    }
+    identity_of_kind!(Cos);
 
     #[inline]
     fn state(&self, delta: f64, branch: Branch) -> ContactState {

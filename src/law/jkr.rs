@@ -337,13 +337,7 @@ impl Jkr {
 }
 
 impl AsperityLaw for Jkr {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Jkr.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "jkr"
-    }
+    identity_of_kind!(Jkr);
 
     #[inline]
     fn state(&self, delta: f64, branch: Branch) -> ContactState {

@@ -428,19 +428,8 @@ impl QuantitySet {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::law::ContactState;
-    use crate::loading::{MethodUsed, PerAsperity, Totals, SLOTS};
-
-    #[derive(Debug)]
-    struct Perimeter;
-    impl PerAsperity for Perimeter {
-        fn name(&self) -> &str {
-            "perimeter_m"
-        }
-        fn value(&self, s: &ContactState) -> f64 {
-            2.0 * std::f64::consts::PI * s.radius
-        }
-    }
+    use crate::loading::observable::tests::Perimeter;
+    use crate::loading::{MethodUsed, Totals, SLOTS};
 
     fn state(values: [f64; SLOTS], present: [bool; SLOTS], d: f64) -> State {
         State {

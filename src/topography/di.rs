@@ -361,32 +361,23 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             im.name
         ))
     })?;
-    let Layout {
-        nx,
-        ny,
-        offset,
-        length,
-        bpp,
-        size,
-        sx,
-        sy,
-        xy_unit,
-    } = layout(im.section, &scan, version)?;
+    let l = layout(im.section, &scan, version)?;
+    let (nx, ny, length, size) = (l.nx, l.ny, l.length, l.size);
     let n = super::grid(ny, nx)?;
     if n * size > length {
         return Err(Bad::corrupt(format!(
             "a data length of {length} bytes for {nx} x {ny} points of {size} bytes"
         )));
     }
-    let data = raster(bytes.get(offset..).unwrap_or(&[]), ny, nx, size)?;
-    let step = scale / 256f64.powi(bpp as i32);
+    let data = raster(bytes.get(l.offset..).unwrap_or(&[]), ny, nx, size)?;
+    let step = scale / 256f64.powi(l.bpp as i32);
     let mut z: Vec<f64> = if size == 2 {
         decode(data, |b| f64::from(i16::from_le_bytes(b)) * step * to_m)
     } else {
         decode(data, |b| f64::from(i32::from_le_bytes(b)) * step * to_m)
     };
     super::flip_rows(&mut z, ny, nx);
-    let xy = super::metres(&xy_unit, "the scan size")?;
+    let xy = super::metres(&l.xy_unit, "the scan size")?;
     Ok(Measured {
         format: Format::Nanoscope,
         channel: im.name.clone(),
@@ -396,8 +387,8 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         cols: nx,
         heights: z,
         pixel_size: Some((
-            pixel(sx * xy / nx as f64, "x")?,
-            pixel(sy * xy / ny as f64, "y")?,
+            pixel(l.sx * xy / nx as f64, "x")?,
+            pixel(l.sy * xy / ny as f64, "y")?,
         )),
         periodic: false,
     })

@@ -327,20 +327,7 @@ fn surface(bytes: &[u8], t: &Tree, channel: &Channel) -> Result<Measured, Bad> {
     });
     let dx = extent(ex, nx) * super::metres(&ux, "x")? / nx as f64;
     let dy = extent(ey, ny) * super::metres(&uy, "y")? / ny as f64;
-    let channel_name = t
-        .text(&format!("{p}/DataKind"))
-        .unwrap_or_else(|| names[k].clone());
-    Ok(Measured {
-        format: Format::Opdx,
-        channel: channel_name,
-        channels: names,
-        unit: super::units::canonical(&uz, false),
-        rows: ny,
-        cols: nx,
-        heights: z,
-        pixel_size: Some((super::pixel(dx, "x")?, super::pixel(dy, "y")?)),
-        periodic: false,
-    })
+    measured(t, &p, (names, k), &uz, (ny, nx), z, (dx, dy))
 }
 
 /// The one row of a profile file (`/1D_Data/NAME`) of data kind `kind`.
@@ -368,18 +355,33 @@ fn profile(bytes: &[u8], t: &Tree, kind: &str, channel: &Channel) -> Result<Meas
         f64::from_le_bytes(b) * scale * to_m
     });
     let dx = extent(e, n) * super::metres(&ux, "x")? / n as f64;
-    let channel_name = t
+    measured(t, &p, (names, k), &uz, (1, n), z, (dx, dx))
+}
+
+/// The map read at path `p` of the tree: channel `k` of `names` (named by
+/// its `DataKind` when it has one), heights in `unit`, `rows x cols` of
+/// them, pixels of `dx x dy` (m).
+fn measured(
+    t: &Tree,
+    p: &str,
+    (names, k): (Vec<String>, usize),
+    unit: &str,
+    (rows, cols): (usize, usize),
+    heights: Vec<f64>,
+    (dx, dy): (f64, f64),
+) -> Result<Measured, Bad> {
+    let channel = t
         .text(&format!("{p}/DataKind"))
         .unwrap_or_else(|| names[k].clone());
     Ok(Measured {
         format: Format::Opdx,
-        channel: channel_name,
+        channel,
         channels: names,
-        unit: super::units::canonical(&uz, false),
-        rows: 1,
-        cols: n,
-        heights: z,
-        pixel_size: Some((super::pixel(dx, "x")?, super::pixel(dx, "x")?)),
+        unit: super::units::canonical(unit, false),
+        rows,
+        cols,
+        heights,
+        pixel_size: Some((super::pixel(dx, "x")?, super::pixel(dy, "y")?)),
         periodic: false,
     })
 }

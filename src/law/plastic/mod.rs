@@ -274,17 +274,7 @@ macro_rules! plastic_asperity_law {
                 Some($crate::law::RadiusScaling::PLASTIC)
             }
 
-            fn attach_interference(&self) -> f64 {
-                0.0
-            }
-
-            fn detach_interference(&self) -> f64 {
-                0.0
-            }
-
-            fn cutoff_interference(&self) -> f64 {
-                0.0
-            }
+            critical_at_first_contact!();
 
             fn breakpoints(&self, _branch: $crate::law::Branch) -> Vec<f64> {
                 $crate::law::plastic::PlasticLoading::breakpoint_interferences(self)

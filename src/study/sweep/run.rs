@@ -379,14 +379,7 @@ pub fn sweep_table(
         rows.extend(rest.par_iter().map(row_of).collect::<Result<Vec<_>>>()?);
         Ok(rows)
     };
-    let rows = match options.threads {
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build()
-            .map_err(|e| Error::invalid("threads", e.to_string()))?
-            .install(work)?,
-        None => work()?,
-    };
+    let rows = on_threads(options.threads, work)?;
     let mut text = header;
     text.push('\n');
     for r in rows {
@@ -495,14 +488,7 @@ pub fn run_sweep(
         }
         None => Ok(()),
     };
-    match options.threads {
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build()
-            .map_err(|e| Error::invalid("threads", e.to_string()))?
-            .install(work)?,
-        None => work()?,
-    }
+    on_threads(options.threads, work)?;
     let file = file
         .into_inner()
         .map_err(|_| Error::invalid("out", "results file lock poisoned"))?;
@@ -518,4 +504,20 @@ pub fn run_sweep(
         repaired,
         path,
     })
+}
+
+/// Runs `work` on a pool of `threads` threads (at least one), or on the
+/// global pool when `None`.
+fn on_threads<T: Send>(
+    threads: Option<usize>,
+    work: impl FnOnce() -> Result<T> + Send,
+) -> Result<T> {
+    match threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build()
+            .map_err(|e| Error::invalid("threads", e.to_string()))?
+            .install(work),
+        None => work(),
+    }
 }
