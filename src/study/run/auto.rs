@@ -59,11 +59,13 @@ impl Plan {
         let mut plan = Plan::decide(&scene, self.mode, &inputs)?;
         plan.scene.law.kind = LawName::Auto;
         for d in &mut plan.decisions {
-            if let Decision::Law { reason, .. } = d {
-                if let LawReason::Calibrated { auto, surface, .. } = reason {
-                    *auto = None;
-                    *surface = Some((rtol, self.law.name.clone(), output.to_string(), error));
-                }
+            if let Decision::Law {
+                reason: LawReason::Calibrated { auto, surface, .. },
+                ..
+            } = d
+            {
+                *auto = None;
+                *surface = Some((rtol, self.law.name.clone(), output.to_string(), error));
             }
         }
         Ok(Some(plan))
