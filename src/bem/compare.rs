@@ -365,9 +365,17 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
     };
     for (index, &target) in input.targets.iter().enumerate() {
         let warm = out.states.last().map(|s| &s.solution);
-        let solved = match input.control {
+        let solve = |warm| match input.control {
             Control::Pressure => problem.solve_pressure(target, options, warm),
             Control::Gap => problem.solve_gap(target, options, warm),
+        };
+        // A warm start from a far state (the previous target without
+        // contact, say 1e-300 Pa before 1e6 Pa) can keep the iteration from
+        // converging where a cold start does: a failed warm start is
+        // retried cold.
+        let solved = match solve(warm) {
+            Err(Error::NoConvergence { .. }) if warm.is_some() => solve(None),
+            r => r,
         };
         let s = at(Step::Solve { index, target }, solved)?;
         let cl = problem.clusters(&s);

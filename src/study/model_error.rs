@@ -13,6 +13,7 @@ use crate::error::Result;
 use crate::gw::Accuracy;
 use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
 use crate::study::plan::FullSolver;
+use crate::study::scene::LawName;
 
 pub use crate::study::plan::REFERENCE_RTOL;
 
@@ -102,8 +103,14 @@ impl ModelError {
     }
 
     /// Warnings for the outputs whose model error exceeds
-    /// [`MODEL_ERROR_WARN`].
-    pub fn warnings(&self, law: &str) -> Vec<String> {
+    /// [`MODEL_ERROR_WARN`], advising the full-solver law by the
+    /// `law.kind` values that give it, other than the scene's own `given`.
+    pub fn warnings(&self, law: &str, given: LawName) -> Vec<String> {
+        let advice = if given == LawName::Auto {
+            "law.kind = \"calibrated\" uses the full-solver law"
+        } else {
+            "law.kind = \"calibrated\" (or \"auto\") uses the full-solver law"
+        };
         [
             ("pull-off", self.pull_off, self.reference_pull_off, "N"),
             ("max load", self.max_load, self.reference_max_load, "N"),
@@ -122,8 +129,7 @@ impl ModelError {
                 let reference = r.map_or(String::new(), |r| format!(" ({r:.4e} {unit})"));
                 format!(
                     "model error: the {name} of law {law} differs by {:.1} % from the full \
-                     Lennard-Jones solver's law on this surface{reference}; law.kind = \
-                     \"calibrated\" (or \"auto\") uses the full-solver law",
+                     Lennard-Jones solver's law on this surface{reference}; {advice}",
                     100.0 * e,
                 )
             })

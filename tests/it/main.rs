@@ -63,6 +63,7 @@ mod punch_asymptotics;
 mod punch_fit;
 mod quantities;
 mod readme_lines;
+mod readme_tables;
 mod retraction_minimum;
 mod rough_sphere;
 mod rough_sphere_si;

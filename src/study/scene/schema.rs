@@ -472,6 +472,10 @@ pub struct LawSpec {
     #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0))]
     pub tan_angle: Option<f64>,
     /// Shaped power law `f(r) = A r^n`: the exponent `n`, in `(0, 50]`.
+    /// With the coefficient, the profile's contact radius at an
+    /// interference of `surface.sigma` must lie between `adhesion.z0` and
+    /// the summit spacing: an exponent that leaves no representable
+    /// coefficient for that is refused naming `law.exponent`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0), range(max = 50.0))]
     pub exponent: Option<f64>,

@@ -108,6 +108,9 @@ pub struct PointOutcome {
     pub first_failure: Option<(usize, String)>,
     /// Whether a half-written last row was repaired.
     pub repaired: bool,
+    /// Rows found on resuming that were recomputed, and why (a checksum
+    /// that does not match, a file without checksums): one note each.
+    pub notes: Vec<String>,
     /// The results file.
     pub path: PathBuf,
 }
@@ -448,6 +451,7 @@ pub fn run_sweep(
     };
     let file = ResultsFile::open(out, &meta)?;
     let repaired = file.repaired;
+    let notes = file.notes.clone();
     let mine: Vec<&SweepPoint> = points
         .iter()
         .filter(|p| options.shard.is_none_or(|s| s.contains(p.index)))
@@ -502,6 +506,7 @@ pub fn run_sweep(
         failed_rows: failures.len(),
         first_failure: failures.into_iter().next(),
         repaired,
+        notes,
         path,
     })
 }
