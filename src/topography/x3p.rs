@@ -14,8 +14,7 @@
 //! bit per point (least-significant first, 1 = valid). NaN heights are
 //! missing too.
 
-use super::bytes::decode;
-use super::{pick, pixel, raster, Bad, Channel, Format, Measured};
+use super::{pick, pixel, Bad, Channel, Format, Measured};
 use std::collections::HashMap;
 use std::io::{Read, Write};
 
@@ -126,6 +125,58 @@ fn mask_invalid<R: Read + std::io::Seek>(
     Ok(())
 }
 
+/// The `rows x cols` values of `N` bytes each in member `name`, decoded by
+/// `f` while the member inflates, 64 KiB at a time: a deflated member never
+/// exists whole in memory beside the heights (one copy, not two).
+fn member_values<R: Read + std::io::Seek, const N: usize>(
+    zip: &mut zip::ZipArchive<R>,
+    name: &str,
+    rows: usize,
+    cols: usize,
+    f: impl Fn([u8; N]) -> f64,
+) -> Result<Vec<f64>, Bad> {
+    let n = super::grid(rows, cols)?;
+    let want = (n as u64).saturating_mul(N as u64);
+    let mut file = zip
+        .by_name(name)
+        .map_err(|e| Bad::corrupt(format!("no member '{name}' in the archive ({e})")))?;
+    if file.size() > want {
+        return Err(Bad::corrupt(format!(
+            "member '{name}' declares {} bytes, more than the {want} the header describes",
+            file.size()
+        )));
+    }
+    let mut z = Vec::with_capacity(n);
+    let mut buf = vec![0u8; 1 << 16];
+    let mut have = 0;
+    let mut total = 0u64;
+    let mut reader = file.by_ref().take(want);
+    loop {
+        let k = match reader.read(&mut buf[have..]) {
+            Ok(0) => break,
+            Ok(k) => k,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(Bad::corrupt(format!("member '{name}' cannot be read: {e}"))),
+        };
+        have += k;
+        total += k as u64;
+        let whole = have / N * N;
+        z.extend(buf[..whole].chunks_exact(N).map(|c| {
+            let mut a = [0u8; N];
+            a.copy_from_slice(c);
+            f(a)
+        }));
+        buf.copy_within(whole..have, 0);
+        have -= whole;
+    }
+    if z.len() < n {
+        return Err(Bad::truncated(format!(
+            "{rows} x {cols} values of {N} bytes need {want} bytes, {total} are left"
+        )));
+    }
+    Ok(z)
+}
+
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     pick(&["Default".to_string()], 0, channel)?;
     if !bytes.starts_with(b"PK\x03\x04") {
@@ -165,12 +216,9 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         num("Record1/Axes/CY/Increment")?,
     );
     let t = get("Record1/Axes/CZ/DataType")?;
-    let size = match t {
-        "I" => 2,
-        "L" | "F" => 4,
-        "D" => 8,
-        other => return Err(Bad::unsupported(format!("CZ DataType {other}"))),
-    };
+    if !matches!(t, "I" | "L" | "F" | "D") {
+        return Err(Bad::unsupported(format!("CZ DataType {t}")));
+    }
     let inc = x
         .get("Record1/Axes/CZ/Increment")
         .map_or(Ok(1.0), |_| num("Record1/Axes/CZ/Increment"))?;
@@ -179,30 +227,32 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         .map_or(Ok(0.0), |_| num("Record1/Axes/CZ/Offset"))?;
     let link = get("Record3/DataLink/PointDataLink")
         .map_err(|_| Bad::unsupported("no Record3/DataLink/PointDataLink (inline DataList)"))?;
-    let want = (n as u64) * size as u64;
-    crate::study::memory::ensure(
-        "topography",
-        "reading the X3P heights",
-        want as f64 + 8.0 * n as f64,
-        "",
-    )
-    .map_err(|e| Bad::corrupt(e.to_string()))?;
-    let data = member(&mut zip, link, want)?;
-    let data = raster(&data, ny, nx, size)?;
-    let mut z: Vec<f64> = match t {
-        "I" => decode(data, |b| f64::from(i16::from_le_bytes(b))),
-        "L" => decode(data, |b| f64::from(i32::from_le_bytes(b))),
-        "F" => decode(data, |b| f64::from(f32::from_le_bytes(b))),
-        _ => decode(data, f64::from_le_bytes),
-    };
-    if inc != 1.0 || off != 0.0 {
-        z.iter_mut().for_each(|v| *v = *v * inc + off);
-    }
-    for v in z.iter_mut() {
-        if !v.is_finite() {
-            *v = f64::NAN;
+    // The heights only: the member inflates straight into them.
+    crate::study::memory::ensure("topography", "reading the X3P heights", 8.0 * n as f64, "")
+        .map_err(|e| Bad::corrupt(e.to_string()))?;
+    // Scaled by the increment and offset; non-finite values are missing.
+    let plain = inc == 1.0 && off == 0.0;
+    let scale = move |v: f64| {
+        let v = if plain { v } else { v * inc + off };
+        if v.is_finite() {
+            v
+        } else {
+            f64::NAN
         }
-    }
+    };
+    let (rows, cols) = (ny, nx);
+    let mut z: Vec<f64> = match t {
+        "I" => member_values(&mut zip, link, rows, cols, |b| {
+            scale(f64::from(i16::from_le_bytes(b)))
+        })?,
+        "L" => member_values(&mut zip, link, rows, cols, |b| {
+            scale(f64::from(i32::from_le_bytes(b)))
+        })?,
+        "F" => member_values(&mut zip, link, rows, cols, |b| {
+            scale(f64::from(f32::from_le_bytes(b)))
+        })?,
+        _ => member_values(&mut zip, link, rows, cols, |b| scale(f64::from_le_bytes(b)))?,
+    };
     if let Some(valid) = x.get("Record3/DataLink/ValidPointsLink") {
         mask_invalid(&mut zip, valid, &mut z)?;
     }
