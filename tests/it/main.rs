@@ -61,6 +61,7 @@ mod pull_off_window;
 mod punch;
 mod punch_asymptotics;
 mod punch_fit;
+mod quantile_intervals;
 mod quantities;
 mod readme_lines;
 mod retraction_minimum;

@@ -217,15 +217,25 @@ pub struct PopulationSummary {
     /// 5 % quantile (type 7).
     #[serde(rename = "p05_N")]
     pub p05_n: Option<f64>,
-    /// Its distribution-free 95 % interval.
+    /// Its distribution-free 95 % interval: the shortest pair of order
+    /// statistics whose exact binomial coverage is at least 95 %; null when
+    /// no pair reaches it (`interval_note` says why).
     #[serde(rename = "p05_interval_N")]
     pub p05_interval_n: Option<(f64, f64)>,
+    /// The exact coverage of `p05_interval_N` (the probability that it
+    /// holds the true 5 % quantile, from the binomial distribution).
+    pub p05_interval_coverage: Option<f64>,
     /// 95 % quantile.
     #[serde(rename = "p95_N")]
     pub p95_n: Option<f64>,
-    /// Its distribution-free 95 % interval.
+    /// Its distribution-free 95 % interval (as `p05_interval_N`).
     #[serde(rename = "p95_interval_N")]
     pub p95_interval_n: Option<(f64, f64)>,
+    /// The exact coverage of `p95_interval_N`.
+    pub p95_interval_coverage: Option<f64>,
+    /// Why a quantile interval is null: too few populations for any pair
+    /// of order statistics to reach the confidence.
+    pub interval_note: Option<String>,
     /// Expected summits in contact at the integral's pull-off separation.
     pub carriers: Option<f64>,
     /// The integral's pull-off, for comparison.
@@ -243,6 +253,7 @@ pub struct PopulationSummary {
 impl PopulationSummary {
     fn new(r: &crate::study::population::PopulationResults) -> PopulationSummary {
         let s = r.statistics.as_ref();
+        let interval = |q: f64| s.and_then(|s| s.quantile_interval(q).ok());
         PopulationSummary {
             seeds: r.drawn,
             first_seed: r.plan.first_seed,
@@ -253,9 +264,12 @@ impl PopulationSummary {
             median_n: s.map(|s| s.quantile(0.5)),
             std_n: s.map(|s| s.std()),
             p05_n: s.map(|s| s.quantile(0.05)),
-            p05_interval_n: s.map(|s| s.quantile_interval(0.05)),
+            p05_interval_n: interval(0.05).map(|i| i.bounds),
+            p05_interval_coverage: interval(0.05).map(|i| i.ranks.coverage),
             p95_n: s.map(|s| s.quantile(0.95)),
-            p95_interval_n: s.map(|s| s.quantile_interval(0.95)),
+            p95_interval_n: interval(0.95).map(|i| i.bounds),
+            p95_interval_coverage: interval(0.95).map(|i| i.ranks.coverage),
+            interval_note: s.and_then(crate::study::population::interval_note),
             carriers: r.carriers,
             integral_n: r.integral,
             numerical_error: "each population's pull-off is its most tensile load at the \

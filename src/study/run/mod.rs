@@ -445,6 +445,10 @@ impl Plan {
                 r,
                 self.budget.population_agreement(),
             ));
+            warnings.extend(super::population::confidence_warning(
+                r,
+                self.switch.as_ref().map(|_| self.stiction_confidence()),
+            ));
         }
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
