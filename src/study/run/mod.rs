@@ -420,13 +420,14 @@ impl Plan {
             super::plan::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
         warnings.extend(crate::numeric::simd::ignored_request());
         let max_load = curve.approach.first().and_then(|s| s.load());
-        let model_error = super::model_error::measure(
+        let mut model_error = super::model_error::measure(
             self,
             &program,
             pull_off.map(|p| p.load),
             max_load,
             hysteresis_energy,
         )?;
+        model_error.map = super::map_error::measure(self, closest, t0.elapsed().as_secs_f64())?;
         warnings.extend(model_error.warnings(&self.law.name));
         if let Some(p) = pull_off.filter(|p| p.at_start) {
             warnings.push(format!(
