@@ -46,6 +46,7 @@ mod hysteresis_energy;
 mod law_properties;
 mod limits;
 mod maugis;
+mod map_model_error;
 mod maugis_gw;
 mod model_error;
 mod never_wrong;
