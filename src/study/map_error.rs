@@ -59,6 +59,13 @@ const ITERATIONS_PER_LOAD: f64 = 60.0;
 /// `max_load`) program is measured: three loads a factor 3 apart.
 pub const LOAD_FRACTIONS: [f64; 3] = [1.0 / 9.0, 1.0 / 3.0, 1.0];
 
+/// The estimated CPU time (s) of the exact elastic solution of a `rows x
+/// cols` map (padded to twice its size unless `periodic`) at `loads` loads.
+pub fn estimate_seconds(rows: usize, cols: usize, periodic: bool, loads: usize) -> f64 {
+    let grid = (rows * cols) as f64 * if periodic { 1.0 } else { 4.0 };
+    loads as f64 * ITERATIONS_PER_LOAD * NS_PER_PIXEL_ITERATION * grid * 1e-9
+}
+
 /// One load: GW beside the exact solution.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MapState {
@@ -332,8 +339,7 @@ pub fn measure(plan: &Plan, closest: f64, gw_seconds: f64) -> Result<Option<MapM
     }
     let c = &t.characterisation;
     let (rows, cols, periodic) = (c.rows, c.cols, c.periodic);
-    let grid = (rows * cols) as f64 * if periodic { 1.0 } else { 4.0 };
-    let estimate = loads.len() as f64 * ITERATIONS_PER_LOAD * NS_PER_PIXEL_ITERATION * grid * 1e-9;
+    let estimate = estimate_seconds(rows, cols, periodic, loads.len());
     let budget = gw_seconds.max(CPU_FLOOR);
     let options = Options {
         tolerance: EXACT_TOLERANCE,

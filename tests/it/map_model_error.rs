@@ -97,7 +97,10 @@ fn map_area_error_equals_the_library_bem_and_warns() {
         worst > 0.1,
         "{worst}: {warnings}"
     );
-    assert!(worst > 0.1, "the example's GW area error is -27 to -31 %: {m}");
+    assert!(
+        worst > 0.1,
+        "the example's GW area error is -27 to -31 %: {m}"
+    );
 }
 
 /// `accuracy.model_error = false` skips the exact solution and says so.
