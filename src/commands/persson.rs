@@ -193,23 +193,7 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
                 .map_err(|e| e.renamed(&param("adhesion_energy")))
         })
         .transpose()?;
-    for (i, s) in states.iter().enumerate() {
-        for (key, v) in [
-            ("area_fraction", s.area_fraction),
-            ("mean_gap_m", s.mean_gap_m),
-            ("gw_area_fraction", s.gw_area_fraction),
-            ("gw_mean_gap_m", s.gw_mean_gap_m),
-        ] {
-            if !v.is_finite() {
-                warnings.push(format!(
-                    "states[{i}].{key} at p = {:e} Pa is null: the model's value there is not a \
-                     finite number (the pressure is beyond what its formula resolves in double \
-                     precision)",
-                    s.pressure
-                ));
-            }
-        }
-    }
+    warnings.extend(non_finite_warnings(&states));
     let pt = match (pt, input.adhesion_energy) {
         (Some(x), Some(w)) if !x.is_finite() => {
             warnings.push(format!(
@@ -263,6 +247,30 @@ pub const MEASURED_STATEMENT: &str = "measured against exact elastic boundary-el
     its mean gap -21 % to +72 % off. Two maps, not a bound: a map's own errors are measured by \
     `asperity bem` on it. Persson's gap depends on gamma (Yang & Persson 2008 recommend about \
     0.4-0.45); GW neglects the elastic interaction of its summits and their coalescence.";
+
+/// A warning for each state's value that is not a finite number (null in
+/// the JSON).
+fn non_finite_warnings(states: &[PerssonState]) -> Vec<String> {
+    let mut warnings = Vec::new();
+    for (i, s) in states.iter().enumerate() {
+        for (key, v) in [
+            ("area_fraction", s.area_fraction),
+            ("mean_gap_m", s.mean_gap_m),
+            ("gw_area_fraction", s.gw_area_fraction),
+            ("gw_mean_gap_m", s.gw_mean_gap_m),
+        ] {
+            if !v.is_finite() {
+                warnings.push(format!(
+                    "states[{i}].{key} at p = {:e} Pa is null: the model's value there is not a \
+                     finite number (the pressure is beyond what its formula resolves in double \
+                     precision)",
+                    s.pressure
+                ));
+            }
+        }
+    }
+    warnings
+}
 
 /// The largest `|GW/Persson - 1|` at which both theories can still be
 /// within 10 % of the exact answer: `1.1/0.9 - 1`.

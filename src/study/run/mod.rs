@@ -442,14 +442,10 @@ impl Plan {
             // How many populations the budget allowed is a note of the
             // population (in the summary and the report), not a warning:
             // the quantiles carry their intervals.
-            warnings.extend(super::population::warning(
-                r,
-                self.budget.population_agreement(),
-            ));
-            warnings.extend(super::population::confidence_warning(
-                r,
-                self.switch.as_ref().map(|_| self.stiction_confidence()),
-            ));
+            let confidence = self.switch.as_ref().map(|_| self.stiction_confidence());
+            let agreement = self.budget.population_agreement();
+            warnings.extend(super::population::warning(r, agreement));
+            warnings.extend(super::population::confidence_warning(r, confidence));
         }
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
