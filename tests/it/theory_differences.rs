@@ -199,7 +199,10 @@ fn surface_reports_the_model_error_of_its_map() {
         let want = b["relative_differences"][k]["gw_area"].as_f64().unwrap();
         let got = me["area"][k].as_f64().unwrap();
         assert!((got - want).abs() <= 1e-12, "state {k}: {got} vs {want}");
-        assert_eq!(me["exact_area_fraction"][k], b["states"][k]["area_fraction"]);
+        assert_eq!(
+            me["exact_area_fraction"][k],
+            b["states"][k]["area_fraction"]
+        );
     }
     assert!(
         v["warnings"].to_string().contains("model_error.area"),
@@ -208,5 +211,8 @@ fn surface_reports_the_model_error_of_its_map() {
     );
     let (code, text, err) = run(&["surface", m.as_str(), "--pixel-size", "50e-9"], &d);
     assert_eq!(code, 0, "{err}");
-    assert!(text.contains("p/E* = 1e-3") && text.contains("GW area"), "{text}");
+    assert!(
+        text.contains("p/E* = 1e-3") && text.contains("GW area"),
+        "{text}"
+    );
 }
