@@ -15,6 +15,7 @@ use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram
 use crate::study::plan::FullSolver;
 use crate::study::scene::LawName;
 
+use super::map_error::MapModelError;
 pub use crate::study::plan::REFERENCE_RTOL;
 
 /// A model error larger than this (relative) is a warning.
@@ -41,6 +42,10 @@ pub struct ModelError {
     /// `loads`, in order), at the state's separation; empty when none are
     /// listed or the error is unmeasured.
     pub listed_loads: Vec<Option<f64>>,
+    /// On a measured map: GW's model error against the exact elastic
+    /// solution of the map ([`super::map_error`]), or why it is not
+    /// measured.
+    pub map: Option<MapModelError>,
 }
 
 impl ModelError {
@@ -54,6 +59,23 @@ impl ModelError {
             reference_max_load: None,
             reference_hysteresis_energy: None,
             listed_loads: Vec::new(),
+            map: None,
+        }
+    }
+
+    /// The reference sentence with the map's: what the per-state errors
+    /// are measured against, then what the headline outputs' are.
+    pub fn full_reference(&self) -> String {
+        match &self.map {
+            Some(m) if !m.states.is_empty() => format!(
+                "{}. Pull-off, max load and hysteresis energy: {}",
+                m.reference, self.reference
+            ),
+            Some(m) => format!(
+                "{}; area, load and mean gap: {}",
+                self.reference, m.reference
+            ),
+            None => self.reference.clone(),
         }
     }
 
@@ -134,6 +156,7 @@ impl ModelError {
                 )
             })
         })
+        .chain(self.map.iter().flat_map(MapModelError::warnings))
         .collect()
     }
 }
@@ -277,5 +300,6 @@ fn reference_run(
         reference_max_load: ref_load,
         reference_hysteresis_energy: ref_energy,
         listed_loads: Vec::new(),
+        map: None,
     })
 }

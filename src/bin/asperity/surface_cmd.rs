@@ -57,6 +57,7 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
     let (mut out, c) = characterise(read.map, &input).map_err(failed)?;
     out.source = Some(source);
     warnings.extend(unit_warnings(out.rms_height_m, pixels));
+    warnings.extend(std::mem::take(&mut out.warnings));
     out.warnings = warnings.iter().map(|w| words.words_in(w)).collect();
     if let Some(dir) = &args.out {
         write_outputs(dir, &out, &c).map_err(failed)?;
@@ -127,6 +128,21 @@ fn print_table(o: &SurfaceJson) -> crate::CliResult {
                 "{p:.6}"
             ))
     );
+    let m = &o.model_error;
+    crate::outln!("model error                {}", m.reference);
+    let pct = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{:+.1} %", 100.0 * v));
+    for (k, p) in m.pressure_over_estar.iter().enumerate() {
+        let at = |v: &[Option<f64>]| pct(v.get(k).copied().flatten());
+        crate::outln!(
+            "  p/E* = {p:<8e}         exact A/A0 {:.4}: GW area {}, load at the same gap {}, gap {}; Persson area {}, gap {}",
+            m.exact_area_fraction[k],
+            at(&m.area),
+            at(&m.load),
+            at(&m.mean_gap),
+            at(&m.persson_area),
+            at(&m.persson_mean_gap)
+        );
+    }
     for w in &o.warnings {
         crate::outln!("warning: {w}");
     }

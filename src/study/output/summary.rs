@@ -203,6 +203,89 @@ pub struct ModelErrorSummary {
     /// no state is listed).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub listed_loads: Vec<Option<f64>>,
+    /// On a measured map, per state (`states`): GW's real-area fraction
+    /// against the exact elastic solution's at the same load, `(GW -
+    /// exact)/exact` (absent without a measured map or when not measured).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub area: Vec<Option<f64>>,
+    /// The same of GW's load at the exact solution's mean gap.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub load: Vec<Option<f64>>,
+    /// The same of GW's mean gap at the same load.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mean_gap: Vec<Option<f64>>,
+    /// The states compared, with both models' values.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub states: Vec<MapStateSummary>,
+    /// The exact solution's estimated CPU time (s), on a measured map.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact_estimate_s: Option<f64>,
+    /// Its time (s, wall), when measured.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact_seconds: Option<f64>,
+}
+
+/// One state of a measured map's model error: GW beside the exact elastic
+/// solution at the same load.
+#[derive(Debug, Clone, Serialize)]
+pub struct MapStateSummary {
+    /// The load (N) on the nominal area.
+    #[serde(rename = "load_N")]
+    pub load_n: f64,
+    /// Its mean pressure (Pa).
+    #[serde(rename = "pressure_Pa")]
+    pub pressure_pa: f64,
+    /// The exact real-area fraction.
+    pub exact_area_fraction: f64,
+    /// The exact mean gap (m).
+    #[serde(rename = "exact_mean_gap_m")]
+    pub exact_mean_gap_m: f64,
+    /// GW's real-area fraction at the same load.
+    pub gw_area_fraction: f64,
+    /// GW's mean gap (m) at the same load (negative where GW's summits
+    /// are pressed below the mean plane).
+    #[serde(rename = "gw_mean_gap_m")]
+    pub gw_mean_gap_m: f64,
+    /// GW's load (N) at the exact mean gap.
+    #[serde(rename = "gw_load_at_exact_gap_N")]
+    pub gw_load_at_exact_gap_n: Option<f64>,
+}
+
+impl ModelErrorSummary {
+    fn new(m: &crate::study::model_error::ModelError) -> ModelErrorSummary {
+        let states = m.map.as_ref().map_or(&[][..], |x| &x.states[..]);
+        ModelErrorSummary {
+            pull_off: m.pull_off,
+            max_load: m.max_load,
+            hysteresis_energy: m.hysteresis_energy,
+            reference: m.full_reference(),
+            reference_pull_off_n: m.reference_pull_off,
+            reference_max_load_n: m.reference_max_load,
+            reference_hysteresis_energy_j: m.reference_hysteresis_energy,
+            listed_loads: m.listed_loads.clone(),
+            area: states.iter().map(|s| s.area).collect(),
+            load: states.iter().map(|s| s.load_at_gap).collect(),
+            mean_gap: states.iter().map(|s| s.mean_gap).collect(),
+            states: states
+                .iter()
+                .map(|s| MapStateSummary {
+                    load_n: s.load,
+                    pressure_pa: s.pressure,
+                    exact_area_fraction: s.exact_area_fraction,
+                    exact_mean_gap_m: s.exact_mean_gap,
+                    gw_area_fraction: s.gw_area_fraction,
+                    gw_mean_gap_m: s.gw_mean_gap,
+                    gw_load_at_exact_gap_n: s.gw_load_at_exact_gap,
+                })
+                .collect(),
+            exact_estimate_s: m.map.as_ref().map(|x| x.estimate_s),
+            exact_seconds: m
+                .map
+                .as_ref()
+                .filter(|x| !x.states.is_empty())
+                .map(|x| x.seconds),
+        }
+    }
 }
 
 /// Joule heating of the contact at the closest approach.
@@ -295,15 +378,25 @@ pub struct PopulationSummary {
     /// 5 % quantile (type 7).
     #[serde(rename = "p05_N")]
     pub p05_n: Option<f64>,
-    /// Its distribution-free 95 % interval.
+    /// Its distribution-free 95 % interval: the shortest pair of order
+    /// statistics whose exact binomial coverage is at least 95 %; null when
+    /// no pair reaches it (`interval_note` says why).
     #[serde(rename = "p05_interval_N")]
     pub p05_interval_n: Option<(f64, f64)>,
+    /// The exact coverage of `p05_interval_N` (the probability that it
+    /// holds the true 5 % quantile, from the binomial distribution).
+    pub p05_interval_coverage: Option<f64>,
     /// 95 % quantile.
     #[serde(rename = "p95_N")]
     pub p95_n: Option<f64>,
-    /// Its distribution-free 95 % interval.
+    /// Its distribution-free 95 % interval (as `p05_interval_N`).
     #[serde(rename = "p95_interval_N")]
     pub p95_interval_n: Option<(f64, f64)>,
+    /// The exact coverage of `p95_interval_N`.
+    pub p95_interval_coverage: Option<f64>,
+    /// Why a quantile interval is null: too few populations for any pair
+    /// of order statistics to reach the confidence.
+    pub interval_note: Option<String>,
     /// Expected summits in contact at the integral's pull-off separation.
     pub carriers: Option<f64>,
     /// The integral's pull-off, for comparison.
@@ -321,6 +414,7 @@ pub struct PopulationSummary {
 impl PopulationSummary {
     fn new(r: &crate::study::population::PopulationResults) -> PopulationSummary {
         let s = r.statistics.as_ref();
+        let interval = |q: f64| s.and_then(|s| s.quantile_interval(q).ok());
         PopulationSummary {
             seeds: r.drawn,
             first_seed: r.plan.first_seed,
@@ -331,9 +425,12 @@ impl PopulationSummary {
             median_n: s.map(|s| s.quantile(0.5)),
             std_n: s.map(|s| s.std()),
             p05_n: s.map(|s| s.quantile(0.05)),
-            p05_interval_n: s.map(|s| s.quantile_interval(0.05)),
+            p05_interval_n: interval(0.05).map(|i| i.bounds),
+            p05_interval_coverage: interval(0.05).map(|i| i.ranks.coverage),
             p95_n: s.map(|s| s.quantile(0.95)),
-            p95_interval_n: s.map(|s| s.quantile_interval(0.95)),
+            p95_interval_n: interval(0.95).map(|i| i.bounds),
+            p95_interval_coverage: interval(0.95).map(|i| i.ranks.coverage),
+            interval_note: s.and_then(crate::study::population::interval_note),
             carriers: r.carriers,
             integral_n: r.integral,
             numerical_error: "each population's pull-off is its most tensile load at the \
@@ -441,16 +538,7 @@ impl Summary {
             hysteresis_energy: results.hysteresis_energy,
             rtol: plan.budget.rtol,
             law_model_error: plan.law.measured_error.filter(|_| adhesive),
-            model_error: results.model_error.as_ref().map(|m| ModelErrorSummary {
-                pull_off: m.pull_off,
-                max_load: m.max_load,
-                hysteresis_energy: m.hysteresis_energy,
-                reference: m.reference.clone(),
-                reference_pull_off_n: m.reference_pull_off,
-                reference_max_load_n: m.reference_max_load,
-                reference_hysteresis_energy_j: m.reference_hysteresis_energy,
-                listed_loads: m.listed_loads.clone(),
-            }),
+            model_error: results.model_error.as_ref().map(ModelErrorSummary::new),
             seconds: results.seconds,
             simd: crate::numeric::simd::arch_name(),
             evaluations: results.evaluations,

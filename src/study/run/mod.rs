@@ -455,13 +455,14 @@ impl Plan {
             super::plan::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
         warnings.extend(crate::numeric::simd::ignored_request());
         let max_load = curve.approach.first().and_then(|s| s.load());
-        let model_error = super::model_error::measure(
+        let mut model_error = super::model_error::measure(
             self,
             &program,
             pull_off.map(|p| p.load),
             max_load,
             hysteresis_energy,
         )?;
+        model_error.map = super::map_error::measure(self, closest, t0.elapsed().as_secs_f64())?;
         warnings.extend(model_error.warnings(&self.law.name, self.scene.law.kind));
         if let Some(p) = pull_off.filter(|p| p.at_start) {
             warnings.push(format!(
@@ -476,10 +477,10 @@ impl Plan {
             // How many populations the budget allowed is a note of the
             // population (in the summary and the report), not a warning:
             // the quantiles carry their intervals.
-            warnings.extend(super::population::warning(
-                r,
-                self.budget.population_agreement(),
-            ));
+            let confidence = self.switch.as_ref().map(|_| self.stiction_confidence());
+            let agreement = self.budget.population_agreement();
+            warnings.extend(super::population::warning(r, agreement));
+            warnings.extend(super::population::confidence_warning(r, confidence));
         }
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
