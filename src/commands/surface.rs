@@ -228,20 +228,35 @@ impl SurfaceModelError {
             ),
         ]
         .into_iter()
-        .filter_map(|(name, key, v)| {
-            let (k, e) = v
+        .flat_map(|(name, key, v)| {
+            // A difference the model or the exact solution cannot give
+            // (no contact, or a value that is not a finite number) is null.
+            let nulls = v
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| e.is_none())
+                .map(|(k, _)| {
+                    format!(
+                        "{key}[{k}] at p/E* = {:e} is null: {name} or the exact solution has no \
+                     finite nonzero value there",
+                        self.pressure_over_estar[k]
+                    )
+                });
+            let largest = v
                 .iter()
                 .enumerate()
                 .filter_map(|(k, e)| e.map(|e| (k, e)))
-                .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
-            (e.abs() > crate::study::map_error::WARN_ABOVE).then(|| {
-                format!(
-                    "model error: {name} on this map differs from the exact elastic solution by \
-                     {:+.1} % at p/E* = {:e} ({key})",
-                    100.0 * e,
-                    self.pressure_over_estar[k]
-                )
-            })
+                .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+                .filter(|(_, e)| e.abs() > crate::study::map_error::WARN_ABOVE)
+                .map(|(k, e)| {
+                    format!(
+                        "model error: {name} on this map differs from the exact elastic solution \
+                         by {:+.1} % at p/E* = {:e} ({key})",
+                        100.0 * e,
+                        self.pressure_over_estar[k]
+                    )
+                });
+            largest.into_iter().chain(nulls).collect::<Vec<_>>()
         })
         .collect()
     }

@@ -168,7 +168,9 @@ impl Serialize for Aliases {
 }
 
 impl Aliases {
-    fn of<'a>(entries: impl IntoIterator<Item = (&'a str, serde_json::Value)>) -> Aliases {
+    pub(crate) fn of<'a>(
+        entries: impl IntoIterator<Item = (&'a str, serde_json::Value)>,
+    ) -> Aliases {
         Aliases(
             entries
                 .into_iter()
