@@ -73,6 +73,24 @@ macro_rules! serde_by_name {
     };
 }
 
+/// Implements [`Named`] for an enum `$t` from its own `ALL` array and
+/// `name` method, `$what` naming it in messages, and its serde form
+/// ([`serde_by_name!`](crate::serde_by_name)).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! named_enum {
+    ($t:ident, $what:literal) => {
+        impl $crate::named::Named for $t {
+            const ALL: &'static [Self] = &$t::ALL;
+            const WHAT: &'static str = $what;
+            fn name(self) -> &'static str {
+                $t::name(self)
+            }
+        }
+        $crate::serde_by_name!($t);
+    };
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -93,6 +93,7 @@ fn execute(scene: &Scene, base: &Path, out: Option<&Path>) -> asperity::Result<O
         Plan::new(scene, PlanMode::Planned)?
     };
     let results = plan.run()?;
+    let plan = results.plan(&plan).clone();
     let summary = Summary::new(&plan, &results);
     // Nothing half-written: an interrupted run stops before its files.
     asperity::cancel::check()?;

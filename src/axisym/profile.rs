@@ -201,14 +201,7 @@ impl ProfileKind {
     }
 }
 
-impl crate::named::Named for ProfileKind {
-    const ALL: &'static [Self] = &ProfileKind::ALL;
-    const WHAT: &'static str = "profile";
-    fn name(self) -> &'static str {
-        ProfileKind::name(self)
-    }
-}
-crate::serde_by_name!(ProfileKind);
+crate::named_enum!(ProfileKind, "profile");
 
 /// `k_n = n sqrt(pi) Gamma(n/2) / (2 Gamma((n+1)/2))`: `delta_0 = k_n A a^n`
 /// for `f = A r^n`.

@@ -140,12 +140,7 @@ impl TabulatedProfile {
     pub fn height(&self, t: f64) -> f64 {
         let (k, h, s) = self.locate(t);
         let (y0, y1, d0, d1) = (self.f[k], self.f[k + 1], self.d[k] * h, self.d[k + 1] * h);
-        let s2 = s * s;
-        let s3 = s2 * s;
-        (2.0 * s3 - 3.0 * s2 + 1.0) * y0
-            + (s3 - 2.0 * s2 + s) * d0
-            + (-2.0 * s3 + 3.0 * s2) * y1
-            + (s3 - s2) * d1
+        crate::numeric::pchip::hermite(s, y0, y1, d0, d1)
     }
 
     /// `(f'(r), f''(r))` of the interpolant.

@@ -184,6 +184,37 @@ pub enum Warning {
     NoGw,
     /// The exact states are adhesive, the theories are not.
     NonAdhesiveTheories,
+    /// A theory's `quantity` differs from the exact one by more than
+    /// [`DIFFERENCE_LIMIT`] at `beyond` of the `states` states; the largest
+    /// difference `difference` (relative, `model/exact - 1`) is at state
+    /// `state`, mean pressure `pressure` (Pa).
+    Differs {
+        /// The theory.
+        theory: Theory,
+        /// `"area fraction"` or `"mean gap"`.
+        quantity: &'static str,
+        /// The state of the largest difference.
+        state: usize,
+        /// Its mean pressure (Pa).
+        pressure: f64,
+        /// The largest difference.
+        difference: f64,
+        /// States beyond the limit.
+        beyond: usize,
+        /// States compared.
+        states: usize,
+    },
+    /// GW's mean gap is negative at state `state`: its summits, flattened
+    /// one by one, are pressed below the mean plane, which no surface
+    /// does (the exact mean gap is always positive).
+    GwNegativeGap {
+        /// The state's index.
+        state: usize,
+        /// The mean pressure (Pa).
+        pressure: f64,
+        /// GW's mean gap there (m).
+        mean_gap: f64,
+    },
 }
 
 impl fmt::Display for Warning {
@@ -232,9 +263,38 @@ impl fmt::Display for Warning {
             Warning::NonAdhesiveTheories => f.write_str(
                 "GW and Persson columns are the non-adhesive theories at the same mean pressure",
             ),
+            Warning::Differs {
+                theory,
+                quantity,
+                state,
+                pressure,
+                difference,
+                beyond,
+                states,
+            } => write!(
+                f,
+                "{theory}'s {quantity} differs from the exact one by more than {:.0} % at {beyond} \
+                 of {states} states, by {:+.1} % at state {state} (p = {pressure:e} Pa)",
+                100.0 * DIFFERENCE_LIMIT,
+                100.0 * difference
+            ),
+            Warning::GwNegativeGap {
+                state,
+                pressure,
+                mean_gap,
+            } => write!(
+                f,
+                "state {state}: GW's mean gap at p = {pressure:e} Pa is negative ({mean_gap:.4e} m): \
+                 its independently flattened summits are pressed below the mean plane, which the \
+                 exact surface never is; GW's gap is meaningless there"
+            ),
         }
     }
 }
+
+/// A theory's relative difference from the exact state above which
+/// [`Warning::Differs`].
+pub const DIFFERENCE_LIMIT: f64 = 0.1;
 
 /// GW's real-area fraction above which [`Warning::GwBeyondLightLoad`]:
 /// GW neglects the elastic interaction of the summits.
@@ -365,15 +425,24 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
     };
     for (index, &target) in input.targets.iter().enumerate() {
         let warm = out.states.last().map(|s| &s.solution);
-        let solved = match input.control {
+        let solve = |warm| match input.control {
             Control::Pressure => problem.solve_pressure(target, options, warm),
             Control::Gap => problem.solve_gap(target, options, warm),
+        };
+        // A warm start from a far state (the previous target without
+        // contact, say 1e-300 Pa before 1e6 Pa) can keep the iteration from
+        // converging where a cold start does: a failed warm start is
+        // retried cold.
+        let solved = match solve(warm) {
+            Err(Error::NoConvergence { .. }) if warm.is_some() => solve(None),
+            r => r,
         };
         let s = at(Step::Solve { index, target }, solved)?;
         let cl = problem.clusters(&s);
         let state = theories.beside(&problem, s, &cl, &mut out)?;
         out.states.push(state);
     }
+    differences_beyond(&mut out);
     if theories.gw.is_none() {
         out.warnings.push(Warning::NoGw);
     }
@@ -382,6 +451,41 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
     }
     out.solve_wall_s = start.elapsed().as_secs_f64();
     Ok(out)
+}
+
+/// A [`Warning::Differs`] for each theory and quantity that differs from
+/// the exact states by more than [`DIFFERENCE_LIMIT`] at some state.
+fn differences_beyond(out: &mut Comparison) {
+    type Pick = fn(&Difference) -> Option<f64>;
+    let picks: [(Theory, &'static str, Pick); 4] = [
+        (Theory::Gw, "area fraction", |d| d.gw_area),
+        (Theory::Gw, "mean gap", |d| d.gw_mean_gap),
+        (Theory::Persson, "area fraction", |d| d.persson_area),
+        (Theory::Persson, "mean gap", |d| d.persson_mean_gap),
+    ];
+    let states = out.differences.len();
+    for (theory, quantity, pick) in picks {
+        let beyond: Vec<(usize, f64)> = out
+            .differences
+            .iter()
+            .enumerate()
+            .filter_map(|(i, d)| pick(d).map(|e| (i, e)))
+            .filter(|(_, e)| e.abs() > DIFFERENCE_LIMIT)
+            .collect();
+        if let Some(&(state, difference)) =
+            beyond.iter().max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        {
+            out.warnings.push(Warning::Differs {
+                theory,
+                quantity,
+                state,
+                pressure: out.differences[state].pressure,
+                difference,
+                beyond: beyond.len(),
+                states,
+            });
+        }
+    }
 }
 
 impl Theories {
@@ -465,6 +569,13 @@ impl Theories {
             out.warnings.push(Warning::GwBeyondLightLoad {
                 pressure: p,
                 area_fraction: g.area_fraction,
+            });
+        }
+        if let Some(g) = gw.filter(|g| g.mean_gap < 0.0) {
+            out.warnings.push(Warning::GwNegativeGap {
+                state: index,
+                pressure: p,
+                mean_gap: g.mean_gap,
             });
         }
         let resistance = self.resistance(problem, cl, gw.as_ref())?;

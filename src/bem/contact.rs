@@ -31,6 +31,8 @@ use crate::error::{Error, Result};
 ///
 /// # Errors
 /// [`Error::NoConvergence`] after `options.max_iterations`.
+// Over 100 lines, kept whole: one Polonsky–Keer iteration loop whose
+// projection, step and convergence tests share the same dozen locals.
 pub(crate) fn solve_load(
     op: &HalfSpace,
     h: &[f64],

@@ -87,6 +87,10 @@ pub struct PerssonState {
     pub gw_area_fraction: f64,
     /// GW's mean gap (m).
     pub gw_mean_gap_m: f64,
+    /// GW's area fraction against Persson's, `GW/Persson - 1`.
+    pub gw_vs_persson_area: f64,
+    /// GW's mean gap against Persson's, `GW/Persson - 1`.
+    pub gw_vs_persson_mean_gap: f64,
 }
 
 /// GW's parameters from the spectrum's moments (McCool).
@@ -159,25 +163,28 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
     let mut states = Vec::new();
     let mut worst_quad: f64 = 0.0;
     let mut warnings = Vec::new();
+    // The states whose GW area fraction was above 1 (null, warned).
+    let mut above_one = Vec::new();
     for &p in &input.pressures {
         crate::cancel::check()?;
         let s = model.state(p).map_err(|e| at_pressure(input, p, e))?;
         worst_quad = worst_quad.max(s.mean_gap_error / s.mean_gap.abs().max(f64::MIN_POSITIVE));
         let g = gw.state(p).map_err(|e| at_pressure(input, p, e))?;
-        if g.area_fraction > 0.1 {
-            warnings.push(format!(
-                "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity (no asperity interaction)",
-                g.area_fraction
-            ));
+        let gw_area_fraction = gw_fraction(states.len(), p, g.area_fraction, &mut warnings);
+        if g.area_fraction > 1.0 {
+            above_one.push(states.len());
         }
         states.push(PerssonState {
             pressure: p,
             area_fraction: s.area_fraction,
             mean_gap_m: s.mean_gap,
-            gw_area_fraction: g.area_fraction,
+            gw_area_fraction,
             gw_mean_gap_m: g.mean_gap,
+            gw_vs_persson_area: gw_area_fraction / s.area_fraction - 1.0,
+            gw_vs_persson_mean_gap: g.mean_gap / s.mean_gap - 1.0,
         });
     }
+    warnings.extend(apart_warnings(&states));
     let pt = input
         .adhesion_energy
         .map(|w| {
@@ -186,23 +193,7 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
                 .map_err(|e| e.renamed(&param("adhesion_energy")))
         })
         .transpose()?;
-    for (i, s) in states.iter().enumerate() {
-        for (key, v) in [
-            ("area_fraction", s.area_fraction),
-            ("mean_gap_m", s.mean_gap_m),
-            ("gw_area_fraction", s.gw_area_fraction),
-            ("gw_mean_gap_m", s.gw_mean_gap_m),
-        ] {
-            if !v.is_finite() {
-                warnings.push(format!(
-                    "states[{i}].{key} at p = {:e} Pa is null: the model's value there is not a \
-                     finite number (the pressure is beyond what its formula resolves in double \
-                     precision)",
-                    s.pressure
-                ));
-            }
-        }
-    }
+    warnings.extend(non_finite_warnings(&states, &above_one));
     let pt = match (pt, input.adhesion_energy) {
         (Some(x), Some(w)) if !x.is_finite() => {
             warnings.push(format!(
@@ -236,11 +227,115 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
             "Persson: area in closed form (erf, ~1e-15); mean gap by adaptive Gauss-Kronrod to {QUAD_RTOL:e} relative (largest estimate here {worst_quad:.1e}); both checked against mpmath to 1e-9 in tests/it/persson.rs. GW: closed-form F_n, ~1e-15"
         ),
         model_error: format!(
-            "Persson (gamma = {}): against exact boundary-element solutions the area is typically underestimated by 10-25 % at small area fractions and the gap is sensitive to gamma (Yang & Persson 2008 recommend about 0.4-0.45); GW neglects elastic interaction between asperities and their coalescence, so its area and gap can be off by tens of per cent on self-affine surfaces (compare with `asperity bem`)",
+            "{MEASURED_STATEMENT} Here gamma = {}.",
             input.gamma
         ),
         warnings,
     })
+}
+
+/// What Persson's and GW's errors were measured to be against exact
+/// boundary-element solutions, with the maps and loads
+/// (`tools/reports/model_error_maps.rs`, docs/physics.md "GW and Persson
+/// against the exact solution").
+pub const MEASURED_STATEMENT: &str = "measured against exact elastic boundary-element \
+    solutions (`cargo run --release --example model_error_maps`; docs/physics.md): on two \
+    periodic self-affine maps, the shipped 256^2 examples/data/selfaffine-256.npy and a 512^2 \
+    random-phase map (H = 0.8, roll-off at 4 q_l, q_s at a 4-pixel wavelength, RMS slope 0.1), \
+    at p/E* = 0.001, 0.003 and 0.01 (exact A/A0 0.024 to 0.22), Persson's area (gamma = 1) was \
+    24-37 % below the exact one and its mean gap -14 % to +48 % off; GW's area 33-49 % below and \
+    its mean gap -21 % to +72 % off. Two maps, not a bound: a map's own errors are measured by \
+    `asperity bem` on it. Persson's gap depends on gamma (Yang & Persson 2008 recommend about \
+    0.4-0.45); GW neglects the elastic interaction of its summits and their coalescence.";
+
+/// GW's area fraction `a` at `p` (Pa) for state `index`: null (NaN) with a
+/// warning above 1, warned beyond GW's light-load validity above 0.1.
+fn gw_fraction(index: usize, p: f64, a: f64, warnings: &mut Vec<String>) -> f64 {
+    let mut gw_area_fraction = a;
+    if a > 1.0 {
+        // GW sums its summits' areas as if they never overlapped: above
+        // 1 that sum is not a fraction, so it is not reported.
+        warnings.push(format!(
+            "states[{}].gw_area_fraction at p = {p:e} Pa is null: GW's sum of summit areas \
+                 is {:.3} of the nominal area, more than all of it (GW holds below about 0.1, \
+                 without asperity interaction)",
+            index, a
+        ));
+        gw_area_fraction = f64::NAN;
+    } else if a > 0.1 {
+        warnings.push(format!(
+                "GW at p = {p:e} Pa: area fraction {:.3} > 0.1, outside GW's light-load validity (no asperity interaction)",
+                a
+            ));
+    }
+    gw_area_fraction
+}
+
+/// A warning for each state's value that is not a finite number (null in
+/// the JSON), except the GW area fractions above 1 in `above_one`, which
+/// have their own.
+fn non_finite_warnings(states: &[PerssonState], above_one: &[usize]) -> Vec<String> {
+    let mut warnings = Vec::new();
+    for (i, s) in states.iter().enumerate() {
+        for (key, v) in [
+            ("area_fraction", s.area_fraction),
+            ("mean_gap_m", s.mean_gap_m),
+            ("gw_area_fraction", s.gw_area_fraction),
+            ("gw_mean_gap_m", s.gw_mean_gap_m),
+        ] {
+            // A GW area fraction above 1 is null with its own sentence.
+            let explained = key == "gw_area_fraction" && above_one.contains(&i);
+            if !v.is_finite() && !explained {
+                warnings.push(format!(
+                    "states[{i}].{key} at p = {:e} Pa is null: the model's value there is not a \
+                     finite number (the pressure is beyond what its formula resolves in double \
+                     precision)",
+                    s.pressure
+                ));
+            }
+        }
+    }
+    warnings
+}
+
+/// The largest `|GW/Persson - 1|` at which both theories can still be
+/// within 10 % of the exact answer: `1.1/0.9 - 1`.
+const APART_LIMIT: f64 = 1.1 / 0.9 - 1.0;
+
+/// Warnings where GW and Persson differ by more than they could if both
+/// were within 10 % of the exact answer (`0.9/1.1 <= GW/Persson <=
+/// 1.1/0.9`): then at least one is off by more, which a spectrum alone
+/// cannot tell.
+fn apart_warnings(states: &[PerssonState]) -> Vec<String> {
+    type Pick = fn(&PerssonState) -> f64;
+    let picks: [(&str, Pick); 2] = [
+        ("area fraction", |s| s.gw_vs_persson_area),
+        ("mean gap", |s| s.gw_vs_persson_mean_gap),
+    ];
+    picks
+        .into_iter()
+        .filter_map(|(name, pick)| {
+            let apart: Vec<&PerssonState> = states
+                .iter()
+                .filter(|s| pick(s).is_finite())
+                .filter(|s| pick(s) > APART_LIMIT || pick(s) < 0.9 / 1.1 - 1.0)
+                .collect();
+            let worst = apart
+                .iter()
+                .max_by(|a, b| pick(a).abs().total_cmp(&pick(b).abs()))?;
+            Some(format!(
+                "GW's {name} differs from Persson's by {:+.1} % at p = {:e} Pa ({} of {} \
+                 pressures beyond {:+.1} % .. {:+.1} %): at least one of them is more than 10 % from \
+                 the exact answer there (`asperity bem` on a map measures which)",
+                100.0 * pick(worst),
+                worst.pressure,
+                apart.len(),
+                states.len(),
+                100.0 * (0.9 / 1.1 - 1.0),
+                100.0 * APART_LIMIT
+            ))
+        })
+        .collect()
 }
 
 /// A state the solvers cannot find at an extreme pressure or modulus is
@@ -353,16 +448,33 @@ fn print_table(o: &PerssonOutput) -> String {
     );
     let _ = writeln!(
         t,
-        "{:>14} {:>14} {:>14} {:>14} {:>14}",
-        "p (Pa)", "A/A0", "u (m)", "GW A/A0", "GW u (m)"
+        "{:>14} {:>14} {:>14} {:>14} {:>14} {:>10} {:>10}",
+        "p (Pa)", "A/A0", "u (m)", "GW A/A0", "GW u (m)", "GW/P A", "GW/P u"
     );
+    let pct = |v: f64| {
+        if v.is_finite() {
+            format!("{:+.1}%", 100.0 * v)
+        } else {
+            "-".to_string()
+        }
+    };
     for s in &o.states {
         let _ = writeln!(
             t,
-            "{:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e}",
-            s.pressure, s.area_fraction, s.mean_gap_m, s.gw_area_fraction, s.gw_mean_gap_m
+            "{:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e} {:>10} {:>10}",
+            s.pressure,
+            s.area_fraction,
+            s.mean_gap_m,
+            s.gw_area_fraction,
+            s.gw_mean_gap_m,
+            pct(s.gw_vs_persson_area),
+            pct(s.gw_vs_persson_mean_gap)
         );
     }
+    let _ = writeln!(
+        t,
+        "(GW/P A, GW/P u: GW's area fraction and mean gap against Persson's, GW/Persson - 1)"
+    );
     for w in &o.warnings {
         let _ = writeln!(t, "warning: {w}");
     }

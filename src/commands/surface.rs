@@ -69,6 +69,8 @@ pub struct SurfaceJson {
     /// file's, units that are probably wrong
     /// ([`super::measured::unit_warnings`]).
     pub warnings: Vec<String>,
+    /// GW's model error on this map ([`SurfaceModelError`]).
+    pub model_error: SurfaceModelError,
 }
 
 /// Reads the height map in `path` by its extension (`.npy`, or a text
@@ -151,6 +153,226 @@ fn plasticity(
     }
 }
 
+/// The mean pressures over `E*` at which [`characterise`] measures GW's
+/// model error.
+pub const MODEL_ERROR_LOADS: [f64; 3] = [1e-3, 3e-3, 1e-2];
+
+/// GW's model error on the map: GW on the map's moments (the
+/// `gw_from_moments` parameters, Hertz summits, Gaussian heights) and
+/// Persson on its radial spectrum against the exact elastic
+/// boundary-element solution of the map ([`crate::bem::compare`]) at
+/// `p/E*` = [`MODEL_ERROR_LOADS`] (area fractions and gaps at a given
+/// `p/E*` do not depend on `E*`), `(model - exact)/exact`; measured when
+/// the estimated CPU time is at most 2 s
+/// ([`crate::study::map_error::CPU_FLOOR`]).
+#[derive(Serialize, Debug, Clone)]
+pub struct SurfaceModelError {
+    /// What it is measured against, or why it is not.
+    pub reference: String,
+    /// The states' mean pressures over `E*`.
+    pub pressure_over_estar: Vec<f64>,
+    /// The exact real-area fractions.
+    pub exact_area_fraction: Vec<f64>,
+    /// The exact mean gaps (m).
+    pub exact_mean_gap_m: Vec<f64>,
+    /// GW's area fraction against the exact one at the same pressure.
+    pub area: Vec<Option<f64>>,
+    /// GW's pressure at the exact mean gap against the exact pressure.
+    pub load: Vec<Option<f64>>,
+    /// GW's mean gap against the exact one at the same pressure.
+    pub mean_gap: Vec<Option<f64>>,
+    /// Persson's area fraction against the exact one.
+    pub persson_area: Vec<Option<f64>>,
+    /// Persson's mean gap against the exact one.
+    pub persson_mean_gap: Vec<Option<f64>>,
+    /// Estimated CPU time (s) of the exact solution (the output holds no
+    /// measured time, so that it is the same bytes run after run).
+    pub estimate_s: f64,
+}
+
+impl SurfaceModelError {
+    fn unmeasured(reference: String, estimate_s: f64) -> Self {
+        SurfaceModelError {
+            reference,
+            pressure_over_estar: Vec::new(),
+            exact_area_fraction: Vec::new(),
+            exact_mean_gap_m: Vec::new(),
+            area: Vec::new(),
+            load: Vec::new(),
+            mean_gap: Vec::new(),
+            persson_area: Vec::new(),
+            persson_mean_gap: Vec::new(),
+            estimate_s,
+        }
+    }
+
+    /// A warning per output whose largest difference is above 10 %.
+    pub fn warnings(&self) -> Vec<String> {
+        [
+            ("GW's real contact area", "model_error.area", &self.area),
+            (
+                "GW's load at the same mean gap",
+                "model_error.load",
+                &self.load,
+            ),
+            ("GW's mean gap", "model_error.mean_gap", &self.mean_gap),
+            (
+                "Persson's real contact area",
+                "model_error.persson_area",
+                &self.persson_area,
+            ),
+            (
+                "Persson's mean gap",
+                "model_error.persson_mean_gap",
+                &self.persson_mean_gap,
+            ),
+        ]
+        .into_iter()
+        .flat_map(|(name, key, v)| {
+            // A difference the model or the exact solution cannot give
+            // (no contact, or a value that is not a finite number) is null.
+            let nulls = v
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| e.is_none())
+                .map(|(k, _)| {
+                    format!(
+                        "{key}[{k}] at p/E* = {:e} is null: {name} or the exact solution has no \
+                     finite nonzero value there",
+                        self.pressure_over_estar[k]
+                    )
+                });
+            let largest = v
+                .iter()
+                .enumerate()
+                .filter_map(|(k, e)| e.map(|e| (k, e)))
+                .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+                .filter(|(_, e)| e.abs() > crate::study::map_error::WARN_ABOVE)
+                .map(|(k, e)| {
+                    format!(
+                        "model error: {name} on this map differs from the exact elastic solution \
+                         by {:+.1} % at p/E* = {:e} ({key})",
+                        100.0 * e,
+                        self.pressure_over_estar[k]
+                    )
+                });
+            largest.into_iter().chain(nulls).collect::<Vec<_>>()
+        })
+        .collect()
+    }
+}
+
+/// GW's mean pressure (Pa) where its mean gap is `u` (m), searched from
+/// its state at `p` (Pa) in steps of a tenth of `sigma`.
+fn gw_pressure_at_gap(gw: &crate::gw::GwOnMoments, u: f64, p: f64) -> Option<f64> {
+    let g0 = gw.state(p).ok()?;
+    let f = |x: f64| gw.state_at(x).map_or(f64::NAN, |g| g.mean_gap - u);
+    let (mut lo, mut hi) = (g0.separation, g0.separation);
+    for _ in 0..400 {
+        if f(lo) <= 0.0 {
+            break;
+        }
+        lo -= 0.1 * gw.sigma;
+    }
+    for _ in 0..400 {
+        if f(hi) >= 0.0 {
+            break;
+        }
+        hi += 0.1 * gw.sigma;
+    }
+    let x = crate::numeric::roots::brent(f, lo, hi, 1e-12 * gw.sigma)?;
+    gw.state_at(x).ok().map(|g| g.pressure)
+}
+
+/// [`SurfaceModelError`] of `map` with `c` its characterisation.
+fn model_error(
+    map: &HeightMap,
+    input: &SurfaceInput,
+    c: &Characterisation,
+) -> CommandResult<SurfaceModelError> {
+    use crate::bem::compare::{compare, CompareInput, Control};
+    use crate::study::map_error::{estimate_seconds, CPU_FLOOR, EXACT_TOLERANCE};
+    let (rows, cols) = (map.rows(), map.cols());
+    let estimate = estimate_seconds(rows, cols, input.periodic, MODEL_ERROR_LOADS.len());
+    let options = crate::bem::Options {
+        tolerance: EXACT_TOLERANCE,
+        ..Default::default()
+    };
+    let memory = crate::bem::memory_estimate(rows, cols, input.periodic);
+    if estimate > CPU_FLOOR || memory > options.memory_limit {
+        return Ok(SurfaceModelError::unmeasured(
+            format!(
+                "not measured: the exact elastic solution of this {rows} x {cols} map at {} loads \
+                 would cost an estimated {estimate:.1} s of CPU ({:.0} MiB), above {CPU_FLOOR} s \
+                 (or 1 GiB); `asperity bem` measures it at the pressures you give",
+                MODEL_ERROR_LOADS.len(),
+                memory as f64 / 1048576.0
+            ),
+            estimate,
+        ));
+    }
+    let estar = input.estar.unwrap_or(1e9);
+    let cmp = compare(
+        map,
+        &CompareInput {
+            pixel_size: input.pixel_size,
+            pixel_size_y: input.pixel_size_y,
+            contact_modulus: estar,
+            periodic: input.periodic,
+            control: Control::Pressure,
+            targets: MODEL_ERROR_LOADS.iter().map(|l| l * estar).collect(),
+            adhesion: None,
+            gamma: 1.0,
+            resistivity: None,
+            options,
+        },
+    );
+    let cmp = match cmp {
+        Ok(c) => c,
+        Err(e) if matches!(e.error, Error::Cancelled) => return Err(e.error),
+        Err(e) => {
+            return Ok(SurfaceModelError::unmeasured(
+                format!(
+                    "not measured: the exact elastic solution failed ({})",
+                    e.error
+                ),
+                estimate,
+            ))
+        }
+    };
+    let gw = crate::gw::GwOnMoments::new(&c.moments, estar, c.nominal_area_m2()).ok();
+    let states = &cmp.states;
+    Ok(SurfaceModelError {
+        reference: format!(
+            "exact elastic half-space, FFT boundary elements, tolerance {EXACT_TOLERANCE:e}, on \
+             the same map{}; GW on the map's moments (Hertz summits), Persson (gamma = 1) on its \
+             radial spectrum; area and mean gap at the same pressure, load at the same mean gap",
+            if input.periodic {
+                " (periodic)"
+            } else {
+                " (padded to twice its size)"
+            }
+        ),
+        pressure_over_estar: MODEL_ERROR_LOADS.to_vec(),
+        exact_area_fraction: states.iter().map(|s| s.solution.area_fraction()).collect(),
+        exact_mean_gap_m: states.iter().map(|s| s.solution.mean_gap).collect(),
+        area: cmp.differences.iter().map(|d| d.gw_area).collect(),
+        load: states
+            .iter()
+            .map(|s| {
+                let (p, u) = (s.solution.mean_pressure, s.solution.mean_gap);
+                gw.as_ref()
+                    .and_then(|g| gw_pressure_at_gap(g, u, p))
+                    .map(|q| q / p - 1.0)
+            })
+            .collect(),
+        mean_gap: cmp.differences.iter().map(|d| d.gw_mean_gap).collect(),
+        persson_area: cmp.differences.iter().map(|d| d.persson_area).collect(),
+        persson_mean_gap: cmp.differences.iter().map(|d| d.persson_mean_gap).collect(),
+        estimate_s: estimate,
+    })
+}
+
 /// Characterises `map` (heights in m; `asperity surface`).
 ///
 /// # Errors
@@ -187,7 +409,11 @@ pub fn characterise(
         plasticity_index: psi,
         source: None,
         warnings: Vec::new(),
+        model_error: SurfaceModelError::unmeasured(String::new(), 0.0),
     };
+    let mut out = out;
+    out.model_error = model_error(topo.map(), input, &c)?;
+    out.warnings.extend(out.model_error.warnings());
     Ok((out, c))
 }
 

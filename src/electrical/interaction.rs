@@ -41,14 +41,7 @@ impl Interaction {
     }
 }
 
-impl crate::named::Named for Interaction {
-    const ALL: &'static [Self] = &Interaction::ALL;
-    const WHAT: &'static str = "interaction";
-    fn name(self) -> &'static str {
-        Interaction::name(self)
-    }
-}
-crate::serde_by_name!(Interaction);
+crate::named_enum!(Interaction, "interaction");
 
 /// Sums over the spots of one state.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

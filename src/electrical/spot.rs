@@ -49,14 +49,7 @@ impl Spreading {
     }
 }
 
-impl crate::named::Named for Spreading {
-    const ALL: &'static [Self] = &Spreading::ALL;
-    const WHAT: &'static str = "spreading";
-    fn name(self) -> &'static str {
-        Spreading::name(self)
-    }
-}
-crate::serde_by_name!(Spreading);
+crate::named_enum!(Spreading, "spreading");
 
 /// Mikrajuddin et al. (1999) fit of Wexler's `Gamma(K)`,
 /// `(1 + 0.83 K)/(1 + 1.33 K)`: 1 at `K = 0`, `0.83/1.33` as `K -> inf`.

@@ -278,6 +278,7 @@ impl Spots {
         // the floating-point range.
         let own = (0..n).map(|i| m[(i, i)]);
         let own_min = own.clone().fold(f64::INFINITY, f64::min);
+        let own_all_finite = own.clone().all(f64::is_finite);
         let own_max = own.fold(0.0, f64::max);
         let mut closest = f64::INFINITY;
         for i in 0..n {
@@ -296,10 +297,22 @@ impl Spots {
                      Ohm above a spot's own {own_min:e} Ohm)"
                 )
             } else {
+                // (no NaN in the words: a quantity that is not a number is
+                // said so)
+                let own = if own_max > 0.0 && own_max.is_finite() && own_all_finite {
+                    format!("up to {own_max:e} Ohm")
+                } else {
+                    "not all finite numbers".to_string()
+                };
+                let current = if total.is_finite() {
+                    format!("{total:e} A/V, not a positive current with a finite inverse")
+                } else {
+                    "not a finite number".to_string()
+                };
                 format!(
-                    "the spots' own resistances (up to {own_max:e} Ohm, radii down to {r_min:e} m) \
-                     put the total current {total:e} A/V out of the floating-point range: spots \
-                     this small carry no current this solve can resolve"
+                    "the spots' own resistances ({own}, radii down to {r_min:e} m) leave the \
+                     total current out of the floating-point range ({current}): spots this small \
+                     carry no current this solve can resolve"
                 )
             },
         ))

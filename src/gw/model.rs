@@ -376,12 +376,7 @@ impl GwModel {
         let (s_lo, s_hi, far) = self.height_range(d);
         let mask = obs.mask();
         if !(s_hi > s_lo) {
-            return Ok(State {
-                separation: d,
-                totals: Totals::new([0.0; SLOTS], [0.0; SLOTS], mask),
-                method: MethodUsed::Quadrature,
-                evaluations: 0,
-            });
+            return Ok(no_contact(d, mask));
         }
         if far.is_none() && self.root_rule_applies(history) {
             let plan = RootPlan { d, s_lo, s_hi };
@@ -580,12 +575,7 @@ impl GwModel {
         let mask = obs.mask();
         let (t_lo, t_hi) = ((s_lo - s0).max(0.0).sqrt(), (s_top - s0).max(0.0).sqrt());
         if !(t_hi > t_lo) {
-            return Ok(State {
-                separation: d,
-                totals: Totals::new([0.0; SLOTS], [0.0; SLOTS], mask),
-                method: MethodUsed::Quadrature,
-                evaluations: 0,
-            });
+            return Ok(no_contact(d, mask));
         }
         let mut points = Vec::with_capacity(16);
         points.extend([t_lo, t_hi]);
@@ -791,6 +781,17 @@ struct HeightRanges<'a> {
     max_interference: f64,
     support: (f64, f64),
     dist: &'a dyn HeightDistribution,
+}
+
+/// The state at separation `d` of an empty range of heights: no summit in
+/// contact, nothing evaluated.
+fn no_contact(d: f64, mask: [bool; SLOTS]) -> State {
+    State {
+        separation: d,
+        totals: Totals::new([0.0; SLOTS], [0.0; SLOTS], mask),
+        method: MethodUsed::Quadrature,
+        evaluations: 0,
+    }
 }
 
 impl HeightRanges<'_> {

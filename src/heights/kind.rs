@@ -33,14 +33,7 @@ pub struct DistributionParams {
     pub heights: Option<Vec<f64>>,
 }
 
-impl crate::named::Named for DistributionKind {
-    const ALL: &'static [Self] = &DistributionKind::ALL;
-    const WHAT: &'static str = "distribution";
-    fn name(self) -> &'static str {
-        DistributionKind::name(self)
-    }
-}
-crate::serde_by_name!(DistributionKind);
+crate::named_enum!(DistributionKind, "distribution");
 
 impl DistributionKind {
     /// Every kind, in the order tables list them.

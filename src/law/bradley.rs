@@ -59,13 +59,7 @@ impl Bradley {
 }
 
 impl AsperityLaw for Bradley {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Bradley.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "bradley"
-    }
+    identity_of_kind!(Bradley);
 
     #[inline]
     fn state(&self, delta: f64, _branch: Branch) -> ContactState {

@@ -236,13 +236,7 @@ impl Cos {
 }
 
 impl AsperityLaw for Cos {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Cos.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "cos"
-    }
+    identity_of_kind!(Cos);
 
     #[inline]
     fn state(&self, delta: f64, branch: Branch) -> ContactState {
@@ -267,16 +261,7 @@ impl AsperityLaw for Cos {
         self.curve.jump_out_interference_bar() * self.scales.interference
     }
 
-    fn cutoff_interference(&self) -> f64 {
-        self.detach_interference()
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        match branch {
-            Branch::Approach => vec![0.0],
-            Branch::Retract => vec![self.detach_interference()],
-        }
-    }
+    cutoff_at_detach!();
 
     fn pull_off(&self, control: Control) -> Option<Instability> {
         let c = &self.curve;

@@ -49,13 +49,7 @@ impl Dmt {
 }
 
 impl AsperityLaw for Dmt {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Dmt.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "dmt"
-    }
+    identity_of_kind!(Dmt);
 
     #[inline]
     fn state(&self, delta: f64, _branch: Branch) -> ContactState {
@@ -74,17 +68,7 @@ impl AsperityLaw for Dmt {
         true
     }
 
-    fn attach_interference(&self) -> f64 {
-        0.0
-    }
-
-    fn detach_interference(&self) -> f64 {
-        0.0
-    }
-
-    fn cutoff_interference(&self) -> f64 {
-        0.0
-    }
+    critical_at_first_contact!();
 
     fn breakpoints(&self, _branch: Branch) -> Vec<f64> {
         vec![0.0]

@@ -55,13 +55,7 @@ impl Hertz {
 }
 
 impl AsperityLaw for Hertz {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Hertz.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "hertz"
-    }
+    identity_of_kind!(Hertz);
 
     #[inline]
     fn state(&self, delta: f64, _branch: Branch) -> ContactState {
@@ -86,17 +80,7 @@ impl AsperityLaw for Hertz {
         true
     }
 
-    fn attach_interference(&self) -> f64 {
-        0.0
-    }
-
-    fn detach_interference(&self) -> f64 {
-        0.0
-    }
-
-    fn cutoff_interference(&self) -> f64 {
-        0.0
-    }
+    critical_at_first_contact!();
 
     fn breakpoints(&self, _branch: Branch) -> Vec<f64> {
         vec![0.0]

@@ -29,7 +29,9 @@
 
 use super::{AsperityLaw, Branch, ContactState, Control, Instability, LawCursor, LawKernels};
 use crate::error::{Allowed, Error, Result};
-use crate::numeric::chebyshev::{horner, monomial_coefficients};
+use crate::numeric::chebyshev::{
+    horner, lobatto_coefficients, lobatto_nodes, monomial_coefficients,
+};
 use crate::numeric::lanes::{sqrt_lanes, StateSums, STATE_LANES};
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -74,30 +76,6 @@ pub struct InterpolatedLaw {
     evaluations: usize,
     /// The wrapped law's attach interference (m).
     attach: f64,
-}
-
-/// Chebyshev–Lobatto nodes `cos(pi k / DEG)` on `[-1, 1]`, descending.
-fn nodes() -> [f64; DEG + 1] {
-    std::array::from_fn(|k| (PI * k as f64 / DEG as f64).cos())
-}
-
-/// Coefficients `c_j` of `sum' c_j T_j` interpolating `f` at the Lobatto
-/// nodes (DCT-I; the first and last coefficients halved).
-fn chebyshev_coefficients(f: &[f64; DEG + 1]) -> [f64; DEG + 1] {
-    let n = DEG as f64;
-    std::array::from_fn(|j| {
-        let mut s = 0.0;
-        for (k, fk) in f.iter().enumerate() {
-            let w = if k == 0 || k == DEG { 0.5 } else { 1.0 };
-            s += w * fk * (PI * (j * k) as f64 / n).cos();
-        }
-        let c = 2.0 * s / n;
-        if j == 0 || j == DEG {
-            0.5 * c
-        } else {
-            c
-        }
-    })
 }
 
 impl InterpolatedLaw {
@@ -274,7 +252,7 @@ fn fit_piece(
     table: &mut BranchTable,
     evals: &mut usize,
 ) -> Result<()> {
-    let x = nodes();
+    let x: [f64; DEG + 1] = lobatto_nodes();
     let mut stack = vec![(a, b)];
     let mut accepted = Vec::new();
     while let Some((l, r)) = stack.pop() {
@@ -288,8 +266,8 @@ fn fit_piece(
         }
         *evals += DEG + 1;
         // Accepted on the form evaluated: power-basis coefficients.
-        let cl = monomial_coefficients(&chebyshev_coefficients(&fl));
-        let cr = monomial_coefficients(&chebyshev_coefficients(&fr));
+        let cl = monomial_coefficients(&lobatto_coefficients(&fl));
+        let cr = monomial_coefficients(&lobatto_coefficients(&fr));
         let mut ok = true;
         for k in 0..DEG {
             let t = (PI * (k as f64 + 0.5) / DEG as f64).cos();
@@ -821,9 +799,9 @@ mod tests {
 
     #[test]
     fn coefficients_reproduce_a_polynomial() {
-        let x = nodes();
+        let x: [f64; DEG + 1] = lobatto_nodes();
         let f: [f64; DEG + 1] = std::array::from_fn(|k| 3.0 * x[k].powi(5) - x[k] + 0.5);
-        let c = chebyshev_coefficients(&f);
+        let c = lobatto_coefficients(&f);
         let a = monomial_coefficients(&c);
         for t in [-1.0, -0.3, 0.0, 0.77, 1.0] {
             let want: f64 = 3.0 * f64::powi(t, 5) - t + 0.5;

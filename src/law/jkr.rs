@@ -337,13 +337,7 @@ impl Jkr {
 }
 
 impl AsperityLaw for Jkr {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Jkr.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "jkr"
-    }
+    identity_of_kind!(Jkr);
 
     #[inline]
     fn state(&self, delta: f64, branch: Branch) -> ContactState {
@@ -361,16 +355,7 @@ impl AsperityLaw for Jkr {
         JUMP_OUT_INTERFERENCE * self.scales.interference
     }
 
-    fn cutoff_interference(&self) -> f64 {
-        self.detach_interference()
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        match branch {
-            Branch::Approach => vec![0.0],
-            Branch::Retract => vec![self.detach_interference()],
-        }
-    }
+    cutoff_at_detach!();
 
     fn pull_off(&self, control: Control) -> Option<Instability> {
         let s = self.scales;

@@ -60,14 +60,7 @@ impl LawInputs {
     }
 }
 
-impl crate::named::Named for LawKind {
-    const ALL: &'static [Self] = &LawKind::ALL;
-    const WHAT: &'static str = "law";
-    fn name(self) -> &'static str {
-        LawKind::name(self)
-    }
-}
-crate::serde_by_name!(LawKind);
+crate::named_enum!(LawKind, "law");
 
 /// Evaluation cost (ns) above which a law is replaced by a Chebyshev table
 /// on a curve: a table lookup costs ~20 ns and pays for its few thousand

@@ -635,23 +635,23 @@ impl MaugisCurve {
         let lo = samples[k.saturating_sub(1)];
         let hi = samples[(k + 1).min(samples.len() - 1)];
         let mid = samples[k];
-        if mid.uses_t() {
-            brent(
-                |t| deriv(self, Angle::from_t(t)),
-                lo.t.min(hi.t),
-                lo.t.max(hi.t),
-                XTOL,
-            )
-            .map_or(mid, Angle::from_t)
-        } else {
-            brent(
-                |y| deriv(self, Angle::from_y(y)),
-                lo.y.min(hi.y),
-                lo.y.max(hi.y),
-                XTOL,
-            )
-            .map_or(mid, Angle::from_y)
-        }
+        // The search runs in the exact one of `t` and `y` at the middle.
+        let uses_t = mid.uses_t();
+        let of = |a: &Angle| if uses_t { a.t } else { a.y };
+        let at = |x: f64| {
+            if uses_t {
+                Angle::from_t(x)
+            } else {
+                Angle::from_y(x)
+            }
+        };
+        brent(
+            |x| deriv(self, at(x)),
+            of(&lo).min(of(&hi)),
+            of(&lo).max(of(&hi)),
+            XTOL,
+        )
+        .map_or(mid, at)
     }
 
     /// Zero-load point between the pull-off angle and deep contact.
@@ -754,13 +754,7 @@ impl Maugis {
 }
 
 impl AsperityLaw for Maugis {
-    fn radius_scaling(&self) -> Option<super::RadiusScaling> {
-        super::LawKind::Maugis.radius_scaling()
-    }
-
-    fn name(&self) -> &'static str {
-        "maugis"
-    }
+    identity_of_kind!(Maugis);
 
     #[inline]
     fn state(&self, delta: f64, branch: Branch) -> ContactState {

@@ -54,6 +54,59 @@ macro_rules! delegate_critical_points {
     };
 }
 
+/// The critical interferences of a law with no force out of contact and
+/// no jump (Hertz, DMT, the plastic laws): it attaches and detaches at
+/// first contact, and the load is zero below it.
+macro_rules! critical_at_first_contact {
+    () => {
+        fn attach_interference(&self) -> f64 {
+            0.0
+        }
+
+        fn detach_interference(&self) -> f64 {
+            0.0
+        }
+
+        fn cutoff_interference(&self) -> f64 {
+            0.0
+        }
+    };
+}
+
+/// The name and radius scaling of the law of [`LawKind`] `$kind`: its
+/// kind's, written once there.
+macro_rules! identity_of_kind {
+    ($kind:ident) => {
+        fn radius_scaling(&self) -> Option<$crate::law::RadiusScaling> {
+            $crate::law::LawKind::$kind.radius_scaling()
+        }
+
+        fn name(&self) -> &'static str {
+            $crate::law::LawKind::$kind.name()
+        }
+    };
+}
+
+/// The cutoff and breakpoints of an adhesive law whose force acts only in
+/// contact (JKR, its shaped form, COS): the load is zero below the jump-out
+/// interference `detach_interference`, where the attached branch ends; the
+/// approach branch kinks at first contact (0), the retraction branch jumps
+/// at detachment.
+macro_rules! cutoff_at_detach {
+    () => {
+        fn cutoff_interference(&self) -> f64 {
+            self.detach_interference()
+        }
+
+        fn breakpoints(&self, branch: Branch) -> Vec<f64> {
+            match branch {
+                Branch::Approach => vec![0.0],
+                Branch::Retract => vec![self.detach_interference()],
+            }
+        }
+    };
+}
+
 pub mod bradley;
 pub mod cos;
 mod cursor;

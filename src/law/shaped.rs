@@ -152,16 +152,7 @@ impl AsperityLaw for ShapedExact {
         self.jkr.jump_out_displacement_control().interference
     }
 
-    fn cutoff_interference(&self) -> f64 {
-        self.detach_interference()
-    }
-
-    fn breakpoints(&self, branch: Branch) -> Vec<f64> {
-        match branch {
-            Branch::Approach => vec![0.0],
-            Branch::Retract => vec![self.detach_interference()],
-        }
-    }
+    cutoff_at_detach!();
 
     fn pull_off(&self, control: Control) -> Option<Instability> {
         Some(match control {

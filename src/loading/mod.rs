@@ -7,7 +7,7 @@
 mod curve;
 mod hysteresis;
 mod model;
-mod observable;
+pub(crate) mod observable;
 mod program;
 mod state;
 

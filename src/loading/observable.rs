@@ -414,11 +414,13 @@ impl Totals {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
+    /// A custom per-asperity observable for tests: the contact perimeter
+    /// `2 pi a` (m).
     #[derive(Debug)]
-    struct Perimeter;
+    pub(crate) struct Perimeter;
     impl PerAsperity for Perimeter {
         fn name(&self) -> &str {
             "perimeter_m"

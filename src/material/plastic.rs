@@ -239,14 +239,7 @@ impl Variant {
     }
 }
 
-impl crate::named::Named for Variant {
-    const ALL: &'static [Self] = &Variant::ALL;
-    const WHAT: &'static str = "law";
-    fn name(self) -> &'static str {
-        Variant::name(self)
-    }
-}
-crate::serde_by_name!(Variant);
+crate::named_enum!(Variant, "law");
 
 /// Deformation regime of one contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -48,6 +48,7 @@ mod comparison;
 mod measured;
 mod population;
 pub mod pull_off;
+pub mod quantiles;
 mod scaling;
 mod summation;
 

@@ -10,8 +10,10 @@
 //! than every realisation's. [`realised_pull_off`] is one realisation's
 //! pull-off (the same number for the Monte Carlo mode and for the
 //! statistics); [`pull_off_populations`] draws many; [`PullOffStatistics`]
-//! summarises them with standard errors and distribution-free intervals.
+//! summarises them with standard errors and distribution-free intervals
+//! (order statistics whose ranks come from the exact binomial distribution).
 
+pub use super::quantiles::{quantile_ranks, widest_coverage, QuantileInterval, RankInterval};
 use super::{MonteCarlo, Population, PopulationSpec, RadiusSpec, SummitLaw};
 use crate::error::{Error, Result};
 use crate::heights::HeightDistribution;
@@ -356,15 +358,20 @@ impl PullOffStatistics {
     }
 
     /// A distribution-free interval (N) for the population's true
-    /// `q`-quantile at [`INTERVAL_CONFIDENCE`]: the order statistics of
-    /// ranks `n q -/+ 1.96 sqrt(n q (1 - q))` (the normal approximation to
-    /// the binomial count below the quantile; Conover 1999, sec. 3.2),
-    /// clamped to the sample.
-    pub fn quantile_interval(&self, q: f64) -> (f64, f64) {
-        let n = self.sorted.len() as f64;
-        let half = 1.959_963_984_540_054 * (n * q * (1.0 - q)).sqrt();
-        let at = |r: f64| self.sorted[(r.max(1.0).min(n) as usize) - 1];
-        (at((n * q - half).floor()), at((n * q + half).ceil() + 1.0))
+    /// `q`-quantile at [`INTERVAL_CONFIDENCE`]: the order statistics of the
+    /// ranks [`quantile_ranks`] finds from the exact binomial distribution
+    /// (the shortest pair whose coverage reaches the level), with that
+    /// coverage; `Err` with the widest pair's coverage (the sample's
+    /// minimum and maximum, [`widest_coverage`]) when no pair reaches it.
+    pub fn quantile_interval(&self, q: f64) -> std::result::Result<QuantileInterval, f64> {
+        let n = self.sorted.len();
+        match quantile_ranks(n, q, INTERVAL_CONFIDENCE) {
+            Some(r) => Ok(QuantileInterval {
+                bounds: (self.sorted[r.lower - 1], self.sorted[r.upper - 1]),
+                ranks: r,
+            }),
+            None => Err(widest_coverage(n, q)),
+        }
     }
 
     /// The fraction of populations whose pull-off is more tensile than

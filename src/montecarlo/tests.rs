@@ -18,11 +18,13 @@ use crate::loading::{Curve, History, LoadingModel, LoadingProgram, Observables, 
 use crate::material::{Adhesion, AsperityContact};
 use std::sync::Arc;
 
-const R: f64 = 1e-6;
-const SIGMA: f64 = 5e-9;
-const E_STAR: f64 = 4.8e10;
+pub(super) const R: f64 = 1e-6;
+pub(super) const SIGMA: f64 = 5e-9;
+pub(super) const E_STAR: f64 = 4.8e10;
 
-fn population(n: usize, seed: u64) -> Arc<Population> {
+/// `n` summits of radius [`R`] with GW's exponential heights of scale
+/// [`SIGMA`], drawn with `seed`.
+pub(super) fn population(n: usize, seed: u64) -> Arc<Population> {
     let spec = PopulationSpec::new(n, SIGMA, RadiusSpec::Fixed(R), seed).unwrap();
     Arc::new(Population::sample(&spec, &Exponential::new()).unwrap())
 }

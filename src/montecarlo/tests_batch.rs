@@ -3,6 +3,7 @@
 //! plastic asperities remember each summit's maximum interference; the
 //! honesty of standard errors and z-scores.
 
+use super::tests::{population, E_STAR, R, SIGMA};
 use super::*;
 use crate::gw::{GwModel, RoughSurface};
 use crate::heights::Exponential;
@@ -12,15 +13,6 @@ use crate::law::{AsperityLaw, Branch, Dmt, Hertz, Jkr, LawKernels, Maugis, Radiu
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables};
 use crate::material::plastic::{Plasticity, Variant};
 use std::sync::Arc;
-
-const R: f64 = 1e-6;
-const SIGMA: f64 = 5e-9;
-const E_STAR: f64 = 4.8e10;
-
-fn population(n: usize, seed: u64) -> Arc<Population> {
-    let spec = PopulationSpec::new(n, SIGMA, RadiusSpec::Fixed(R), seed).unwrap();
-    Arc::new(Population::sample(&spec, &Exponential::new()).unwrap())
-}
 
 fn laws() -> Vec<Arc<dyn LawKernels>> {
     let md = Arc::new(Maugis::new(R, E_STAR, 0.5, 0.3).unwrap());

@@ -1,6 +1,38 @@
 //! Chebyshev series evaluation (Clenshaw), and the power-basis form of a
 //! short series with Horner's rule. Plain multiply-adds: without a target
-//! FMA feature `f64::mul_add` is a slow library call.
+//! FMA feature `f64::mul_add` is a slow library call. The interpolant at
+//! the Chebyshev–Lobatto nodes ([`lobatto_nodes`], [`lobatto_coefficients`])
+//! gives the series.
+
+use std::f64::consts::PI;
+
+/// The `N` Chebyshev–Lobatto nodes `cos(pi k / (N - 1))`, `k = 0..N`, on
+/// `[-1, 1]`, descending (`N >= 2`).
+pub fn lobatto_nodes<const N: usize>() -> [f64; N] {
+    let deg = N - 1;
+    std::array::from_fn(|k| (PI * k as f64 / deg as f64).cos())
+}
+
+/// Coefficients `c_j` of `sum' c_j T_j` (degree `N - 1`) interpolating `f`
+/// at the `N` Lobatto nodes of [`lobatto_nodes`]: a DCT-I, the first and
+/// last coefficients halved.
+pub fn lobatto_coefficients<const N: usize>(f: &[f64; N]) -> [f64; N] {
+    let deg = N - 1;
+    let n = deg as f64;
+    std::array::from_fn(|j| {
+        let mut s = 0.0;
+        for (k, fk) in f.iter().enumerate() {
+            let w = if k == 0 || k == deg { 0.5 } else { 1.0 };
+            s += w * fk * (PI * (j * k) as f64 / n).cos();
+        }
+        let c = 2.0 * s / n;
+        if j == 0 || j == deg {
+            0.5 * c
+        } else {
+            c
+        }
+    })
+}
 
 /// `sum_j c_j T_j(x)` for `x` in `[-1, 1]` by Clenshaw's recurrence.
 #[inline]

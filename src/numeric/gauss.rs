@@ -234,18 +234,7 @@ fn exp2_approx(y: f64) -> f64 {
     let k = (y + 1024.0) as i64 - 1024;
     // r in [0, ln 2); exp(r) by Taylor to r^9/9! (remainder < 4e-9 relative).
     let r = (y - k as f64) * std::f64::consts::LN_2;
-    const INV_FACT: [f64; 10] = [
-        1.0,
-        1.0,
-        0.5,
-        1.0 / 6.0,
-        1.0 / 24.0,
-        1.0 / 120.0,
-        1.0 / 720.0,
-        1.0 / 5040.0,
-        1.0 / 40320.0,
-        1.0 / 362_880.0,
-    ];
+    const INV_FACT: &[f64; 14] = &super::INV_FACTORIAL;
     let mut p = INV_FACT[9];
     for c in INV_FACT[..9].iter().rev() {
         p = p * r + c;

@@ -304,7 +304,19 @@ impl RoughSphere {
                 }
             }
             if let Some(frac) = self.central_area_fraction(s)? {
-                if frac > AREA_FRACTION_WARNING {
+                if frac > 1.0 {
+                    // GW sums its summits' areas as if they never overlapped:
+                    // above 1 that sum is not a fraction of anything, and the
+                    // bump's real area built on it is no result.
+                    real_area = None;
+                    warnings.push(format!(
+                        "model: the real-area fraction at the centre is {frac:.2}, above 1: GW's \
+                         independent summits overlap there and their summed areas are not a \
+                         fraction, so the bump's real area is null; its contacts and resistance \
+                         count overlapping summits (a smaller load, or a harder material, keeps \
+                         the centre below 1)"
+                    ));
+                } else if frac > AREA_FRACTION_WARNING {
                     warnings.push(format!(
                         "model: the real-area fraction at the centre is {frac:.2} (> \
                          {AREA_FRACTION_WARNING}): GW's independent summits overstate the \

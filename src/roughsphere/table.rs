@@ -12,7 +12,7 @@
 //! geometric refinement towards it).
 
 use crate::error::{Error, Result};
-use crate::numeric::chebyshev::clenshaw;
+use crate::numeric::chebyshev::{clenshaw, lobatto_coefficients, lobatto_nodes};
 use std::f64::consts::PI;
 
 /// Polynomial degree per panel.
@@ -32,28 +32,6 @@ pub(crate) struct Table {
     coef: Vec<[f64; DEG + 1]>,
     /// Coefficients of the derivative (in the panel's own variable).
     dcoef: Vec<[f64; DEG + 1]>,
-}
-
-fn lobatto() -> [f64; DEG + 1] {
-    std::array::from_fn(|k| (PI * k as f64 / DEG as f64).cos())
-}
-
-/// Interpolating coefficients at the Lobatto nodes (DCT-I, ends halved).
-fn coefficients(f: &[f64; DEG + 1]) -> [f64; DEG + 1] {
-    let n = DEG as f64;
-    std::array::from_fn(|j| {
-        let mut s = 0.0;
-        for (k, fk) in f.iter().enumerate() {
-            let w = if k == 0 || k == DEG { 0.5 } else { 1.0 };
-            s += w * fk * (PI * (j * k) as f64 / n).cos();
-        }
-        let c = 2.0 * s / n;
-        if j == 0 || j == DEG {
-            0.5 * c
-        } else {
-            c
-        }
-    })
 }
 
 /// Chebyshev coefficients of the derivative (d/dx on `[-1, 1]`).
@@ -86,7 +64,7 @@ impl Table {
         scale: f64,
         f: &dyn Fn(&[f64]) -> Result<Vec<f64>>,
     ) -> Result<Self> {
-        let nodes = lobatto();
+        let nodes: [f64; DEG + 1] = lobatto_nodes();
         // Known kinks of the function start their own panels.
         let mut cuts: Vec<f64> = splits
             .iter()
@@ -111,7 +89,7 @@ impl Table {
             let ys = f(&xs)?;
             evaluations += xs.len();
             let vals: [f64; DEG + 1] = std::array::from_fn(|k| ys[k]);
-            let c = coefficients(&vals);
+            let c = lobatto_coefficients(&vals);
             let ok = tests.iter().zip(&ys[DEG + 1..]).all(|(t, y)| {
                 let e = (clenshaw(&c, *t) - y).abs();
                 e <= tol * (y.abs() + scale)

@@ -103,22 +103,7 @@ pub(crate) fn exp_lane(y: f64) -> f64 {
     const SHIFT: f64 = 6_755_399_441_055_744.0;
     let kf = (y * std::f64::consts::LOG2_E + SHIFT) - SHIFT;
     let r = (y - kf * LN2_HI) - kf * LN2_LO;
-    const INV_FACT: [f64; 14] = [
-        1.0,
-        1.0,
-        0.5,
-        1.0 / 6.0,
-        1.0 / 24.0,
-        1.0 / 120.0,
-        1.0 / 720.0,
-        1.0 / 5040.0,
-        1.0 / 40320.0,
-        1.0 / 362_880.0,
-        1.0 / 3_628_800.0,
-        1.0 / 39_916_800.0,
-        1.0 / 479_001_600.0,
-        1.0 / 6_227_020_800.0,
-    ];
+    const INV_FACT: &[f64; 14] = &crate::numeric::INV_FACTORIAL;
     let mut p = INV_FACT[13];
     for j in (0..13).rev() {
         p = p * r + INV_FACT[j];

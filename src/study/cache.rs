@@ -32,7 +32,9 @@ struct Entry {
 
 /// FNV-1a, 64 bits (Fowler–Noll–Vo): a checksum against accidental or
 /// hand-made changes, not an authentication.
-fn fnv1a64(bytes: &[u8]) -> u64 {
+/// FNV-1a (64-bit) of `bytes`: the checksum of cache entries and of a
+/// sweep's result rows.
+pub(crate) fn fnv1a64(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
         (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
     })

@@ -25,6 +25,7 @@
 
 pub mod atomic;
 pub mod cache;
+pub mod map_error;
 pub mod measured;
 pub mod memory;
 pub mod model_error;

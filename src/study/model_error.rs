@@ -13,7 +13,9 @@ use crate::error::Result;
 use crate::gw::Accuracy;
 use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
 use crate::study::plan::FullSolver;
+use crate::study::scene::LawName;
 
+use super::map_error::MapModelError;
 pub use crate::study::plan::REFERENCE_RTOL;
 
 /// A model error larger than this (relative) is a warning.
@@ -40,6 +42,10 @@ pub struct ModelError {
     /// `loads`, in order), at the state's separation; empty when none are
     /// listed or the error is unmeasured.
     pub listed_loads: Vec<Option<f64>>,
+    /// On a measured map: GW's model error against the exact elastic
+    /// solution of the map ([`super::map_error`]), or why it is not
+    /// measured.
+    pub map: Option<MapModelError>,
 }
 
 impl ModelError {
@@ -53,6 +59,23 @@ impl ModelError {
             reference_max_load: None,
             reference_hysteresis_energy: None,
             listed_loads: Vec::new(),
+            map: None,
+        }
+    }
+
+    /// The reference sentence with the map's: what the per-state errors
+    /// are measured against, then what the headline outputs' are.
+    pub fn full_reference(&self) -> String {
+        match &self.map {
+            Some(m) if !m.states.is_empty() => format!(
+                "{}. Pull-off, max load and hysteresis energy: {}",
+                m.reference, self.reference
+            ),
+            Some(m) => format!(
+                "{}; area, load and mean gap: {}",
+                self.reference, m.reference
+            ),
+            None => self.reference.clone(),
         }
     }
 
@@ -102,8 +125,14 @@ impl ModelError {
     }
 
     /// Warnings for the outputs whose model error exceeds
-    /// [`MODEL_ERROR_WARN`].
-    pub fn warnings(&self, law: &str) -> Vec<String> {
+    /// [`MODEL_ERROR_WARN`], advising the full-solver law by the
+    /// `law.kind` values that give it, other than the scene's own `given`.
+    pub fn warnings(&self, law: &str, given: LawName) -> Vec<String> {
+        let advice = if given == LawName::Auto {
+            "law.kind = \"calibrated\" uses the full-solver law"
+        } else {
+            "law.kind = \"calibrated\" (or \"auto\") uses the full-solver law"
+        };
         [
             ("pull-off", self.pull_off, self.reference_pull_off, "N"),
             ("max load", self.max_load, self.reference_max_load, "N"),
@@ -122,12 +151,12 @@ impl ModelError {
                 let reference = r.map_or(String::new(), |r| format!(" ({r:.4e} {unit})"));
                 format!(
                     "model error: the {name} of law {law} differs by {:.1} % from the full \
-                     Lennard-Jones solver's law on this surface{reference}; law.kind = \
-                     \"calibrated\" (or \"auto\") uses the full-solver law",
+                     Lennard-Jones solver's law on this surface{reference}; {advice}",
                     100.0 * e,
                 )
             })
         })
+        .chain(self.map.iter().flat_map(MapModelError::warnings))
         .collect()
     }
 }
@@ -271,5 +300,6 @@ fn reference_run(
         reference_max_load: ref_load,
         reference_hysteresis_energy: ref_energy,
         listed_loads: Vec::new(),
+        map: None,
     })
 }

@@ -10,7 +10,7 @@ use crate::loading::{History, LoadingModel, LoadingProgram, Observables, PullOff
 use crate::montecarlo::pull_off::{agrees_with_integral, scatter_below};
 use crate::montecarlo::pull_off::{
     candidate_separations, population_model, pull_off_evaluations, pull_off_populations,
-    retraction_loads_at, PullOffStatistics,
+    retraction_loads_at, widest_coverage, PullOffStatistics, INTERVAL_CONFIDENCE,
 };
 use crate::montecarlo::{MonteCarlo, RadiusSpec, SummitLaw};
 use crate::numeric::mix::{derive_seed, Stream};
@@ -250,4 +250,69 @@ pub fn warning(r: &PopulationResults, rtol: f64) -> Option<String> {
         s.quantile(0.95),
         s.len(),
     ))
+}
+
+/// The fewest populations whose widest pair of order statistics (minimum
+/// and maximum) holds the true `q`-quantile with probability at least
+/// `level` ([`widest_coverage`]).
+pub fn populations_needed(q: f64, level: f64) -> usize {
+    (2..1_000_000)
+        .find(|&n| widest_coverage(n, q) >= level)
+        .unwrap_or(1_000_000)
+}
+
+/// Why the quantile intervals of `s` (the 5 % and 95 % quantiles, at
+/// [`INTERVAL_CONFIDENCE`]) are null, if they are: too few populations for
+/// any pair of order statistics to reach the confidence.
+pub fn interval_note(s: &PullOffStatistics) -> Option<String> {
+    let n = s.len();
+    let (q, level) = (0.05, INTERVAL_CONFIDENCE);
+    if s.quantile_interval(q).is_ok() && s.quantile_interval(1.0 - q).is_ok() {
+        return None;
+    }
+    Some(format!(
+        "p05_interval_N and p95_interval_N are null: of {n} populations, no pair of order \
+         statistics holds the true 5 % (or 95 %) quantile with probability >= {:.0} % (the \
+         widest, their minimum and maximum, holds it with {:.1} %, from the exact binomial \
+         distribution); {} populations are needed (montecarlo.seeds)",
+        100.0 * level,
+        100.0 * widest_coverage(n, q),
+        populations_needed(q, level)
+    ))
+}
+
+/// A warning when the populations are too few for the confidence asked:
+/// no interval of the 5 % and 95 % quantiles at [`INTERVAL_CONFIDENCE`]
+/// ([`interval_note`]), or, with a switch, too few for its
+/// `1 - confidence` quantile (`confidence`: `switch.confidence`) to lie
+/// inside the sample (with fewer than `1/(1 - confidence)` populations
+/// it is interpolated between the two most tensile pull-offs).
+pub fn confidence_warning(r: &PopulationResults, confidence: Option<f64>) -> Vec<String> {
+    let Some(s) = r.statistics.as_ref() else {
+        return Vec::new();
+    };
+    let n = s.len();
+    let mut out = Vec::new();
+    if interval_note(s).is_some() {
+        out.push(format!(
+            "pull-off population: {n} populations are too few for a {:.0} % interval of the 5 % \
+             and 95 % quantiles (p05_interval_N, p95_interval_N are null; {} are needed, \
+             montecarlo.seeds)",
+            100.0 * INTERVAL_CONFIDENCE,
+            populations_needed(0.05, INTERVAL_CONFIDENCE)
+        ));
+    }
+    if let Some(c) = confidence {
+        let needed = (1.0 / (1.0 - c)).ceil();
+        if (n as f64) < needed {
+            out.push(format!(
+                "pull-off population: switch.confidence = {c} asks for the pull-off only {:.3} % \
+                 of switches exceed, but {n} populations cannot resolve it (at least {needed:.0} \
+                 are needed): its quantile is interpolated between the two most tensile pull-offs \
+                 drawn, not resolved",
+                100.0 * (1.0 - c)
+            ));
+        }
+    }
+    out
 }

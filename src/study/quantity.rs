@@ -38,9 +38,12 @@ pub enum Reduce {
 /// text report's label and the reduction.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Headline {
-    /// Key in `summary.json` (e.g. `max_load`).
+    /// The previous release's key in `summary.json` (e.g. `max_load`),
+    /// still written there as a deprecated alias, and the name
+    /// [`Headlines::get`] takes.
     pub key: String,
-    /// Column of a sweep's `results.csv` (e.g. `max_load_N`).
+    /// Column of a sweep's `results.csv` and key in `summary.json` (e.g.
+    /// `max_load_N`).
     pub sweep: String,
     /// Label in the text report (e.g. `max load`).
     pub label: String,
@@ -194,8 +197,10 @@ pub struct Headlines(pub Vec<(Headline, Option<f64>)>);
 impl Serialize for Headlines {
     fn serialize<S: Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         let mut m = s.serialize_map(Some(self.0.len()))?;
+        // Under the key with its unit (the sweep column); the old key is a
+        // deprecated alias the summary writes at its end.
         for (h, v) in &self.0 {
-            m.serialize_entry(&h.key, v)?;
+            m.serialize_entry(&h.sweep, v)?;
         }
         m.end()
     }
@@ -428,19 +433,8 @@ impl QuantitySet {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::law::ContactState;
-    use crate::loading::{MethodUsed, PerAsperity, Totals, SLOTS};
-
-    #[derive(Debug)]
-    struct Perimeter;
-    impl PerAsperity for Perimeter {
-        fn name(&self) -> &str {
-            "perimeter_m"
-        }
-        fn value(&self, s: &ContactState) -> f64 {
-            2.0 * std::f64::consts::PI * s.radius
-        }
-    }
+    use crate::loading::observable::tests::Perimeter;
+    use crate::loading::{MethodUsed, Totals, SLOTS};
 
     fn state(values: [f64; SLOTS], present: [bool; SLOTS], d: f64) -> State {
         State {

@@ -97,6 +97,11 @@ impl Topography {
         &self.map
     }
 
+    /// The map, giving the topography up.
+    pub fn into_map(self) -> HeightMap {
+        self.map
+    }
+
     /// The pixel size along x (m).
     pub fn pixel_size(&self) -> f64 {
         self.pixel_size

@@ -149,33 +149,8 @@ struct Image<'a> {
     section: &'a Section,
 }
 
-pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
-    let (sections, _) = header(bytes)?;
-    let merged = |names: &[&str]| {
-        let mut out = Section::new();
-        for (n, s) in &sections {
-            if names.contains(&n.as_str()) {
-                out.extend(s.iter().map(|(k, v)| (k.clone(), v.clone())));
-            }
-        }
-        out
-    };
-    let files = merged(&["file list", "ec file list"]);
-    let scanner = merged(&["scanner list", "microscope list"]);
-    let scan = merged(&["ciao scan list", "afm list", "stm list", "nc afm list"]);
-    let mode = sections
-        .iter()
-        .filter_map(|(_, s)| s.get("operating mode"))
-        .next_back()
-        .map(|s| s.trim().to_string());
-    let version = files
-        .get("version")
-        .and_then(|v| u64::from_str_radix(v.trim().trim_start_matches("0x"), 16).ok())
-        .unwrap_or(0);
-    let context = files.get("start context").map_or("", |s| s.trim());
-    if mode.as_deref() == Some("Force") || context == "FOL" {
-        return Err(Bad::unsupported("force curves"));
-    }
+/// The image sections of a header in order, each with its channel name.
+fn images(sections: &[(String, Section)]) -> Result<Vec<Image<'_>>, Bad> {
     let images: Vec<Image> = sections
         .iter()
         .filter(|(n, _)| {
@@ -204,8 +179,12 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     if images.is_empty() {
         return Err(Bad::corrupt("no image section"));
     }
-    // Every image the header lists must be in the file, not only the one
-    // read: a file cut short is refused whichever channel is asked for.
+    Ok(images)
+}
+
+/// Refuses a file that ends before one of the images its header lists:
+/// a file cut short is refused whichever channel is asked for.
+fn check_present(images: &[Image], file_len: usize) -> Result<(), Bad> {
     for (k, im) in images.iter().enumerate() {
         let at = |key: &str| {
             im.section
@@ -213,49 +192,47 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
                 .and_then(|v| v.trim().parse::<usize>().ok())
         };
         if let (Some(offset), Some(length)) = (at("data offset"), at("data length")) {
-            if offset.saturating_add(length) > bytes.len() {
+            if offset.saturating_add(length) > file_len {
                 return Err(Bad::truncated(format!(
                     "image {k} '{}' ends at byte {}, the file has {}",
                     im.name,
                     offset.saturating_add(length),
-                    bytes.len()
+                    file_len
                 )));
             }
         }
     }
-    let names: Vec<String> = images.iter().map(|i| i.name.clone()).collect();
-    // The first channel with a length unit; else the first.
-    let scales: Vec<Result<(f64, String), Bad>> = images
-        .iter()
-        .map(|im| z_scale(im.section, &scanner, &scan))
-        .collect();
-    let default = scales
-        .iter()
-        .position(|s| {
-            s.as_ref()
-                .is_ok_and(|(_, u)| super::units::metres_per(u, false).is_some())
-        })
-        .unwrap_or(0);
-    let k = pick(&names, default, channel)?;
-    let im = &images[k];
-    let (scale, unit) = match &scales[k] {
-        Ok(s) => s.clone(),
-        Err(e) => return Err(e.clone()),
-    };
-    let to_m = super::units::metres_per(&unit, false).ok_or_else(|| {
-        Bad::unsupported(format!(
-            "channel {k} '{}' holds no heights (its unit is '{unit}')",
-            im.name
-        ))
-    })?;
-    let p = im.section;
-    let int = |key: &str, s: &Section| -> Result<usize, Bad> {
-        s.get(key)
-            .ok_or_else(|| Bad::corrupt(format!("no '{key}' in the image section")))?
-            .trim()
-            .parse::<usize>()
-            .map_err(|_| Bad::corrupt(format!("'{key}' is not a count")))
-    };
+    Ok(())
+}
+
+/// A count of an image or scan section.
+fn int(key: &str, s: &Section) -> Result<usize, Bad> {
+    s.get(key)
+        .ok_or_else(|| Bad::corrupt(format!("no '{key}' in the image section")))?
+        .trim()
+        .parse::<usize>()
+        .map_err(|_| Bad::corrupt(format!("'{key}' is not a count")))
+}
+
+/// Where and how one image's integers lie, and the scan's extent.
+struct Layout {
+    nx: usize,
+    ny: usize,
+    offset: usize,
+    length: usize,
+    /// The bytes a pixel by the header (the scale's 256^bpp).
+    bpp: usize,
+    /// The bytes a pixel as stored.
+    size: usize,
+    /// The scan size along x and y, in `xy_unit`.
+    sx: f64,
+    sy: f64,
+    xy_unit: String,
+}
+
+/// The layout of image section `p`, with the scan list `scan` (its global
+/// sizes and slow-axis size) and the file's `version`.
+fn layout(p: &Section, scan: &Section, version: u64) -> Result<Layout, Bad> {
     let mut nx = int("samps/line", p)?;
     let mut ny = int("number of lines", p)?;
     let offset = int("data offset", p)?;
@@ -303,7 +280,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             None => (sx, sy, xy_unit) = (*f, *s, fu.clone()),
         }
     }
-    let global = int("samps/line", &scan).ok().zip(int("lines", &scan).ok());
+    let global = int("samps/line", scan).ok().zip(int("lines", scan).ok());
     if let Some((gx, gy)) = global {
         let use_global = length != nx * ny * size
             && (length == gx * gy * size || (nx * ny * size > length && length >= gx * gy * size));
@@ -317,21 +294,90 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             sy *= ny as f64 / gy as f64;
         }
     }
+    Ok(Layout {
+        nx,
+        ny,
+        offset,
+        length,
+        bpp,
+        size,
+        sx,
+        sy,
+        xy_unit,
+    })
+}
+
+pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
+    let (sections, _) = header(bytes)?;
+    let merged = |names: &[&str]| {
+        let mut out = Section::new();
+        for (n, s) in &sections {
+            if names.contains(&n.as_str()) {
+                out.extend(s.iter().map(|(k, v)| (k.clone(), v.clone())));
+            }
+        }
+        out
+    };
+    let files = merged(&["file list", "ec file list"]);
+    let scanner = merged(&["scanner list", "microscope list"]);
+    let scan = merged(&["ciao scan list", "afm list", "stm list", "nc afm list"]);
+    let mode = sections
+        .iter()
+        .filter_map(|(_, s)| s.get("operating mode"))
+        .next_back()
+        .map(|s| s.trim().to_string());
+    let version = files
+        .get("version")
+        .and_then(|v| u64::from_str_radix(v.trim().trim_start_matches("0x"), 16).ok())
+        .unwrap_or(0);
+    let context = files.get("start context").map_or("", |s| s.trim());
+    if mode.as_deref() == Some("Force") || context == "FOL" {
+        return Err(Bad::unsupported("force curves"));
+    }
+    let images = images(&sections)?;
+    check_present(&images, bytes.len())?;
+    let names: Vec<String> = images.iter().map(|i| i.name.clone()).collect();
+    // The first channel with a length unit; else the first.
+    let scales: Vec<Result<(f64, String), Bad>> = images
+        .iter()
+        .map(|im| z_scale(im.section, &scanner, &scan))
+        .collect();
+    let default = scales
+        .iter()
+        .position(|s| {
+            s.as_ref()
+                .is_ok_and(|(_, u)| super::units::metres_per(u, false).is_some())
+        })
+        .unwrap_or(0);
+    let k = pick(&names, default, channel)?;
+    let im = &images[k];
+    let (scale, unit) = match &scales[k] {
+        Ok(s) => s.clone(),
+        Err(e) => return Err(e.clone()),
+    };
+    let to_m = super::units::metres_per(&unit, false).ok_or_else(|| {
+        Bad::unsupported(format!(
+            "channel {k} '{}' holds no heights (its unit is '{unit}')",
+            im.name
+        ))
+    })?;
+    let l = layout(im.section, &scan, version)?;
+    let (nx, ny, length, size) = (l.nx, l.ny, l.length, l.size);
     let n = super::grid(ny, nx)?;
     if n * size > length {
         return Err(Bad::corrupt(format!(
             "a data length of {length} bytes for {nx} x {ny} points of {size} bytes"
         )));
     }
-    let data = raster(bytes.get(offset..).unwrap_or(&[]), ny, nx, size)?;
-    let step = scale / 256f64.powi(bpp as i32);
+    let data = raster(bytes.get(l.offset..).unwrap_or(&[]), ny, nx, size)?;
+    let step = scale / 256f64.powi(l.bpp as i32);
     let mut z: Vec<f64> = if size == 2 {
         decode(data, |b| f64::from(i16::from_le_bytes(b)) * step * to_m)
     } else {
         decode(data, |b| f64::from(i32::from_le_bytes(b)) * step * to_m)
     };
     super::flip_rows(&mut z, ny, nx);
-    let xy = super::metres(&xy_unit, "the scan size")?;
+    let xy = super::metres(&l.xy_unit, "the scan size")?;
     Ok(Measured {
         format: Format::Nanoscope,
         channel: im.name.clone(),
@@ -341,8 +387,8 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         cols: nx,
         heights: z,
         pixel_size: Some((
-            pixel(sx * xy / nx as f64, "x")?,
-            pixel(sy * xy / ny as f64, "y")?,
+            pixel(l.sx * xy / nx as f64, "x")?,
+            pixel(l.sy * xy / ny as f64, "y")?,
         )),
         periodic: false,
     })

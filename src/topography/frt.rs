@@ -42,6 +42,34 @@ fn image_name(t: u32) -> String {
     format!("{kind}{sensor}{}", ((t & 0x0F00_0000) >> 24) + 1)
 }
 
+/// The images of a block 0x7d whose type has a height bit.
+fn height_images(value: &[u8]) -> Result<Vec<Image<'_>>, Bad> {
+    let mut v = Cursor::new(value);
+    let mut out = Vec::new();
+    v.skip(8)?;
+    while v.remaining() > 0 {
+        let t = v.u32_le()?;
+        let (nx, ny, bits) = (v.u32_le()? as usize, v.u32_le()? as usize, v.u32_le()?);
+        let size = match bits {
+            16 => 2,
+            32 => 4,
+            b => return Err(Bad::unsupported(format!("{b} bits per point"))),
+        };
+        let n = super::grid(ny, nx)?;
+        let data = v.take(n * size)?;
+        if t & (0x4 | 0x80 | 0x800 | 0x1000) != 0 {
+            out.push(Image {
+                name: image_name(t),
+                nx,
+                ny,
+                bits,
+                data,
+            });
+        }
+    }
+    Ok(out)
+}
+
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     if !bytes.starts_with(b"FRTM_GLIDERV") {
         return Err(Bad::magic("FRTM_GLIDERV"));
@@ -80,29 +108,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
                 step = Some(v.f64_le()?);
             }
             0x0b => single = Some(value),
-            0x7d => {
-                v.skip(8)?;
-                while v.remaining() > 0 {
-                    let t = v.u32_le()?;
-                    let (nx, ny, bits) = (v.u32_le()? as usize, v.u32_le()? as usize, v.u32_le()?);
-                    let size = match bits {
-                        16 => 2,
-                        32 => 4,
-                        b => return Err(Bad::unsupported(format!("{b} bits per point"))),
-                    };
-                    let n = super::grid(ny, nx)?;
-                    let data = v.take(n * size)?;
-                    if t & (0x4 | 0x80 | 0x800 | 0x1000) != 0 {
-                        multi.push(Image {
-                            name: image_name(t),
-                            nx,
-                            ny,
-                            bits,
-                            data,
-                        });
-                    }
-                }
-            }
+            0x7d => multi.extend(height_images(value)?),
             _ => {}
         }
     }

@@ -118,8 +118,9 @@ fn attrs(c: &mut Cursor) -> Result<Vec<(String, Attr)>, Bad> {
     Ok(out)
 }
 
-pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
-    pick(&["Default".to_string()], 0, channel)?;
+/// The dimensions (names and lengths) and the variables of a file's header.
+#[allow(clippy::type_complexity)]
+fn header(bytes: &[u8]) -> Result<(Vec<(String, usize)>, Vec<Var>), Bad> {
     if bytes.starts_with(b"\x89HDF") {
         return Err(Bad::unsupported(
             "NetCDF-4 (HDF5): save it as NetCDF-3 (classic)",
@@ -152,9 +153,16 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     if tag != 0 && tag != 11 {
         return Err(Bad::corrupt(format!("variable list tag {tag}")));
     }
+    let vars = variables(&mut c, if tag == 0 { 0 } else { n }, dims.len(), version)?;
+    Ok((dims, vars))
+}
+
+/// The `n` variables of the variable list at `c`, whose ids of dimensions
+/// are below `ndims`; `version` 1 holds 32-bit offsets, 2 64-bit ones.
+fn variables(c: &mut Cursor, n: usize, ndims: usize, version: u8) -> Result<Vec<Var>, Bad> {
     let mut vars = Vec::new();
-    for _ in 0..if tag == 0 { 0 } else { n } {
-        let vname = name(&mut c)?;
+    for _ in 0..n {
+        let vname = name(c)?;
         let k = c.u32_be()? as usize;
         if k > 16 {
             return Err(Bad::corrupt(format!(
@@ -164,14 +172,14 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         let mut ids = Vec::new();
         for _ in 0..k {
             let id = c.u32_be()? as usize;
-            if id >= dims.len() {
+            if id >= ndims {
                 return Err(Bad::corrupt(format!(
                     "variable '{vname}' uses dimension {id}"
                 )));
             }
             ids.push(id);
         }
-        let a = attrs(&mut c)?;
+        let a = attrs(c)?;
         let ty = c.u32_be()?;
         let _vsize = c.u32_be()?;
         let begin = if version == 1 {
@@ -187,6 +195,30 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             begin,
         });
     }
+    Ok(vars)
+}
+
+/// Refuses a file whose `y` or `heights` unit is another length than `x`'s
+/// (`unit`): one unit serves them all.
+fn same_units(unit: Option<&str>, y: Option<&Var>, h: &Var) -> Result<(), Bad> {
+    for (what, u) in [
+        ("y", y.and_then(|v| v.text("unit"))),
+        ("heights", h.text("unit")),
+    ] {
+        if let (Some(u), Some(x)) = (&u, &unit) {
+            if super::units::metres_per(u, false) != super::units::metres_per(x, false) {
+                return Err(Bad::corrupt(format!(
+                    "the units of x ('{x}') and {what} ('{u}') differ"
+                )));
+            }
+        }
+    }
+    Ok(())
+}
+
+pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
+    pick(&["Default".to_string()], 0, channel)?;
+    let (dims, vars) = header(bytes)?;
     let var = |n: &str| vars.iter().find(|v| v.name == n);
     let h = var("heights").ok_or_else(|| Bad::corrupt("no variable 'heights'"))?;
     let names: Vec<&str> = h.dims.iter().map(|&d| dims[d].0.as_str()).collect();
@@ -238,18 +270,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     let xv = var("x");
     let unit = xv.and_then(|v| v.text("unit"));
     let periodic = xv.and_then(|v| v.num("periodic")).is_some_and(|p| p != 0.0);
-    for (what, u) in [
-        ("y", var("y").and_then(|v| v.text("unit"))),
-        ("heights", h.text("unit")),
-    ] {
-        if let (Some(u), Some(x)) = (&u, &unit) {
-            if super::units::metres_per(u, false) != super::units::metres_per(x, false) {
-                return Err(Bad::corrupt(format!(
-                    "the units of x ('{x}') and {what} ('{u}') differ"
-                )));
-            }
-        }
-    }
+    same_units(unit.as_deref(), var("y"), h)?;
     let to_m = match &unit {
         Some(u) => super::metres(u, "the")?,
         None => 1.0,

@@ -27,7 +27,18 @@ struct Array {
     data: usize,
 }
 
-pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
+/// What the directory's blocks hold: the height arrays and the scalars
+/// that scale them.
+struct Blocks {
+    arrays: Vec<Array>,
+    wavelength: Option<f64>,
+    mult: f64,
+    aspect: f64,
+    pixel: Option<f64>,
+}
+
+/// The directory and its blocks, each checked where it is read.
+fn blocks(bytes: &[u8]) -> Result<Blocks, Bad> {
     if bytes.get(2..11) != Some(b"Directory".as_slice()) {
         return Err(Bad::magic("a 'Directory' block at byte 2"));
     }
@@ -117,6 +128,23 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             bytes.len()
         )));
     }
+    Ok(Blocks {
+        arrays,
+        wavelength,
+        mult,
+        aspect,
+        pixel,
+    })
+}
+
+pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
+    let Blocks {
+        arrays,
+        wavelength,
+        mult,
+        aspect,
+        pixel,
+    } = blocks(bytes)?;
     if arrays.is_empty() {
         return Err(Bad::corrupt("no height array (RAW DATA, OPD, Raw, ...)"));
     }

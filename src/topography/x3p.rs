@@ -14,8 +14,7 @@
 //! bit per point (least-significant first, 1 = valid). NaN heights are
 //! missing too.
 
-use super::bytes::decode;
-use super::{pick, pixel, raster, Bad, Channel, Format, Measured};
+use super::{pick, pixel, Bad, Channel, Format, Measured};
 use std::collections::HashMap;
 use std::io::{Read, Write};
 
@@ -83,6 +82,101 @@ fn member<R: Read + std::io::Seek>(
     Ok(out)
 }
 
+/// Refuses all but an areal map: `FeatureType` `SUR`, incremental x and y
+/// axes and an absolute z axis (`get` reads a leaf of `main.xml`).
+fn check_areal<'a>(get: &dyn Fn(&str) -> Result<&'a str, Bad>) -> Result<(), Bad> {
+    if get("Record1/FeatureType")? != "SUR" {
+        return Err(Bad::unsupported(format!(
+            "FeatureType {} (only SUR, an areal map)",
+            get("Record1/FeatureType")?
+        )));
+    }
+    for (axis, kind) in [("CX", "I"), ("CY", "I"), ("CZ", "A")] {
+        let t = get(&format!("Record1/Axes/{axis}/AxisType"))?;
+        if t != kind {
+            return Err(Bad::unsupported(format!(
+                "{axis} AxisType {t} (expected {kind})"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Sets to NaN the heights `z` whose bit in the archive member `valid`
+/// (one bit a point, least-significant first, 1 = valid) is 0.
+fn mask_invalid<R: Read + std::io::Seek>(
+    zip: &mut zip::ZipArchive<R>,
+    valid: &str,
+    z: &mut [f64],
+) -> Result<(), Bad> {
+    let n = z.len();
+    let bits = member(zip, valid, n.div_ceil(8) as u64)?;
+    if bits.len() < n.div_ceil(8) {
+        return Err(Bad::truncated(format!(
+            "'{valid}' has {} bytes for {n} points",
+            bits.len()
+        )));
+    }
+    for (k, v) in z.iter_mut().enumerate() {
+        if bits[k / 8] >> (k % 8) & 1 == 0 {
+            *v = f64::NAN;
+        }
+    }
+    Ok(())
+}
+
+/// The `rows x cols` values of `N` bytes each in member `name`, decoded by
+/// `f` while the member inflates, 64 KiB at a time: a deflated member never
+/// exists whole in memory beside the heights (one copy, not two).
+fn member_values<R: Read + std::io::Seek, const N: usize>(
+    zip: &mut zip::ZipArchive<R>,
+    name: &str,
+    rows: usize,
+    cols: usize,
+    f: impl Fn([u8; N]) -> f64,
+) -> Result<Vec<f64>, Bad> {
+    let n = super::grid(rows, cols)?;
+    let want = (n as u64).saturating_mul(N as u64);
+    let mut file = zip
+        .by_name(name)
+        .map_err(|e| Bad::corrupt(format!("no member '{name}' in the archive ({e})")))?;
+    if file.size() > want {
+        return Err(Bad::corrupt(format!(
+            "member '{name}' declares {} bytes, more than the {want} the header describes",
+            file.size()
+        )));
+    }
+    let mut z = Vec::with_capacity(n);
+    let mut buf = vec![0u8; 1 << 16];
+    let mut have = 0;
+    let mut total = 0u64;
+    let mut reader = file.by_ref().take(want);
+    loop {
+        let k = match reader.read(&mut buf[have..]) {
+            Ok(0) => break,
+            Ok(k) => k,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(Bad::corrupt(format!("member '{name}' cannot be read: {e}"))),
+        };
+        have += k;
+        total += k as u64;
+        let whole = have / N * N;
+        z.extend(buf[..whole].chunks_exact(N).map(|c| {
+            let mut a = [0u8; N];
+            a.copy_from_slice(c);
+            f(a)
+        }));
+        buf.copy_within(whole..have, 0);
+        have -= whole;
+    }
+    if z.len() < n {
+        return Err(Bad::truncated(format!(
+            "{rows} x {cols} values of {N} bytes need {want} bytes, {total} are left"
+        )));
+    }
+    Ok(z)
+}
+
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     pick(&["Default".to_string()], 0, channel)?;
     if !bytes.starts_with(b"PK\x03\x04") {
@@ -108,20 +202,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             .parse::<usize>()
             .map_err(|_| Bad::corrupt(format!("main.xml: {k} is not a count")))
     };
-    if get("Record1/FeatureType")? != "SUR" {
-        return Err(Bad::unsupported(format!(
-            "FeatureType {} (only SUR, an areal map)",
-            get("Record1/FeatureType")?
-        )));
-    }
-    for (axis, kind) in [("CX", "I"), ("CY", "I"), ("CZ", "A")] {
-        let t = get(&format!("Record1/Axes/{axis}/AxisType"))?;
-        if t != kind {
-            return Err(Bad::unsupported(format!(
-                "{axis} AxisType {t} (expected {kind})"
-            )));
-        }
-    }
+    check_areal(&get)?;
     let (nx, ny) = (
         count("Record3/MatrixDimension/SizeX")?,
         count("Record3/MatrixDimension/SizeY")?,
@@ -135,12 +216,9 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         num("Record1/Axes/CY/Increment")?,
     );
     let t = get("Record1/Axes/CZ/DataType")?;
-    let size = match t {
-        "I" => 2,
-        "L" | "F" => 4,
-        "D" => 8,
-        other => return Err(Bad::unsupported(format!("CZ DataType {other}"))),
-    };
+    if !matches!(t, "I" | "L" | "F" | "D") {
+        return Err(Bad::unsupported(format!("CZ DataType {t}")));
+    }
     let inc = x
         .get("Record1/Axes/CZ/Increment")
         .map_or(Ok(1.0), |_| num("Record1/Axes/CZ/Increment"))?;
@@ -149,43 +227,34 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         .map_or(Ok(0.0), |_| num("Record1/Axes/CZ/Offset"))?;
     let link = get("Record3/DataLink/PointDataLink")
         .map_err(|_| Bad::unsupported("no Record3/DataLink/PointDataLink (inline DataList)"))?;
-    let want = (n as u64) * size as u64;
-    crate::study::memory::ensure(
-        "topography",
-        "reading the X3P heights",
-        want as f64 + 8.0 * n as f64,
-        "",
-    )
-    .map_err(|e| Bad::corrupt(e.to_string()))?;
-    let data = member(&mut zip, link, want)?;
-    let data = raster(&data, ny, nx, size)?;
-    let mut z: Vec<f64> = match t {
-        "I" => decode(data, |b| f64::from(i16::from_le_bytes(b))),
-        "L" => decode(data, |b| f64::from(i32::from_le_bytes(b))),
-        "F" => decode(data, |b| f64::from(f32::from_le_bytes(b))),
-        _ => decode(data, f64::from_le_bytes),
+    // The heights only: the member inflates straight into them.
+    crate::study::memory::ensure("topography", "reading the X3P heights", 8.0 * n as f64, "")
+        .map_err(|e| Bad::corrupt(e.to_string()))?;
+    // Scaled by the increment and offset; non-finite values are missing.
+    let plain = inc == 1.0 && off == 0.0;
+    let scale = move |v: f64| {
+        let v = if plain { v } else { v * inc + off };
+        if v.is_finite() {
+            v
+        } else {
+            f64::NAN
+        }
     };
-    if inc != 1.0 || off != 0.0 {
-        z.iter_mut().for_each(|v| *v = *v * inc + off);
-    }
-    for v in z.iter_mut() {
-        if !v.is_finite() {
-            *v = f64::NAN;
-        }
-    }
+    let (rows, cols) = (ny, nx);
+    let mut z: Vec<f64> = match t {
+        "I" => member_values(&mut zip, link, rows, cols, |b| {
+            scale(f64::from(i16::from_le_bytes(b)))
+        })?,
+        "L" => member_values(&mut zip, link, rows, cols, |b| {
+            scale(f64::from(i32::from_le_bytes(b)))
+        })?,
+        "F" => member_values(&mut zip, link, rows, cols, |b| {
+            scale(f64::from(f32::from_le_bytes(b)))
+        })?,
+        _ => member_values(&mut zip, link, rows, cols, |b| scale(f64::from_le_bytes(b)))?,
+    };
     if let Some(valid) = x.get("Record3/DataLink/ValidPointsLink") {
-        let bits = member(&mut zip, valid, n.div_ceil(8) as u64)?;
-        if bits.len() < n.div_ceil(8) {
-            return Err(Bad::truncated(format!(
-                "'{valid}' has {} bytes for {n} points",
-                bits.len()
-            )));
-        }
-        for (k, v) in z.iter_mut().enumerate() {
-            if bits[k / 8] >> (k % 8) & 1 == 0 {
-                *v = f64::NAN;
-            }
-        }
+        mask_invalid(&mut zip, valid, &mut z)?;
     }
     Ok(Measured {
         format: Format::X3p,
@@ -242,7 +311,51 @@ pub fn to_x3p(
             super::md5::hex(b)
         )
     });
-    let xml = format!(
+    let xml = main_xml(
+        rows,
+        cols,
+        dx,
+        dy,
+        software,
+        &super::md5::hex(&data),
+        &valid_link,
+    );
+    let io = |e: &dyn std::fmt::Display| crate::Error::io("X3P archive", e);
+    let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    let opts = zip::write::SimpleFileOptions::default()
+        // Stored: reading is then a copy (about the cost of a .npy), where
+        // inflating float64 heights, which barely compress, costs 3x
+        // (docs/performance.md, "Reading measured maps").
+        .compression_method(zip::CompressionMethod::Stored)
+        .large_file(data.len() >= u32::MAX as usize);
+    let mut put = |name: &str, b: &[u8]| -> crate::Result<()> {
+        w.start_file(name, opts).map_err(|e| io(&e))?;
+        w.write_all(b).map_err(|e| io(&e))
+    };
+    put("main.xml", xml.as_bytes())?;
+    put("bindata/data.bin", &data)?;
+    if let Some(b) = &valid {
+        put("bindata/valid.bin", b)?;
+    }
+    let sum = format!("{} *main.xml\n", super::md5::hex(xml.as_bytes()));
+    put("md5checksum.hex", sum.as_bytes())?;
+    let out = w.finish().map_err(|e| io(&e))?;
+    Ok(out.into_inner())
+}
+
+/// The `main.xml` of [`to_x3p`]: the axes, the matrix of `rows x cols`
+/// float64 heights and its data links (`md5` the data's checksum,
+/// `valid_link` the valid points' link or empty).
+fn main_xml(
+    rows: usize,
+    cols: usize,
+    dx: f64,
+    dy: f64,
+    software: &str,
+    md5: &str,
+    valid_link: &str,
+) -> String {
+    format!(
         r#"<?xml version="1.0" encoding="UTF-8" standalone="no" ?>
 <p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:schemaLocation="http://www.opengps.eu/2008/ISO5436_2 http://www.opengps.eu/2008/ISO5436_2/ISO5436_2.xsd">
   <Record1>
@@ -299,29 +412,7 @@ pub fn to_x3p(
 </p:ISO5436_2>
 "#,
         version = env!("CARGO_PKG_VERSION"),
-        md5 = super::md5::hex(&data),
-    );
-    let io = |e: &dyn std::fmt::Display| crate::Error::io("X3P archive", e);
-    let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
-    let opts = zip::write::SimpleFileOptions::default()
-        // Stored: reading is then a copy (about the cost of a .npy), where
-        // inflating float64 heights, which barely compress, costs 3x
-        // (docs/performance.md, "Reading measured maps").
-        .compression_method(zip::CompressionMethod::Stored)
-        .large_file(data.len() >= u32::MAX as usize);
-    let mut put = |name: &str, b: &[u8]| -> crate::Result<()> {
-        w.start_file(name, opts).map_err(|e| io(&e))?;
-        w.write_all(b).map_err(|e| io(&e))
-    };
-    put("main.xml", xml.as_bytes())?;
-    put("bindata/data.bin", &data)?;
-    if let Some(b) = &valid {
-        put("bindata/valid.bin", b)?;
-    }
-    let sum = format!("{} *main.xml\n", super::md5::hex(xml.as_bytes()));
-    put("md5checksum.hex", sum.as_bytes())?;
-    let out = w.finish().map_err(|e| io(&e))?;
-    Ok(out.into_inner())
+    )
 }
 
 #[cfg(test)]

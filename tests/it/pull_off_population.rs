@@ -87,6 +87,24 @@ fn populations_are_the_montecarlo_populations_seed_by_seed() {
     assert_eq!(num(&p["p05_N"]), quantile(&sorted, 0.05));
     assert_eq!(num(&p["p95_N"]), quantile(&sorted, 0.95));
     assert!((num(&p["mean_se_N"]) - std / n.sqrt()).abs() <= 1e-15 * std);
+    // Six populations hold the 5 % quantile between their minimum and
+    // maximum with probability 1 - 0.95^6 - 0.05^6 = 26.5 %: no 95 %
+    // interval, said in a note and a warning.
+    for key in ["p05_interval_N", "p95_interval_N", "p05_interval_coverage"] {
+        assert!(p[key].is_null(), "{key}: {p}");
+    }
+    let note = p["interval_note"].as_str().unwrap();
+    assert!(
+        note.contains("of 6 populations") && note.contains("26.5 %"),
+        "{note}"
+    );
+    assert!(
+        v["warnings"]
+            .to_string()
+            .contains("6 populations are too few"),
+        "{}",
+        v["warnings"]
+    );
     // A few summits carry the integral's pull-off, and one switch pulls
     // off much harder than the integral says: the summary warns.
     assert!(num(&p["carriers"]) < 100.0, "{p}");

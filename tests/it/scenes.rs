@@ -731,6 +731,10 @@ const CROSS_KEY_RULES: &[(&str, &str)] = &[
     ("Greenwood-Tripp mu", "Greenwood-Tripp mu"),
     ("materials.hardness = ", ">= `yield_strength`"),
     ("GB of memory", "within 2 GB of memory"),
+    (
+        "the profile's contact radius is",
+        "an exponent that leaves no representable coefficient",
+    ),
 ];
 
 /// Numbers just outside and just inside a bound (`None` for an unbounded

@@ -12,33 +12,15 @@ use std::path::PathBuf;
 
 /// Arguments of `asperity bem`.
 #[derive(Args, Debug)]
+#[command(mut_arg("scale", |a| a.help("Factor on the heights after their unit")))]
+#[command(mut_arg("export", |a| a.help("Also write the map read, in m, to this `.x3p` or `.npy` file")))]
 pub struct BemArgs {
     /// The rigid rough surface: any map `asperity surface` reads (an
     /// instrument file with its pixel sizes and unit, `.npy` or a text
     /// matrix).
     map: PathBuf,
-    /// Pixel size (m), the same along x and y; needed for `.npy` and text
-    /// maps. Given for a file that has its own, it must agree to 1e-9 or it
-    /// wins with a warning.
-    #[arg(long, allow_hyphen_values = true)]
-    pixel_size: Option<f64>,
-    /// Unit of a `.npy` or text map's heights: nm, um or m (default m).
-    #[arg(long)]
-    height_unit: Option<String>,
-    /// Factor on the heights after their unit.
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
-    scale: f64,
-    /// The channel of a file with several, by name or index from 0 (default:
-    /// the height channel).
-    #[arg(long)]
-    channel: Option<String>,
-    /// Fill missing pixels (NaN or masked in the file) from their neighbours
-    /// instead of refusing the map.
-    #[arg(long)]
-    fill_missing: bool,
-    /// Also write the map read, in m, to this `.x3p` or `.npy` file.
-    #[arg(long)]
-    export: Option<PathBuf>,
+    #[command(flatten)]
+    read: crate::map_read::MapArgs,
     /// Contact modulus E* (Pa).
     #[arg(long, allow_hyphen_values = true)]
     estar: f64,
@@ -94,7 +76,7 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
         crate::list::parse_opt("--gaps", args.gaps.as_deref())?,
     )?;
     // The pixel size is checked once the map says whether it has its own.
-    let mut input = BemInput::new(args.pixel_size.unwrap_or(1.0), args.estar, targets);
+    let mut input = BemInput::new(args.read.pixel_size.unwrap_or(1.0), args.estar, targets);
     input.periodic = args.periodic;
     input.adhesion = BemAdhesion::from_options(args.adhesion_energy, args.adhesion_range)?;
     input.gamma = args.gamma;
@@ -104,19 +86,11 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     input.memory_limit_mib = args.memory_limit_mib;
     input.out = args.out.clone();
     // The map's content is named by its file (and the scale).
-    let words = Vocabulary::cli().with("heights", map_name(&args.map, args.scale));
+    let words = Vocabulary::cli().with("heights", map_name(&args.map, args.read.scale));
     let failed = |e| CliError::with(e, &words);
     input.validate().map_err(failed)?;
-    let flags = crate::map_read::MapFlags {
-        channel: args.channel.as_deref(),
-        fill_missing: args.fill_missing,
-        height_unit: args.height_unit.as_deref(),
-        scale: args.scale,
-        pixel_size: args.pixel_size,
-        export: args.export.as_deref(),
-    };
     let (read, pixels, mut warnings) =
-        crate::map_read::read_map(&args.map, &flags).map_err(failed)?;
+        crate::map_read::read_map(&args.map, &args.read).map_err(failed)?;
     input.pixel_size = pixels.0;
     input.pixel_size_y = Some(pixels.1);
     input.periodic = args.periodic || read.periodic;

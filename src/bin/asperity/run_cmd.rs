@@ -111,6 +111,7 @@ pub fn execute(
 
 /// Writes a run's files and prints its summary (text or JSON).
 pub fn report(plan: &Plan, results: &Results, out: &Path, json: bool) -> crate::CliResult {
+    let plan = results.plan(plan);
     let summary = Summary::new(plan, results);
     let files = write_outputs(plan, results, &summary, out)?;
     // Warnings go to stderr as well, so that stdout stays parseable.

@@ -19,29 +19,8 @@ pub struct SurfaceArgs {
     /// pixel sizes and unit from the file), NumPy `.npy` (2-D float64/float32,
     /// C order) or a text matrix (`.txt`, `.csv`, `.asc`).
     file: PathBuf,
-    /// Pixel size (m), the same along x and y; needed for `.npy` and text
-    /// maps. Given for a file that has its own, it must agree to 1e-9 or it
-    /// wins with a warning.
-    #[arg(long, allow_hyphen_values = true)]
-    pixel_size: Option<f64>,
-    /// Unit of a `.npy` or text map's heights: nm, um or m (default m).
-    #[arg(long)]
-    height_unit: Option<String>,
-    /// Factor on the heights after their unit (e.g. 1e-9 for nm).
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
-    scale: f64,
-    /// The channel of a file with several, by name or index from 0 (default:
-    /// the height channel).
-    #[arg(long)]
-    channel: Option<String>,
-    /// Fill missing pixels (NaN or masked in the file) from their neighbours
-    /// instead of refusing the map.
-    #[arg(long)]
-    fill_missing: bool,
-    /// Also write the map read, in m, to this `.x3p` (with its pixel sizes)
-    /// or `.npy` file.
-    #[arg(long)]
-    export: Option<PathBuf>,
+    #[command(flatten)]
+    read: crate::map_read::MapArgs,
     /// Treat the map as periodic: remove only the mean, wrap differences and
     /// summit neighbours around every edge (also when the file says so).
     #[arg(long)]
@@ -63,18 +42,10 @@ pub struct SurfaceArgs {
 
 pub fn run(args: &SurfaceArgs) -> crate::CliResult {
     // The map's content is named by its file (and the scale).
-    let words = Vocabulary::cli().with("heights", map_name(&args.file, args.scale));
+    let words = Vocabulary::cli().with("heights", map_name(&args.file, args.read.scale));
     let failed = |e| CliError::with(e, &words);
-    let flags = crate::map_read::MapFlags {
-        channel: args.channel.as_deref(),
-        fill_missing: args.fill_missing,
-        height_unit: args.height_unit.as_deref(),
-        scale: args.scale,
-        pixel_size: args.pixel_size,
-        export: args.export.as_deref(),
-    };
     let (read, pixels, mut warnings) =
-        crate::map_read::read_map(&args.file, &flags).map_err(failed)?;
+        crate::map_read::read_map(&args.file, &args.read).map_err(failed)?;
     let input = SurfaceInput {
         pixel_size: pixels.0,
         pixel_size_y: Some(pixels.1),
@@ -86,6 +57,7 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
     let (mut out, c) = characterise(read.map, &input).map_err(failed)?;
     out.source = Some(source);
     warnings.extend(unit_warnings(out.rms_height_m, pixels));
+    warnings.extend(std::mem::take(&mut out.warnings));
     out.warnings = warnings.iter().map(|w| words.words_in(w)).collect();
     if let Some(dir) = &args.out {
         write_outputs(dir, &out, &c).map_err(failed)?;
@@ -156,6 +128,21 @@ fn print_table(o: &SurfaceJson) -> crate::CliResult {
                 "{p:.6}"
             ))
     );
+    let m = &o.model_error;
+    crate::outln!("model error                {}", m.reference);
+    let pct = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{:+.1} %", 100.0 * v));
+    for (k, p) in m.pressure_over_estar.iter().enumerate() {
+        let at = |v: &[Option<f64>]| pct(v.get(k).copied().flatten());
+        crate::outln!(
+            "  p/E* = {p:<8e}         exact A/A0 {:.4}: GW area {}, load at the same gap {}, gap {}; Persson area {}, gap {}",
+            m.exact_area_fraction[k],
+            at(&m.area),
+            at(&m.load),
+            at(&m.mean_gap),
+            at(&m.persson_area),
+            at(&m.persson_mean_gap)
+        );
+    }
     for w in &o.warnings {
         crate::outln!("warning: {w}");
     }

@@ -149,6 +149,9 @@ pub fn run(args: &SweepArgs) -> crate::CliResult {
     options.max_cpu_seconds = Some(args.max_cpu_seconds);
     let outcome = run_sweep(&scene, &spec, &args.out, &options, &progress).map_err(as_flag)?;
     bar.finish();
+    for note in &outcome.notes {
+        eprintln!("note: {note}");
+    }
     eprintln!(
         "{} points: {} already done, {} computed now ({} failed){}; results in {}",
         outcome.planned,

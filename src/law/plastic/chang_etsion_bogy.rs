@@ -11,7 +11,10 @@
 //! there (Hertz mean pressure `(2/3) K H` against `K H`), the model's
 //! known defect. Fully plastic contact carries `P = K H A`, not `H A`.
 
-use super::{plastic_asperity_law, PlasticAsperity, PlasticLoading};
+use super::{
+    plastic_asperity_law, plastic_constructor, plastic_loading_accessors, PlasticAsperity,
+    PlasticLoading,
+};
 use crate::error::Result;
 use crate::law::ContactState;
 use crate::material::plastic::{Plasticity, Variant};
@@ -30,17 +33,7 @@ pub struct ChangEtsionBogy {
 }
 
 impl ChangEtsionBogy {
-    /// Radius `R` (m), contact modulus `E*` (Pa), plastic data.
-    ///
-    /// # Errors
-    /// [`crate::Error::OutOfRange`] naming `radius` or `contact_modulus`.
-    pub fn new(radius: f64, contact_modulus: f64, plasticity: Plasticity) -> Result<Self> {
-        Ok(Self::from_asperity(PlasticAsperity::new(
-            radius,
-            contact_modulus,
-            plasticity,
-        )?))
-    }
+    plastic_constructor!();
 
     /// From validated inputs.
     pub fn from_asperity(asperity: PlasticAsperity) -> Self {
@@ -54,13 +47,7 @@ impl ChangEtsionBogy {
 }
 
 impl PlasticLoading for ChangEtsionBogy {
-    fn variant(&self) -> Variant {
-        Variant::ChangEtsionBogy
-    }
-
-    fn asperity(&self) -> &PlasticAsperity {
-        &self.asperity
-    }
+    plastic_loading_accessors!(Variant::ChangEtsionBogy, omega_c);
 
     #[inline]
     fn loading(&self, delta: f64) -> ContactState {
@@ -73,14 +60,6 @@ impl PlasticLoading for ChangEtsionBogy {
             load: self.pressure * PI * a2,
             radius: a2.sqrt(),
         }
-    }
-
-    fn critical_interference(&self) -> f64 {
-        self.omega_c
-    }
-
-    fn breakpoint_multiples(&self) -> &'static [f64] {
-        &BREAKPOINTS
     }
 }
 

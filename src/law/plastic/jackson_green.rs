@@ -16,7 +16,10 @@
 //! geometry-dependent hardness `H_G`. The area is continuous at `w = 1.9`;
 //! the load jumps slightly there (the fit's two pieces do not meet).
 
-use super::{plastic_asperity_law, PlasticAsperity, PlasticLoading};
+use super::{
+    plastic_asperity_law, plastic_constructor, plastic_loading_accessors, PlasticAsperity,
+    PlasticLoading,
+};
 use crate::error::Result;
 use crate::law::ContactState;
 use crate::material::plastic::{Plasticity, Variant};
@@ -44,17 +47,7 @@ pub struct JacksonGreen {
 }
 
 impl JacksonGreen {
-    /// Radius `R` (m), contact modulus `E*` (Pa), plastic data.
-    ///
-    /// # Errors
-    /// [`crate::Error::OutOfRange`] naming `radius` or `contact_modulus`.
-    pub fn new(radius: f64, contact_modulus: f64, plasticity: Plasticity) -> Result<Self> {
-        Ok(Self::from_asperity(PlasticAsperity::new(
-            radius,
-            contact_modulus,
-            plasticity,
-        )?))
-    }
+    plastic_constructor!();
 
     /// From validated inputs.
     pub fn from_asperity(asperity: PlasticAsperity) -> Self {
@@ -85,13 +78,7 @@ impl JacksonGreen {
 }
 
 impl PlasticLoading for JacksonGreen {
-    fn variant(&self) -> Variant {
-        Variant::JacksonGreen
-    }
-
-    fn asperity(&self) -> &PlasticAsperity {
-        &self.asperity
-    }
+    plastic_loading_accessors!(Variant::JacksonGreen, omega_c);
 
     #[inline]
     fn loading(&self, delta: f64) -> ContactState {
@@ -119,14 +106,6 @@ impl PlasticLoading for JacksonGreen {
             load: p * self.p_c,
             radius: a2.sqrt(),
         }
-    }
-
-    fn critical_interference(&self) -> f64 {
-        self.omega_c
-    }
-
-    fn breakpoint_multiples(&self) -> &'static [f64] {
-        &BREAKPOINTS
     }
 }
 

@@ -13,7 +13,10 @@
 //! The fit jumps at `w = 1, 6, 110` (load +3 %, +1.7 %, +8 %); the jumps are
 //! kept, and the law reports the three points as breakpoints.
 
-use super::{plastic_asperity_law, PlasticAsperity, PlasticLoading};
+use super::{
+    plastic_asperity_law, plastic_constructor, plastic_loading_accessors, PlasticAsperity,
+    PlasticLoading,
+};
 use crate::error::Result;
 use crate::law::ContactState;
 use crate::material::plastic::{Plasticity, Variant};
@@ -35,18 +38,7 @@ pub struct KogutEtsion {
 }
 
 impl KogutEtsion {
-    /// Radius `R` (m), contact modulus `E*` (Pa), plastic data of the
-    /// yielding body.
-    ///
-    /// # Errors
-    /// [`crate::Error::OutOfRange`] naming `radius` or `contact_modulus`.
-    pub fn new(radius: f64, contact_modulus: f64, plasticity: Plasticity) -> Result<Self> {
-        Ok(Self::from_asperity(PlasticAsperity::new(
-            radius,
-            contact_modulus,
-            plasticity,
-        )?))
-    }
+    plastic_constructor!();
 
     /// From validated inputs.
     pub fn from_asperity(asperity: PlasticAsperity) -> Self {
@@ -87,13 +79,7 @@ impl KogutEtsion {
 }
 
 impl PlasticLoading for KogutEtsion {
-    fn variant(&self) -> Variant {
-        Variant::KogutEtsion
-    }
-
-    fn asperity(&self) -> &PlasticAsperity {
-        &self.asperity
-    }
+    plastic_loading_accessors!(Variant::KogutEtsion, omega_c);
 
     #[inline]
     fn loading(&self, delta: f64) -> ContactState {
@@ -105,14 +91,6 @@ impl PlasticLoading for KogutEtsion {
             load: p * self.p_c,
             radius: (a * self.a_c / PI).sqrt(),
         }
-    }
-
-    fn critical_interference(&self) -> f64 {
-        self.omega_c
-    }
-
-    fn breakpoint_multiples(&self) -> &'static [f64] {
-        &BREAKPOINTS
     }
 }
 

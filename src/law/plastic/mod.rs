@@ -184,6 +184,51 @@ pub trait PlasticLaw: LawKernels + PlasticLoading {
     fn as_loading(self: Arc<Self>) -> Arc<dyn PlasticLoading>;
 }
 
+/// The constructor `new(radius, contact_modulus, plasticity)` every
+/// variant has: a validated [`PlasticAsperity`], then the variant's own
+/// `from_asperity`.
+macro_rules! plastic_constructor {
+    () => {
+        /// Radius `R` (m), contact modulus `E*` (Pa), plastic data of the
+        /// yielding body.
+        ///
+        /// # Errors
+        /// [`crate::Error::OutOfRange`] naming `radius` or `contact_modulus`.
+        pub fn new(radius: f64, contact_modulus: f64, plasticity: Plasticity) -> Result<Self> {
+            Ok(Self::from_asperity(PlasticAsperity::new(
+                radius,
+                contact_modulus,
+                plasticity,
+            )?))
+        }
+    };
+}
+pub(crate) use plastic_constructor;
+
+/// The [`PlasticLoading`] methods every variant writes alike: its
+/// `variant`, its `asperity` field, its critical interference (the field
+/// `critical`) and its module's `BREAKPOINTS`.
+macro_rules! plastic_loading_accessors {
+    ($variant:expr, $critical:ident) => {
+        fn variant(&self) -> Variant {
+            $variant
+        }
+
+        fn asperity(&self) -> &PlasticAsperity {
+            &self.asperity
+        }
+
+        fn critical_interference(&self) -> f64 {
+            self.$critical
+        }
+
+        fn breakpoint_multiples(&self) -> &'static [f64] {
+            &BREAKPOINTS
+        }
+    };
+}
+pub(crate) use plastic_loading_accessors;
+
 /// Implements [`AsperityLaw`](crate::law::AsperityLaw), [`LawKernels`] and [`PlasticLaw`] for a [`PlasticLoading`]:
 /// loading on both branches, elastic unloading from the flattened shape via
 /// `state_after`, no adhesion.
@@ -229,17 +274,7 @@ macro_rules! plastic_asperity_law {
                 Some($crate::law::RadiusScaling::PLASTIC)
             }
 
-            fn attach_interference(&self) -> f64 {
-                0.0
-            }
-
-            fn detach_interference(&self) -> f64 {
-                0.0
-            }
-
-            fn cutoff_interference(&self) -> f64 {
-                0.0
-            }
+            critical_at_first_contact!();
 
             fn breakpoints(&self, _branch: $crate::law::Branch) -> Vec<f64> {
                 $crate::law::plastic::PlasticLoading::breakpoint_interferences(self)

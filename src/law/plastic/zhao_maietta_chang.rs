@@ -12,7 +12,10 @@
 //!
 //! Load and area are continuous at both ends (the slope of `P` is not).
 
-use super::{plastic_asperity_law, PlasticAsperity, PlasticLoading};
+use super::{
+    plastic_asperity_law, plastic_constructor, plastic_loading_accessors, PlasticAsperity,
+    PlasticLoading,
+};
 use crate::error::Result;
 use crate::law::ContactState;
 use crate::material::plastic::{Plasticity, Variant, ZMC_PRESSURE_FACTOR};
@@ -34,17 +37,7 @@ pub struct ZhaoMaiettaChang {
 }
 
 impl ZhaoMaiettaChang {
-    /// Radius `R` (m), contact modulus `E*` (Pa), plastic data.
-    ///
-    /// # Errors
-    /// [`crate::Error::OutOfRange`] naming `radius` or `contact_modulus`.
-    pub fn new(radius: f64, contact_modulus: f64, plasticity: Plasticity) -> Result<Self> {
-        Ok(Self::from_asperity(PlasticAsperity::new(
-            radius,
-            contact_modulus,
-            plasticity,
-        )?))
-    }
+    plastic_constructor!();
 
     /// From validated inputs.
     pub fn from_asperity(asperity: PlasticAsperity) -> Self {
@@ -59,13 +52,7 @@ impl ZhaoMaiettaChang {
 }
 
 impl PlasticLoading for ZhaoMaiettaChang {
-    fn variant(&self) -> Variant {
-        Variant::ZhaoMaiettaChang
-    }
-
-    fn asperity(&self) -> &PlasticAsperity {
-        &self.asperity
-    }
+    plastic_loading_accessors!(Variant::ZhaoMaiettaChang, omega_1);
 
     #[inline]
     fn loading(&self, delta: f64) -> ContactState {
@@ -89,14 +76,6 @@ impl PlasticLoading for ZhaoMaiettaChang {
             load: pm * PI * a2,
             radius: a2.sqrt(),
         }
-    }
-
-    fn critical_interference(&self) -> f64 {
-        self.omega_1
-    }
-
-    fn breakpoint_multiples(&self) -> &'static [f64] {
-        &BREAKPOINTS
     }
 }
 

@@ -153,11 +153,19 @@ impl MonteCarlo {
             }
             a += m;
         }
-        for (j, lower) in out.lower.iter_mut().enumerate() {
-            let (a, b) = out.chord[j];
-            *lower = out.least_part[j] + a.min(b);
-        }
-        out.magnitude = abs.iter().copied().fold(0.0, f64::max);
+        out.finish(&abs);
         Some(out)
+    }
+}
+
+impl RetractionBounds {
+    /// Sets the lower bounds from the sums of the windows and the magnitude
+    /// from `abs`, the sums of the summits' absolute loads.
+    fn finish(&mut self, abs: &[f64]) {
+        for (j, lower) in self.lower.iter_mut().enumerate() {
+            let (a, b) = self.chord[j];
+            *lower = self.least_part[j] + a.min(b);
+        }
+        self.magnitude = abs.iter().copied().fold(0.0, f64::max);
     }
 }

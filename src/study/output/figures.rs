@@ -171,6 +171,7 @@ pub fn write_outputs(
     summary: &Summary,
     dir: &Path,
 ) -> Result<Vec<PathBuf>> {
+    let plan = results.plan(plan);
     let io = |e: std::io::Error| Error::io(dir.display(), e);
     let curve = curve_csv(results, plan);
     let mc = super::montecarlo_csv(results, plan);

@@ -16,7 +16,8 @@ pub use feature_figures::{feature_charts, FeatureChart};
 pub use figures::{charts, check_outputs, si_prefix, si_prefix_area, write_outputs, OUTPUT_FILES};
 pub use report::text_report;
 pub use summary::{
-    HeatingSummary, McSummary, PlasticitySummary, SampleSpotsSummary, StictionSummary, Summary,
+    Aliases, HeatingSummary, McSummary, PlasticitySummary, SampleSpotsSummary, StictionSummary,
+    Summary, DEPRECATED_KEYS,
 };
 pub use table::{Column, Table, INTEGER_COLUMNS, TEXT_COLUMNS};
 pub use tables::{curve_csv, montecarlo_csv};

@@ -129,6 +129,30 @@ fn headlines(out: &mut String, plan: &Plan, summary: &Summary) {
     }
 }
 
+/// GW against the exact elastic solution of the map, one line per load.
+fn map_model_error(out: &mut String, m: &super::summary::ModelErrorSummary) {
+    let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:+.1} %", 100.0 * v));
+    let _ = writeln!(
+        out,
+        "    GW on this map against the exact elastic solution ({} s):",
+        m.exact_seconds.map_or("-".into(), |s| format!("{s:.2}"))
+    );
+    for (k, s) in m.states.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "    {:<16} area {} (A/A0 {:.4} exact {:.4}), mean gap {} ({} exact {}), load at the same mean gap {}",
+            format::si(s.load_n, "N"),
+            pct(m.area.get(k).copied().flatten()),
+            s.gw_area_fraction,
+            s.exact_area_fraction,
+            pct(m.mean_gap.get(k).copied().flatten()),
+            format::si(s.gw_mean_gap_m, "m"),
+            format::si(s.exact_mean_gap_m, "m"),
+            pct(m.load.get(k).copied().flatten()),
+        );
+    }
+}
+
 /// The model error lines: on this surface, per output, and for one summit.
 fn model_error(out: &mut String, summary: &Summary) {
     let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:+.2} %", 100.0 * v));
@@ -149,6 +173,13 @@ fn model_error(out: &mut String, summary: &Summary) {
             let _ = writeln!(out, "  model error        {}", m.reference);
         }
         None => {}
+    }
+    if let Some(m) = summary
+        .model_error
+        .as_ref()
+        .filter(|m| !m.states.is_empty())
+    {
+        map_model_error(out, m);
     }
     if let Some(e) = summary.law_model_error {
         let _ = writeln!(

@@ -20,31 +20,39 @@ pub struct Summary {
     pub tabor_mu: Option<f64>,
     /// Maugis `lambda = 1.1570 mu` (`null` without adhesion).
     pub maugis_lambda: Option<f64>,
-    /// Contact modulus `E*` (Pa).
+    /// Contact modulus `E*` (Pa): key `contact_modulus_Pa`.
+    #[serde(rename = "contact_modulus_Pa")]
     pub contact_modulus: f64,
     /// Number of summits `eta A_n` (`null` for a rough sphere: no nominal
     /// area; its contacts are in `rough_sphere` and the states).
     pub summits: Option<f64>,
-    /// Separation where the program started and ended (m).
+    /// Separation where the program started and ended (m): key
+    /// `start_separation_m`.
+    #[serde(rename = "start_separation_m")]
     pub start_separation: f64,
-    /// Closest separation reached (m).
+    /// Closest separation reached (m): key `closest_separation_m`.
+    #[serde(rename = "closest_separation_m")]
     pub closest_separation: f64,
     /// Points per leg.
     pub points: usize,
-    /// The quantities' headline numbers (`max_load` (N, largest on
-    /// approach), `max_area` (m^2) and `max_count` at the closest approach,
-    /// `resistance_ohm` with `[electrical]`, ...), by key.
+    /// The quantities' headline numbers (`max_load_N` (largest on
+    /// approach), `max_area_m2` and `max_count` at the closest approach,
+    /// `resistance_ohm` with `[electrical]`, ...), by key (each key its
+    /// sweep column, with its unit).
     #[serde(flatten)]
     pub headlines: Headlines,
-    /// Pull-off force (N, negative = tensile).
+    /// Pull-off force (N, negative = tensile): key `pull_off_load_N`.
+    #[serde(rename = "pull_off_load_N")]
     pub pull_off_load: Option<f64>,
-    /// Separation of the pull-off (m).
+    /// Separation of the pull-off (m): key `pull_off_separation_m`.
+    #[serde(rename = "pull_off_separation_m")]
     pub pull_off_separation: Option<f64>,
     /// The pull-off of one switch over populations of its `eta A_n`
     /// summits, with a finite surface whose pull-off is searched.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pull_off_population: Option<PopulationSummary>,
-    /// Energy lost per cycle (J).
+    /// Energy lost per cycle (J): key `hysteresis_energy_J`.
+    #[serde(rename = "hysteresis_energy_J")]
     pub hysteresis_energy: Option<f64>,
     /// Requested relative tolerance.
     pub rtol: f64,
@@ -98,6 +106,78 @@ pub struct Summary {
     /// Absent without a sphere.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rough_sphere: Option<crate::roughsphere::SphereState>,
+    /// The previous release's keys without a unit (`max_load`,
+    /// `pull_off_load`, `start_separation`, ...), written beside the new
+    /// ones with the same values for one release: deprecated
+    /// ([`DEPRECATED_KEYS`]).
+    #[serde(flatten)]
+    pub deprecated: Aliases,
+}
+
+/// The summary keys renamed to carry their unit, as `(old, new)`: the old
+/// names are still written for one release (deprecated aliases, the same
+/// value), then dropped. `montecarlo.` keys are inside the `"montecarlo"`
+/// object.
+pub const DEPRECATED_KEYS: [(&str, &str); 15] = [
+    ("contact_modulus", "contact_modulus_Pa"),
+    ("start_separation", "start_separation_m"),
+    ("closest_separation", "closest_separation_m"),
+    ("max_load", "max_load_N"),
+    ("max_area", "max_area_m2"),
+    ("pull_off_load", "pull_off_load_N"),
+    ("pull_off_separation", "pull_off_separation_m"),
+    ("hysteresis_energy", "hysteresis_energy_J"),
+    ("montecarlo.max_load", "montecarlo.max_load_N"),
+    (
+        "montecarlo.max_load_standard_error",
+        "montecarlo.max_load_standard_error_N",
+    ),
+    ("montecarlo.pull_off_load", "montecarlo.pull_off_load_N"),
+    (
+        "montecarlo.integral_sampled_pull_off_load",
+        "montecarlo.integral_sampled_pull_off_load_N",
+    ),
+    (
+        "montecarlo.pull_off_other_seeds",
+        "montecarlo.pull_off_other_seeds_N",
+    ),
+    (
+        "montecarlo.pull_off_seed_mean",
+        "montecarlo.pull_off_seed_mean_N",
+    ),
+    (
+        "montecarlo.pull_off_seed_std",
+        "montecarlo.pull_off_seed_std_N",
+    ),
+];
+
+/// Deprecated aliases: old keys with the values of their renamed keys,
+/// serialised as entries of the enclosing object.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Aliases(pub Vec<(String, serde_json::Value)>);
+
+impl Serialize for Aliases {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(self.0.len()))?;
+        for (k, v) in &self.0 {
+            m.serialize_entry(k, v)?;
+        }
+        m.end()
+    }
+}
+
+impl Aliases {
+    pub(crate) fn of<'a>(
+        entries: impl IntoIterator<Item = (&'a str, serde_json::Value)>,
+    ) -> Aliases {
+        Aliases(
+            entries
+                .into_iter()
+                .map(|(k, v)| (k.to_string(), v))
+                .collect(),
+        )
+    }
 }
 
 /// The model error of the headline outputs (relative: `(law -
@@ -125,6 +205,89 @@ pub struct ModelErrorSummary {
     /// no state is listed).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub listed_loads: Vec<Option<f64>>,
+    /// On a measured map, per state (`states`): GW's real-area fraction
+    /// against the exact elastic solution's at the same load, `(GW -
+    /// exact)/exact` (absent without a measured map or when not measured).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub area: Vec<Option<f64>>,
+    /// The same of GW's load at the exact solution's mean gap.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub load: Vec<Option<f64>>,
+    /// The same of GW's mean gap at the same load.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mean_gap: Vec<Option<f64>>,
+    /// The states compared, with both models' values.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub states: Vec<MapStateSummary>,
+    /// The exact solution's estimated CPU time (s), on a measured map.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact_estimate_s: Option<f64>,
+    /// Its time (s, wall), when measured.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact_seconds: Option<f64>,
+}
+
+/// One state of a measured map's model error: GW beside the exact elastic
+/// solution at the same load.
+#[derive(Debug, Clone, Serialize)]
+pub struct MapStateSummary {
+    /// The load (N) on the nominal area.
+    #[serde(rename = "load_N")]
+    pub load_n: f64,
+    /// Its mean pressure (Pa).
+    #[serde(rename = "pressure_Pa")]
+    pub pressure_pa: f64,
+    /// The exact real-area fraction.
+    pub exact_area_fraction: f64,
+    /// The exact mean gap (m).
+    #[serde(rename = "exact_mean_gap_m")]
+    pub exact_mean_gap_m: f64,
+    /// GW's real-area fraction at the same load.
+    pub gw_area_fraction: f64,
+    /// GW's mean gap (m) at the same load (negative where GW's summits
+    /// are pressed below the mean plane).
+    #[serde(rename = "gw_mean_gap_m")]
+    pub gw_mean_gap_m: f64,
+    /// GW's load (N) at the exact mean gap.
+    #[serde(rename = "gw_load_at_exact_gap_N")]
+    pub gw_load_at_exact_gap_n: Option<f64>,
+}
+
+impl ModelErrorSummary {
+    fn new(m: &crate::study::model_error::ModelError) -> ModelErrorSummary {
+        let states = m.map.as_ref().map_or(&[][..], |x| &x.states[..]);
+        ModelErrorSummary {
+            pull_off: m.pull_off,
+            max_load: m.max_load,
+            hysteresis_energy: m.hysteresis_energy,
+            reference: m.full_reference(),
+            reference_pull_off_n: m.reference_pull_off,
+            reference_max_load_n: m.reference_max_load,
+            reference_hysteresis_energy_j: m.reference_hysteresis_energy,
+            listed_loads: m.listed_loads.clone(),
+            area: states.iter().map(|s| s.area).collect(),
+            load: states.iter().map(|s| s.load_at_gap).collect(),
+            mean_gap: states.iter().map(|s| s.mean_gap).collect(),
+            states: states
+                .iter()
+                .map(|s| MapStateSummary {
+                    load_n: s.load,
+                    pressure_pa: s.pressure,
+                    exact_area_fraction: s.exact_area_fraction,
+                    exact_mean_gap_m: s.exact_mean_gap,
+                    gw_area_fraction: s.gw_area_fraction,
+                    gw_mean_gap_m: s.gw_mean_gap,
+                    gw_load_at_exact_gap_n: s.gw_load_at_exact_gap,
+                })
+                .collect(),
+            exact_estimate_s: m.map.as_ref().map(|x| x.estimate_s),
+            exact_seconds: m
+                .map
+                .as_ref()
+                .filter(|x| !x.states.is_empty())
+                .map(|x| x.seconds),
+        }
+    }
 }
 
 /// Joule heating of the contact at the closest approach.
@@ -217,15 +380,25 @@ pub struct PopulationSummary {
     /// 5 % quantile (type 7).
     #[serde(rename = "p05_N")]
     pub p05_n: Option<f64>,
-    /// Its distribution-free 95 % interval.
+    /// Its distribution-free 95 % interval: the shortest pair of order
+    /// statistics whose exact binomial coverage is at least 95 %; null when
+    /// no pair reaches it (`interval_note` says why).
     #[serde(rename = "p05_interval_N")]
     pub p05_interval_n: Option<(f64, f64)>,
+    /// The exact coverage of `p05_interval_N` (the probability that it
+    /// holds the true 5 % quantile, from the binomial distribution).
+    pub p05_interval_coverage: Option<f64>,
     /// 95 % quantile.
     #[serde(rename = "p95_N")]
     pub p95_n: Option<f64>,
-    /// Its distribution-free 95 % interval.
+    /// Its distribution-free 95 % interval (as `p05_interval_N`).
     #[serde(rename = "p95_interval_N")]
     pub p95_interval_n: Option<(f64, f64)>,
+    /// The exact coverage of `p95_interval_N`.
+    pub p95_interval_coverage: Option<f64>,
+    /// Why a quantile interval is null: too few populations for any pair
+    /// of order statistics to reach the confidence.
+    pub interval_note: Option<String>,
     /// Expected summits in contact at the integral's pull-off separation.
     pub carriers: Option<f64>,
     /// The integral's pull-off, for comparison.
@@ -243,6 +416,7 @@ pub struct PopulationSummary {
 impl PopulationSummary {
     fn new(r: &crate::study::population::PopulationResults) -> PopulationSummary {
         let s = r.statistics.as_ref();
+        let interval = |q: f64| s.and_then(|s| s.quantile_interval(q).ok());
         PopulationSummary {
             seeds: r.drawn,
             first_seed: r.plan.first_seed,
@@ -253,9 +427,12 @@ impl PopulationSummary {
             median_n: s.map(|s| s.quantile(0.5)),
             std_n: s.map(|s| s.std()),
             p05_n: s.map(|s| s.quantile(0.05)),
-            p05_interval_n: s.map(|s| s.quantile_interval(0.05)),
+            p05_interval_n: interval(0.05).map(|i| i.bounds),
+            p05_interval_coverage: interval(0.05).map(|i| i.ranks.coverage),
             p95_n: s.map(|s| s.quantile(0.95)),
-            p95_interval_n: s.map(|s| s.quantile_interval(0.95)),
+            p95_interval_n: interval(0.95).map(|i| i.bounds),
+            p95_interval_coverage: interval(0.95).map(|i| i.ranks.coverage),
+            interval_note: s.and_then(crate::study::population::interval_note),
             carriers: r.carriers,
             integral_n: r.integral,
             numerical_error: "each population's pull-off is its most tensile load at the \
@@ -274,28 +451,35 @@ pub struct McSummary {
     /// Seed.
     pub seed: u64,
     /// Largest approach load of the population (N), scaled to the surface.
+    #[serde(rename = "max_load_N")]
     pub max_load: Option<f64>,
     /// Its standard error (N); `null` with fewer than
     /// [`MIN_SUMMITS_FOR_Z`] summits in contact there.
+    #[serde(rename = "max_load_standard_error_N")]
     pub max_load_standard_error: Option<f64>,
     /// Most tensile sampled retraction load of this one realisation (N):
     /// the pull-off of one switch with these summits (the minimum of its
     /// own load curve).
+    #[serde(rename = "pull_off_load_N")]
     pub pull_off_load: Option<f64>,
     /// The integral's most tensile load at the same sampled separations
     /// (N): the minimum of the *mean* load curve, which is not the mean of
     /// the realisations' minima (each realisation's few tensile summits
     /// detach at their own separations), so the two differ by far more than
     /// the standard errors of the curve.
+    #[serde(rename = "integral_sampled_pull_off_load_N")]
     pub integral_sampled_pull_off_load: Option<f64>,
     /// Pull-offs (N) of the populations with seeds `seed + 1 ..` (the
     /// scatter of one switch's pull-off, from `pull_off_population`; empty
     /// without it); `null` entries have no tensile load.
+    #[serde(rename = "pull_off_other_seeds_N")]
     pub pull_off_other_seeds: Vec<Option<f64>>,
     /// Mean of the pull-offs of all seeds drawn (this one and the others).
+    #[serde(rename = "pull_off_seed_mean_N")]
     pub pull_off_seed_mean: Option<f64>,
     /// Their sample standard deviation (N, divisor n - 1): how much one
     /// realisation's pull-off scatters.
+    #[serde(rename = "pull_off_seed_std_N")]
     pub pull_off_seed_std: Option<f64>,
     /// States where fewer than [`MIN_SUMMITS_FOR_Z`] summits of the
     /// population are in contact: no standard error or deviation is
@@ -310,6 +494,10 @@ pub struct McSummary {
     /// separation, at random positions in the area it stands for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub spots: Option<SampleSpotsSummary>,
+    /// The previous release's keys without a unit (`max_load`,
+    /// `pull_off_load`, ...), deprecated ([`DEPRECATED_KEYS`]).
+    #[serde(flatten)]
+    pub deprecated: Aliases,
 }
 
 /// Resistances of a population's explicit spots (Ohm).
@@ -330,6 +518,7 @@ pub struct SampleSpotsSummary {
 impl Summary {
     /// Summarises a run of `plan`.
     pub fn new(plan: &Plan, results: &Results) -> Summary {
+        let plan = results.plan(plan);
         let adhesive = plan.contact.adhesion.work() > 0.0;
         Summary {
             title: plan.scene.title.clone(),
@@ -351,16 +540,7 @@ impl Summary {
             hysteresis_energy: results.hysteresis_energy,
             rtol: plan.budget.rtol,
             law_model_error: plan.law.measured_error.filter(|_| adhesive),
-            model_error: results.model_error.as_ref().map(|m| ModelErrorSummary {
-                pull_off: m.pull_off,
-                max_load: m.max_load,
-                hysteresis_energy: m.hysteresis_energy,
-                reference: m.reference.clone(),
-                reference_pull_off_n: m.reference_pull_off,
-                reference_max_load_n: m.reference_max_load,
-                reference_hysteresis_energy_j: m.reference_hysteresis_energy,
-                listed_loads: m.listed_loads.clone(),
-            }),
+            model_error: results.model_error.as_ref().map(ModelErrorSummary::new),
             seconds: results.seconds,
             simd: crate::numeric::simd::arch_name(),
             evaluations: results.evaluations,
@@ -404,7 +584,50 @@ impl Summary {
                 .collect(),
             topography: topography::summary(plan, results),
             rough_sphere: results.sphere.clone(),
+            deprecated: Aliases::default(),
         }
+        .with_aliases()
+    }
+
+    /// The deprecated aliases ([`DEPRECATED_KEYS`]) of this summary's
+    /// values, set from them.
+    fn with_aliases(mut self) -> Summary {
+        use serde_json::json;
+        let headlines = self
+            .headlines
+            .0
+            .iter()
+            .filter(|(h, _)| h.key != h.sweep)
+            .map(|(h, v)| (h.key.as_str(), json!(v)));
+        self.deprecated = Aliases::of(
+            [
+                ("contact_modulus", json!(self.contact_modulus)),
+                ("start_separation", json!(self.start_separation)),
+                ("closest_separation", json!(self.closest_separation)),
+            ]
+            .into_iter()
+            .chain(headlines)
+            .chain([
+                ("pull_off_load", json!(self.pull_off_load)),
+                ("pull_off_separation", json!(self.pull_off_separation)),
+                ("hysteresis_energy", json!(self.hysteresis_energy)),
+            ]),
+        );
+        if let Some(m) = self.montecarlo.as_mut() {
+            m.deprecated = Aliases::of([
+                ("max_load", json!(m.max_load)),
+                ("max_load_standard_error", json!(m.max_load_standard_error)),
+                ("pull_off_load", json!(m.pull_off_load)),
+                (
+                    "integral_sampled_pull_off_load",
+                    json!(m.integral_sampled_pull_off_load),
+                ),
+                ("pull_off_other_seeds", json!(m.pull_off_other_seeds)),
+                ("pull_off_seed_mean", json!(m.pull_off_seed_mean)),
+                ("pull_off_seed_std", json!(m.pull_off_seed_std)),
+            ]);
+        }
+        self
     }
 
     /// Pretty JSON.
@@ -639,6 +862,7 @@ impl McSummary {
                 greenwood_ohm: s.greenwood,
                 exact_ohm: s.exact,
             }),
+            deprecated: Aliases::default(),
         }
     }
 }

@@ -2,6 +2,7 @@
 
 use crate::error::Result;
 use crate::study::measured::Headline;
+use crate::study::output::summary::Aliases;
 use crate::study::plan::Plan;
 use crate::study::plot::surface::{write_summit_heights, write_summit_map};
 use crate::study::quantity::Headlines;
@@ -127,6 +128,10 @@ pub struct HeadlineJson {
     pub pull_off_separation: Option<f64>,
     /// Wall-clock time (s).
     pub seconds: f64,
+    /// The headlines' previous keys without a unit (`max_load`,
+    /// `max_area`), the same values, for one release: deprecated.
+    #[serde(flatten)]
+    pub deprecated: Aliases,
 }
 
 impl From<&Headline> for HeadlineJson {
@@ -143,6 +148,13 @@ impl From<&Headline> for HeadlineJson {
             pull_off_load: h.pull_off_load,
             pull_off_separation: h.pull_off_separation,
             seconds: h.seconds,
+            deprecated: Aliases::of(
+                h.headlines
+                    .0
+                    .iter()
+                    .filter(|(q, _)| q.key != q.sweep)
+                    .map(|(q, v)| (q.key.as_str(), serde_json::json!(v))),
+            ),
         }
     }
 }

@@ -22,6 +22,8 @@ use crate::study::scene::{
 use std::sync::Arc;
 
 impl Plan {
+    // Over 100 lines, kept whole: the planning steps in order, each feeding the
+    // next through the same locals.
     pub(super) fn build(scene: &Scene, mode: PlanMode, inputs: &Inputs) -> Result<Plan> {
         scene.validate()?;
         let resolved = inputs.map.as_ref();

@@ -99,6 +99,10 @@ pub enum LawReason {
         /// Chosen by `auto` because no analytic law meets `rtol`: the
         /// tolerance, the closest analytic law and its measured error.
         auto: Option<(f64, String, f64)>,
+        /// Chosen by `auto` after the run: the analytic law met `rtol` for
+        /// one summit but missed it on the scene's surface; the tolerance,
+        /// that law, the output and its measured relative error there.
+        surface: Option<(f64, String, String, f64)>,
     },
 }
 
@@ -529,14 +533,28 @@ fn law_why(reason: &LawReason, d: &Decision) -> String {
                 (false, None) => "the rigid (Derjaguin) meniscus beside it".into(),
             }
         ),
-        LawReason::Calibrated { cached, path, auto } => format!(
-            "{}full Lennard-Jones sphere solver (paraboloid), tabulated on both branches to 100 pi \
+        LawReason::Calibrated {
+            cached,
+            path,
+            auto,
+            surface,
+        } => format!(
+            "{}{}full Lennard-Jones sphere solver (paraboloid), tabulated on both branches to 100 pi \
              w R, with the Lennard-Jones attraction never cut (the Dugdale laws cut it at ~z0: on \
              rough surfaces this tail can dominate the pull-off); {} {path}",
             match auto {
                 Some((rtol, law, error)) => format!(
                     "no analytic law is within rtol = {rtol:e} of the Lennard-Jones solution (the \
                      closest, {law}, is off by {error:.2e} for one summit): "
+                ),
+                None => String::new(),
+            },
+            match surface {
+                Some((rtol, law, output, error)) => format!(
+                    "law.kind = \"auto\": {law} meets rtol = {rtol:e} for one summit, but on this \
+                     surface its {output} differs by {:.1} % from the full-solver law's, so the run \
+                     uses the full-solver law: ",
+                    100.0 * error.abs()
                 ),
                 None => String::new(),
             },

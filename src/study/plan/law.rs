@@ -224,6 +224,7 @@ fn calibrated(
             path: calibration
                 .map_or_else(|| "the cache".to_string(), |c| c.path.display().to_string()),
             auto: auto.map(|(rtol, law, error)| (rtol, law.to_string(), error)),
+            surface: None,
         },
         mu: contact.tabor(),
         lambda: contact.lambda(),

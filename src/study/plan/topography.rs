@@ -21,6 +21,9 @@ pub struct TopographyPlan {
     pub file: PathBuf,
     /// What the map gave.
     pub characterisation: Arc<Characterisation>,
+    /// The map's heights (m), as read (the exact elastic solution of
+    /// `study::map_error` solves on it).
+    pub map: Arc<crate::surface::HeightMap>,
     /// The law for the measured summits (the plan's law, rescaled per
     /// summit radius), when they are summed (main model or comparison).
     pub summit_law: Option<SummitLaw>,
@@ -68,6 +71,7 @@ impl TopographyPlan {
             spec,
             file: resolved.file.clone(),
             characterisation: Arc::new(resolved.characterisation.clone()),
+            map: Arc::new(resolved.map.clone()),
             summit_law,
             kind,
         })

@@ -120,6 +120,29 @@ pub fn finish_svg_at(path: &Path, title: &str, width: u32, height: u32, scale: u
     crate::study::atomic::write(path, out).map_err(io)
 }
 
+/// Draws the legend of a chart sized in pixels in its upper left corner
+/// (white, framed, 14 px labels), then completes the file at `path` with
+/// its `title` ([`finish_svg_at`] at scale 1).
+pub fn legend_and_finish<'c, 'a: 'c, CT: plotters::coord::CoordTranslate>(
+    chart: &mut ChartContext<'c, SVGBackend<'a>, CT>,
+    root: &DrawingArea<SVGBackend<'a>, Shift>,
+    path: &Path,
+    title: &str,
+    (width, height): (u32, u32),
+) -> Result<()> {
+    let fail = |e: String| Error::io(path.display(), e);
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .draw()
+        .map_err(|e| fail(e.to_string()))?;
+    root.present().map_err(|e| fail(e.to_string()))?;
+    finish_svg_at(path, title, width, height, 1)
+}
+
 /// The legend corner (fractions of the plot: x from the left, y from the
 /// bottom) covering the fewest of `points` (fractions too) for a legend box
 /// of `w x h` (fractions); ties go to the upper right.

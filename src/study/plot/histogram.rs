@@ -97,15 +97,6 @@ impl Histogram {
                 .label(label.clone())
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 14))
-            .draw()
-            .map_err(|e| fail(e.to_string()))?;
-        root.present().map_err(|e| fail(e.to_string()))?;
-        super::frame::finish_svg_at(path, &self.title, width, height, 1)
+        super::frame::legend_and_finish(&mut chart, &root, path, &self.title, (width, height))
     }
 }

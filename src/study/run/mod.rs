@@ -1,5 +1,6 @@
 //! Executing a [`Plan`]: the loading program, pull-off and hysteresis energy.
 
+mod auto;
 mod sphere;
 
 use super::plan::{McPlan, Plan};
@@ -77,6 +78,21 @@ pub struct Results {
     /// radius against Hertz's, approach, central deflection, mesh, model
     /// warnings).
     pub sphere: Option<crate::roughsphere::SphereState>,
+    /// The plan these results are of when the run replaced the planned one
+    /// (`law.kind = "auto"` whose analytic law missed `rtol` on the
+    /// scene's surface ran again with the full-solver law); `None` when
+    /// they are of the plan that was run. See [`Results::plan`].
+    pub replanned: Option<Box<Plan>>,
+}
+
+/// `results` of an `auto` law that missed `rtol` on the surface, kept
+/// because the full-solver law's run failed with `e`.
+fn auto_failed(mut results: Results, e: &crate::Error) -> Results {
+    results.warnings.push(format!(
+        "law.kind = \"auto\": the full-solver law, which the model error above asks for, failed \
+         on this scene ({e}); the results are the analytic law's"
+    ));
+    results
 }
 
 /// The records of a curve's two legs.
@@ -272,6 +288,12 @@ fn elastic_approach<M: LoadingModel>(elastic: &M, curve: &Curve) -> Result<Vec<S
 }
 
 impl Results {
+    /// The plan these results are of: `planned` (the plan that was run)
+    /// unless the run replaced it ([`Results::replanned`]).
+    pub fn plan<'a>(&'a self, planned: &'a Plan) -> &'a Plan {
+        self.replanned.as_deref().unwrap_or(planned)
+    }
+
     /// Largest approach load (N) of the curve, if loads were computed.
     pub fn max_load(&self) -> Option<f64> {
         self.curve
@@ -300,8 +322,21 @@ impl Plan {
     /// # Errors
     /// As [`Plan::run`].
     pub fn run_with_progress(&self, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Results> {
-        self.run_unmapped(progress)
-            .map_err(|e| crate::study::scene::map_derived(&self.scene, e))
+        let results = self
+            .run_unmapped(progress)
+            .map_err(|e| crate::study::scene::map_derived(&self.scene, e))?;
+        let replanned = match self.auto_replanned(&results) {
+            Ok(Some(plan)) => plan,
+            Ok(None) => return Ok(results),
+            Err(e) => return Ok(auto_failed(results, &e)),
+        };
+        match replanned.run_unmapped(progress) {
+            Ok(mut r) => {
+                r.replanned = Some(Box::new(replanned));
+                Ok(r)
+            }
+            Err(e) => Ok(auto_failed(results, &e)),
+        }
     }
 
     fn run_unmapped(&self, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Results> {
@@ -420,14 +455,15 @@ impl Plan {
             super::plan::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
         warnings.extend(crate::numeric::simd::ignored_request());
         let max_load = curve.approach.first().and_then(|s| s.load());
-        let model_error = super::model_error::measure(
+        let mut model_error = super::model_error::measure(
             self,
             &program,
             pull_off.map(|p| p.load),
             max_load,
             hysteresis_energy,
         )?;
-        warnings.extend(model_error.warnings(&self.law.name));
+        model_error.map = super::map_error::measure(self, closest, t0.elapsed().as_secs_f64())?;
+        warnings.extend(model_error.warnings(&self.law.name, self.scene.law.kind));
         if let Some(p) = pull_off.filter(|p| p.at_start) {
             warnings.push(format!(
                 "pull-off: the retraction ends at program.start_separation = {:e} m with the load \
@@ -441,10 +477,10 @@ impl Plan {
             // How many populations the budget allowed is a note of the
             // population (in the summary and the report), not a warning:
             // the quantiles carry their intervals.
-            warnings.extend(super::population::warning(
-                r,
-                self.budget.population_agreement(),
-            ));
+            let confidence = self.switch.as_ref().map(|_| self.stiction_confidence());
+            let agreement = self.budget.population_agreement();
+            warnings.extend(super::population::warning(r, agreement));
+            warnings.extend(super::population::confidence_warning(r, confidence));
         }
         let montecarlo = match &self.montecarlo {
             Some(mc) => Some(run_montecarlo(self, mc, &run_law, &curve)?),
@@ -477,6 +513,7 @@ impl Plan {
             pull_off_population,
             model_error: Some(model_error),
             sphere: None,
+            replanned: None,
         })
         .and_then(|r| self.finish(model, r))
     }
@@ -557,7 +594,7 @@ impl Plan {
             let loads: Vec<Option<f64>> = r.listed.iter().map(|l| l.state.load()).collect();
             let separations: Vec<f64> = steps.iter().map(|&(d, _)| d).collect();
             m.measure_listed(self, &separations, &loads);
-            let before = m.warnings(&self.law.name);
+            let before = m.warnings(&self.law.name, self.scene.law.kind);
             if let Some(w) = before.into_iter().find(|w| w.contains("listed state")) {
                 r.warnings.push(w);
             }

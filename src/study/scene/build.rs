@@ -131,6 +131,35 @@ pub fn decades_from_typical(scene: &Scene, name: &str) -> f64 {
     }
 }
 
+/// The largest work of adhesion (J/m^2) a failed run is not blamed on:
+/// twice the surface energy of the most cohesive metals (tungsten, about
+/// 3.3 J/m^2), rounded up; measured works of adhesion lie below it
+/// (gold on gold: 0.5 .. 3 J/m^2; elastomers: ~0.05).
+pub const PLAUSIBLE_WORK_OF_ADHESION: f64 = 10.0;
+
+/// A run or plan failure (bad input or no convergence) of a scene whose
+/// `adhesion.w` lies above [`PLAUSIBLE_WORK_OF_ADHESION`], blamed on it:
+/// the adhesive pull of such a work keeps loads from being reached and
+/// areas finite, whatever other input the failure names.
+fn implausible_work(scene: &Scene, e: &Error) -> Option<Error> {
+    let w = scene.adhesion.w;
+    let fails = matches!(
+        e,
+        Error::OutOfRange { .. } | Error::Invalid { .. } | Error::NoConvergence { .. }
+    );
+    if !(w > PLAUSIBLE_WORK_OF_ADHESION) || !fails || e.field() == Some("adhesion.w") {
+        return None;
+    }
+    Some(Error::invalid(
+        "adhesion.w",
+        format!(
+            "adhesion.w = {w:e} J/m^2 is beyond any measured work of adhesion (0 .. \
+             {PLAUSIBLE_WORK_OF_ADHESION} J/m^2: twice the surface energy of the most cohesive \
+             metals), and the run failed on its adhesive pull: {e}"
+        ),
+    ))
+}
+
 /// Maps an error about a derived quantity, which no scene key names (the
 /// Maugis `lambda` or Tabor `mu`, a start separation, a law not finite on
 /// the interferences reached), back to the scene input that drove it out of
@@ -144,6 +173,9 @@ pub fn decades_from_typical(scene: &Scene, name: &str) -> f64 {
 /// modulus), and the message lists them all. Other derived quantities name
 /// the input furthest from typical ([`most_extreme_input`]).
 pub fn map_derived(scene: &Scene, e: Error) -> Error {
+    if let Some(e) = implausible_work(scene, &e) {
+        return e;
+    }
     let field = e.field().unwrap_or("").to_string();
     let text = e.to_string();
     if field == "program.closest_separation"

@@ -446,7 +446,7 @@ pub struct AdhesionSpec {
     /// `r_K = gamma V_m/(R_g T ln(1/RH))`, Laplace pressure `gamma/r_K`).
     /// Absent or 0: dry.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "1"), range(min = 0.0, max = 1.0))]
+    #[schemars(extend("x-unit" = "1", "exclusiveMaximum" = 1.0), range(min = 0.0))]
     pub relative_humidity: Option<f64>,
     /// Surface tension `gamma` of the condensing liquid (N/m), > 0; default
     /// water at 20 C, 0.0728.
@@ -545,6 +545,10 @@ pub struct LawSpec {
     #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0))]
     pub tan_angle: Option<f64>,
     /// Shaped power law `f(r) = A r^n`: the exponent `n`, in `(0, 50]`.
+    /// With the coefficient, the profile's contact radius at an
+    /// interference of `surface.sigma` must lie between `adhesion.z0` and
+    /// the summit spacing: an exponent that leaves no representable
+    /// coefficient for that is refused naming `law.exponent`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(extend("x-unit" = "1", "exclusiveMinimum" = 0.0), range(max = 50.0))]
     pub exponent: Option<f64>,

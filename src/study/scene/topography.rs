@@ -270,6 +270,8 @@ pub struct Resolved {
     pub file: PathBuf,
     /// What the map gave.
     pub characterisation: Characterisation,
+    /// The map's heights (m), as read.
+    pub map: crate::surface::HeightMap,
     /// Warnings about the map: a `pixel_size` that disagrees with the
     /// file's, units that are probably wrong.
     pub warnings: Vec<String>,
@@ -369,6 +371,7 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
         spec,
         file,
         characterisation: c,
+        map: topo.into_map(),
         warnings,
     }))
 }

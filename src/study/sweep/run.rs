@@ -108,6 +108,9 @@ pub struct PointOutcome {
     pub first_failure: Option<(usize, String)>,
     /// Whether a half-written last row was repaired.
     pub repaired: bool,
+    /// Rows found on resuming that were recomputed, and why (a checksum
+    /// that does not match, a file without checksums): one note each.
+    pub notes: Vec<String>,
     /// The results file.
     pub path: PathBuf,
 }
@@ -379,14 +382,7 @@ pub fn sweep_table(
         rows.extend(rest.par_iter().map(row_of).collect::<Result<Vec<_>>>()?);
         Ok(rows)
     };
-    let rows = match options.threads {
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build()
-            .map_err(|e| Error::invalid("threads", e.to_string()))?
-            .install(work)?,
-        None => work()?,
-    };
+    let rows = on_threads(options.threads, work)?;
     let mut text = header;
     text.push('\n');
     for r in rows {
@@ -455,6 +451,7 @@ pub fn run_sweep(
     };
     let file = ResultsFile::open(out, &meta)?;
     let repaired = file.repaired;
+    let notes = file.notes.clone();
     let mine: Vec<&SweepPoint> = points
         .iter()
         .filter(|p| options.shard.is_none_or(|s| s.contains(p.index)))
@@ -495,14 +492,7 @@ pub fn run_sweep(
         }
         None => Ok(()),
     };
-    match options.threads {
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build()
-            .map_err(|e| Error::invalid("threads", e.to_string()))?
-            .install(work)?,
-        None => work()?,
-    }
+    on_threads(options.threads, work)?;
     let file = file
         .into_inner()
         .map_err(|_| Error::invalid("out", "results file lock poisoned"))?;
@@ -516,6 +506,23 @@ pub fn run_sweep(
         failed_rows: failures.len(),
         first_failure: failures.into_iter().next(),
         repaired,
+        notes,
         path,
     })
+}
+
+/// Runs `work` on a pool of `threads` threads (at least one), or on the
+/// global pool when `None`.
+fn on_threads<T: Send>(
+    threads: Option<usize>,
+    work: impl FnOnce() -> Result<T> + Send,
+) -> Result<T> {
+    match threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build()
+            .map_err(|e| Error::invalid("threads", e.to_string()))?
+            .install(work),
+        None => work(),
+    }
 }

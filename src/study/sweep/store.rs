@@ -44,6 +44,43 @@ pub struct ResultsFile {
     done: BTreeMap<usize, String>,
     /// Whether a half-written last line was found and dropped on opening.
     pub repaired: bool,
+    /// Rows found on opening that are recomputed, and why: a checksum that
+    /// does not match its row (edited or damaged), or a file of an older
+    /// release without checksums. Empty when every row was kept.
+    pub notes: Vec<String>,
+}
+
+/// The name of the last column of `results.csv`: FNV-1a (64-bit, 16 hex
+/// digits) of the rest of its row, so an edited or damaged row is
+/// recomputed on resume, never trusted.
+pub const CHECKSUM_COLUMN: &str = "checksum";
+
+/// A result row as written: `row,checksum`.
+fn with_checksum(row: &str) -> String {
+    format!(
+        "{row},{:016x}",
+        crate::study::cache::fnv1a64(row.as_bytes())
+    )
+}
+
+/// The header line of a results file for the sweep's `header`.
+fn file_header(header: &str) -> String {
+    format!("{header},{CHECKSUM_COLUMN}")
+}
+
+/// The rows a results file holds, read and checked ([`read_rows`]).
+struct ReadRows {
+    /// Complete rows whose checksum matches, by point index (without
+    /// the checksum).
+    rows: BTreeMap<usize, String>,
+    /// Whether the last line was torn.
+    torn: bool,
+    /// Byte length of the intact part (up to a torn line).
+    intact: usize,
+    /// Line numbers (1-based) of rows whose checksum does not match.
+    mismatched: Vec<usize>,
+    /// Rows of an older release's file without checksums.
+    unchecked: usize,
 }
 
 /// An exclusive OS lock on `DIR/sweep.lock` (`flock` on Unix), held while
@@ -107,34 +144,59 @@ fn row_index(line: &str, fields: usize) -> Option<usize> {
     line.split(',').next()?.parse().ok()
 }
 
+/// A checksummed line split into its row and whether the checksum
+/// matches; `None` without a checksum field.
+fn checked(line: &str) -> Option<(&str, bool)> {
+    let (row, sum) = line.rsplit_once(',')?;
+    let ok = u64::from_str_radix(sum, 16)
+        .is_ok_and(|s| sum.len() == 16 && s == crate::study::cache::fnv1a64(row.as_bytes()));
+    Some((row, ok))
+}
+
 /// Reads complete rows of a results file whose first line must be
-/// `header` and whose indices must be below `total`; returns them by index
-/// and whether a torn last line was found (and the byte length of the
-/// intact part). Content errors are [`Error::Invalid`] about `field`
-/// (`out` for the directory being resumed, `merge` for an input shard),
-/// naming the file.
-fn read_rows(
-    path: &Path,
-    header: &str,
-    total: usize,
-    field: &str,
-) -> Result<(BTreeMap<usize, String>, bool, usize)> {
+/// `header` with the checksum column (or, from an older release, without
+/// it) and whose indices must be below `total`: the rows by index whose
+/// checksum matches, whether a torn last line was found (and the byte
+/// length of the intact part), the lines whose checksum does not match
+/// and how many rows carried none. Content errors are [`Error::Invalid`]
+/// about `field` (`out` for the directory being resumed, `merge` for an
+/// input shard), naming the file.
+fn read_rows(path: &Path, header: &str, total: usize, field: &str) -> Result<ReadRows> {
     let text = std::fs::read_to_string(path).map_err(|e| io_err(path, e))?;
     let bad = |why: String| Error::invalid(field, format!("{}: {why}", path.display()));
-    let mut rows = BTreeMap::new();
+    let mut out = ReadRows {
+        rows: BTreeMap::new(),
+        torn: false,
+        intact: 0,
+        mismatched: Vec::new(),
+        unchecked: 0,
+    };
+    let mut summed = true;
     let fields = header.split(',').count();
-    let mut intact = 0;
-    let mut torn = false;
     for (i, chunk) in text.split_inclusive('\n').enumerate() {
         let complete = chunk.ends_with('\n');
-        let line = chunk.trim_end_matches('\n');
+        let mut line = chunk.trim_end_matches('\n');
         if i == 0 {
-            if line != header {
+            summed = line == file_header(header);
+            if !summed && line != header {
                 return Err(bad(format!(
-                    "header {line:?} differs from this sweep's {header:?}"
+                    "header {line:?} differs from this sweep's {:?}",
+                    file_header(header)
                 )));
             }
         } else {
+            let mut trusted = !summed;
+            if summed && complete {
+                match checked(line) {
+                    Some((row, ok)) => {
+                        line = row;
+                        trusted = ok;
+                    }
+                    None => {
+                        return Err(bad(format!("line {} is not a result row: {line:?}", i + 1)))
+                    }
+                }
+            }
             match (complete, row_index(line, fields)) {
                 (true, Some(idx)) if idx >= total => {
                     return Err(bad(format!(
@@ -143,11 +205,13 @@ fn read_rows(
                         total.saturating_sub(1)
                     )))
                 }
+                (true, Some(_)) if !summed => out.unchecked += 1,
+                (true, Some(_)) if !trusted => out.mismatched.push(i + 1),
                 (true, Some(idx)) => {
-                    rows.entry(idx).or_insert_with(|| line.to_string());
+                    out.rows.entry(idx).or_insert_with(|| line.to_string());
                 }
                 (false, _) => {
-                    torn = true;
+                    out.torn = true;
                     break;
                 }
                 (true, None) => {
@@ -155,9 +219,33 @@ fn read_rows(
                 }
             }
         }
-        intact += chunk.len();
+        out.intact += chunk.len();
     }
-    Ok((rows, torn, intact))
+    Ok(out)
+}
+
+/// The notes of rows that a resume recomputes (checksums that do not
+/// match, a file without checksums) in the results file `path`.
+fn recompute_notes(path: &Path, read: &ReadRows) -> Vec<String> {
+    let mut notes = Vec::new();
+    if !read.mismatched.is_empty() {
+        let lines: Vec<String> = read.mismatched.iter().map(|l| l.to_string()).collect();
+        notes.push(format!(
+            "{}: {} row(s) whose checksum does not match (edited or damaged; lines {}) are \
+             recomputed",
+            path.display(),
+            read.mismatched.len(),
+            lines.join(", ")
+        ));
+    }
+    if read.unchecked > 0 {
+        notes.push(format!(
+            "{}: {} row(s) written without a checksum (an older asperity) are recomputed",
+            path.display(),
+            read.unchecked
+        ));
+    }
+    notes
 }
 
 impl ResultsFile {
@@ -188,19 +276,25 @@ impl ResultsFile {
             std::fs::write(&meta_path, text + "\n").map_err(|e| io_err(&meta_path, e))?;
         }
         let path = dir.join("results.csv");
-        let (done, repaired) = if path.exists() {
-            let (rows, torn, intact) = read_rows(&path, &meta.header, meta.total, "out")?;
-            if torn {
+        let (done, repaired, notes) = if path.exists() {
+            let read = read_rows(&path, &meta.header, meta.total, "out")?;
+            let notes = recompute_notes(&path, &read);
+            if !notes.is_empty() {
+                // Only the trusted rows stay, under the current header.
+                write_sorted(&path, &meta.header, &read.rows)?;
+            } else if read.torn {
                 let f = OpenOptions::new()
                     .write(true)
                     .open(&path)
                     .map_err(|e| io_err(&path, e))?;
-                f.set_len(intact as u64).map_err(|e| io_err(&path, e))?;
+                f.set_len(read.intact as u64)
+                    .map_err(|e| io_err(&path, e))?;
             }
-            (rows, torn)
+            (read.rows, read.torn, notes)
         } else {
-            std::fs::write(&path, format!("{}\n", meta.header)).map_err(|e| io_err(&path, e))?;
-            (BTreeMap::new(), false)
+            std::fs::write(&path, format!("{}\n", file_header(&meta.header)))
+                .map_err(|e| io_err(&path, e))?;
+            (BTreeMap::new(), false, Vec::new())
         };
         let file = OpenOptions::new()
             .append(true)
@@ -212,6 +306,7 @@ impl ResultsFile {
             _lock: lock,
             done,
             repaired,
+            notes,
         })
     }
 
@@ -235,7 +330,7 @@ impl ResultsFile {
     /// # Errors
     /// [`Error::Invalid`] naming `--out` on I/O failure.
     pub fn append(&mut self, index: usize, row: &str) -> Result<()> {
-        let line = format!("{row}\n");
+        let line = format!("{}\n", with_checksum(row));
         self.file
             .write_all(line.as_bytes())
             .and_then(|_| self.file.sync_data())
@@ -256,10 +351,10 @@ impl ResultsFile {
 
 fn write_sorted(path: &Path, header: &str, rows: &BTreeMap<usize, String>) -> Result<()> {
     let mut text = String::with_capacity(64 * (rows.len() + 1));
-    text.push_str(header);
+    text.push_str(&file_header(header));
     text.push('\n');
     for r in rows.values() {
-        text.push_str(r);
+        text.push_str(&with_checksum(r));
         text.push('\n');
     }
     crate::study::atomic::write(path, text).map_err(|e| io_err(path, e))
@@ -302,13 +397,20 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<PathBuf> {
                 ));
             }
         }
-        let (part, torn, _) =
-            read_rows(&dir.join("results.csv"), &meta.header, meta.total, "merge").map_err(
-                |e| match e {
-                    Error::Invalid { reason, .. } => shard_err(dir, reason),
-                    other => other,
-                },
-            )?;
+        let read = read_rows(&dir.join("results.csv"), &meta.header, meta.total, "merge").map_err(
+            |e| match e {
+                Error::Invalid { reason, .. } => shard_err(dir, reason),
+                other => other,
+            },
+        )?;
+        if let Some(note) = recompute_notes(&dir.join("results.csv"), &read).first() {
+            // A merge cannot recompute: the shard's own resume does.
+            return Err(shard_err(
+                dir,
+                format!("{note} when that shard is run again: rerun it first"),
+            ));
+        }
+        let (part, torn) = (read.rows, read.torn);
         if torn {
             return Err(shard_err(
                 dir,
@@ -411,10 +513,16 @@ mod tests {
         f.append(3, "3,1,6,ok,4e0").unwrap();
         f.finish(&m.header).unwrap();
         let done = std::fs::read_to_string(&path).unwrap();
-        assert_eq!(
-            done,
-            "index,a,seed,status,x\n0,0,7,ok,2e0\n1,0.3,8,ok,3e0\n2,0.6,9,ok,1e0\n3,1,6,ok,4e0\n"
-        );
+        let want: String = [
+            "0,0,7,ok,2e0",
+            "1,0.3,8,ok,3e0",
+            "2,0.6,9,ok,1e0",
+            "3,1,6,ok,4e0",
+        ]
+        .iter()
+        .map(|r| with_checksum(r) + "\n")
+        .collect();
+        assert_eq!(done, format!("index,a,seed,status,x,checksum\n{want}"));
         // A different sweep in the same directory is refused.
         let mut other = meta(None);
         other.scene = "t".into();
@@ -422,6 +530,59 @@ mod tests {
             ResultsFile::open(&dir, &other).unwrap_err().field(),
             Some("out")
         );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// A hand-edited row was trusted on resume: rows carry a checksum now,
+    /// and one that does not match is recomputed with a note naming the
+    /// file and the line; a file of an older release without checksums
+    /// has all its rows recomputed, with a note.
+    #[test]
+    fn resume_recomputes_edited_rows_and_rows_without_checksums() {
+        let dir = tmp("edited");
+        let m = meta(None);
+        let mut f = ResultsFile::open(&dir, &m).unwrap();
+        f.append(0, "0,0,7,ok,2e0").unwrap();
+        f.append(1, "1,0.3,8,ok,3e0").unwrap();
+        drop(f);
+        let path = dir.join("results.csv");
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert!(
+            text.starts_with("index,a,seed,status,x,checksum\n"),
+            "{text}"
+        );
+        // (the row and the comma before its checksum: a checksum's hex
+        // digits never hold a comma)
+        std::fs::write(&path, text.replace("0,0,7,ok,2e0,", "0,0,7,ok,5e0,")).unwrap();
+        let f = ResultsFile::open(&dir, &m).unwrap();
+        assert!(!f.is_done(0) && f.is_done(1));
+        assert_eq!(f.notes.len(), 1, "{:?}", f.notes);
+        assert!(
+            f.notes[0].contains("checksum does not match"),
+            "{:?}",
+            f.notes
+        );
+        assert!(f.notes[0].contains("lines 2"), "{:?}", f.notes);
+        assert!(f.notes[0].contains("results.csv"), "{:?}", f.notes);
+        drop(f);
+        // The file now holds only the trusted row: no note on the next open.
+        assert!(ResultsFile::open(&dir, &m).unwrap().notes.is_empty());
+        // An older release's file: the header without the checksum column.
+        std::fs::write(
+            &path,
+            "index,a,seed,status,x\n0,0,7,ok,2e0\n1,0.3,8,ok,3e0\n",
+        )
+        .unwrap();
+        let f = ResultsFile::open(&dir, &m).unwrap();
+        assert_eq!(f.done_count(), 0);
+        assert!(
+            f.notes[0].contains("2 row(s) written without a checksum"),
+            "{:?}",
+            f.notes
+        );
+        drop(f);
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(text, "index,a,seed,status,x,checksum\n");
         std::fs::remove_dir_all(&dir).ok();
     }
 
@@ -446,7 +607,7 @@ mod tests {
         let m = meta(None);
         drop(ResultsFile::open(&dir, &m).unwrap());
         let path = dir.join("results.csv");
-        let text = std::fs::read_to_string(&path).unwrap() + "4,1,6,ok,4e0\n";
+        let text = std::fs::read_to_string(&path).unwrap() + &with_checksum("4,1,6,ok,4e0") + "\n";
         std::fs::write(&path, text).unwrap();
         let e = ResultsFile::open(&dir, &m).unwrap_err();
         assert_eq!(e.field(), Some("out"));
@@ -477,7 +638,7 @@ mod tests {
         // (not --out).
         let csv = b.join("results.csv");
         let good = std::fs::read_to_string(&csv).unwrap();
-        std::fs::write(&csv, format!("{good}9,0,0,ok,1e0\n")).unwrap();
+        std::fs::write(&csv, format!("{good}{}\n", with_checksum("9,0,0,ok,1e0"))).unwrap();
         let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
         assert_eq!(e.field(), Some("merge"), "{e}");
         assert!(
@@ -488,7 +649,13 @@ mod tests {
             e.to_string().contains("point 9 lies outside the sweep"),
             "{e}"
         );
+        // An edited row: its checksum no longer matches.
         std::fs::write(&csv, good.replace("1,0,0,ok", "2,0,0,ok")).unwrap();
+        let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
+        assert!(e.to_string().contains("checksum does not match"), "{e}");
+        assert!(e.to_string().contains("rerun it first"), "{e}");
+        let one = with_checksum("1,0,0,ok,1e0");
+        std::fs::write(&csv, good.replace(&one, &with_checksum("2,0,0,ok,1e0"))).unwrap();
         let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
         assert!(
             e.to_string()

@@ -1,0 +1,151 @@
+//! GW's model error on a measured map, as `asperity run --json` reports it:
+//! against the library's own exact elastic boundary-element solution of
+//! the same map at the same mean pressures, the budget that skips a map too
+//! large, and `accuracy.model_error = false`.
+
+use crate::common::cli::{example, run, tmp};
+use asperity::bem::{Options, Problem, Solution};
+use asperity::surface::{npy, HeightMap};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `example` with the map path made absolute, written to `dir`, run with
+/// `--json`.
+fn run_scene(text: &str, dir: &Path) -> Value {
+    let data = root().join("examples/data");
+    let text = text.replace("../data/", &format!("{}/", data.display()));
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, text).unwrap();
+    let out = dir.join("out");
+    let (code, stdout, stderr) = run(
+        &[
+            "run",
+            scene.to_str().unwrap(),
+            "--json",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        dir,
+    );
+    assert_eq!(code, 0, "{stderr}");
+    serde_json::from_str(&stdout).unwrap()
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+/// `model_error.area` is `(GW - BEM)/BEM` with BEM from
+/// `asperity::bem::Problem` on the same map (50 nm pixels, padded, the
+/// summary's contact modulus, tolerance 1e-10, each load warm-started from
+/// the previous one as the run does) at the states' mean pressures: the
+/// area fraction is a count of pixels, so the same solves give the same
+/// count, and the relative error agrees to 1e-9 (only the GW value's
+/// printed digits and one division differ). The example's error is beyond
+/// 10 %, so its warning names the output.
+#[test]
+fn map_area_error_equals_the_library_bem_and_warns() {
+    let d = tmp("example");
+    let v = run_scene(&example("measured-topography.toml"), &d);
+    let m = &v["model_error"];
+    assert!(
+        m["reference"]
+            .as_str()
+            .unwrap()
+            .starts_with("exact elastic half-space, FFT boundary elements, tolerance 1e-10"),
+        "{m}"
+    );
+    let states = m["states"].as_array().unwrap();
+    assert_eq!(states.len(), 3, "{m}");
+    let bytes = std::fs::read(root().join("examples/data/measured-topography.npy")).unwrap();
+    let map: HeightMap = npy::parse(&bytes).unwrap();
+    let estar = num(&v["contact_modulus"]);
+    let options = Options {
+        tolerance: 1e-10,
+        ..Options::default()
+    };
+    let problem = Problem::new(&map, 50e-9, estar, false, &options).unwrap();
+    let mut warm: Option<Solution> = None;
+    let mut worst: f64 = 0.0;
+    for (k, s) in states.iter().enumerate() {
+        let p = num(&s["pressure_Pa"]);
+        let exact = problem.solve_pressure(p, &options, warm.as_ref()).unwrap();
+        let bem = exact.area_fraction();
+        assert_eq!(num(&s["exact_area_fraction"]), bem, "state {k}");
+        assert!((num(&s["exact_mean_gap_m"]) - exact.mean_gap).abs() <= 1e-12 * exact.mean_gap);
+        let want = (num(&s["gw_area_fraction"]) - bem) / bem;
+        let got = num(&m["area"][k]);
+        assert!((got - want).abs() <= 1e-9, "state {k}: {got} vs {want}");
+        let gap = (num(&s["gw_mean_gap_m"]) - exact.mean_gap) / exact.mean_gap;
+        assert!((num(&m["mean_gap"][k]) - gap).abs() <= 1e-9, "state {k}");
+        let load = num(&s["gw_load_at_exact_gap_N"]) / num(&s["load_N"]) - 1.0;
+        assert!((num(&m["load"][k]) - load).abs() <= 1e-9, "state {k}");
+        worst = worst.max(got.abs());
+        warm = Some(exact);
+    }
+    // Three loads a factor 3 apart, the largest the elastic GW's at the
+    // closest separation.
+    let l: Vec<f64> = states.iter().map(|s| num(&s["load_N"])).collect();
+    assert!((l[2] / l[1] - 3.0).abs() < 1e-12 && (l[1] / l[0] - 3.0).abs() < 1e-12);
+    let warnings = v["warnings"].to_string();
+    assert_eq!(
+        warnings.contains("model_error.area"),
+        worst > 0.1,
+        "{worst}: {warnings}"
+    );
+    assert!(
+        worst > 0.1,
+        "the example's GW area error is -27 to -31 %: {m}"
+    );
+}
+
+/// `accuracy.model_error = false` skips the exact solution and says so.
+#[test]
+fn switched_off_model_error_is_said() {
+    let d = tmp("off");
+    let text = example("measured-topography.toml") + "\n[accuracy]\nmodel_error = false\n";
+    let v = run_scene(&text, &d);
+    let m = &v["model_error"];
+    assert!(m.get("area").is_none(), "{m}");
+    assert!(
+        m["reference"]
+            .as_str()
+            .unwrap()
+            .contains("accuracy.model_error = false"),
+        "{m}"
+    );
+}
+
+/// A 600 x 600 map (padded to 1200 x 1200) at three loads is estimated at
+/// about 13 s, above the 2 s budget: not measured, with the estimate.
+#[test]
+fn a_map_too_large_says_so_with_the_estimate() {
+    let d = tmp("large");
+    let n = 600;
+    let heights: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let (i, j) = ((k / n) as f64, (k % n) as f64);
+            2e-9 * ((0.37 * i).sin() * (0.23 * j).cos() + (0.11 * i + 0.07 * j).sin())
+        })
+        .collect();
+    let map = HeightMap::new(n, n, heights).unwrap();
+    let file = d.join("big.npy");
+    std::fs::write(&file, npy::to_bytes(&map)).unwrap();
+    let text = example("measured-topography.toml")
+        .replace("../data/measured-topography.npy", file.to_str().unwrap())
+        .replace("compare = true", "compare = false");
+    let v = run_scene(&text, &d);
+    let m = &v["model_error"];
+    let reference = m["reference"].as_str().unwrap();
+    assert!(
+        reference.contains("600 x 600 map") && reference.contains("estimated"),
+        "{reference}"
+    );
+    let estimate = num(&m["exact_estimate_s"]);
+    assert!(estimate > 2.0, "{estimate}");
+    assert!(m.get("area").is_none(), "{m}");
+}
