@@ -23,11 +23,25 @@ pub fn feature_charts(plan: &Plan, results: &Results) -> Vec<FeatureChart> {
                 .filter_map(|r| Some((r.state.load()?, r.values[k]?)))
                 .collect()
         };
-        let mut series = vec![Series::leg("approach", points(&results.records.approach))];
+        // With listed states (the actuation range), the force axis starts
+        // one decade below the lightest of them: the curve's far tail
+        // (down to 1e-14 N) would otherwise take most of the decades.
+        let listed = points(&results.listed);
+        let from = listed
+            .iter()
+            .map(|p| p.0)
+            .filter(|p| *p > 0.0)
+            .fold(f64::INFINITY, f64::min)
+            / 10.0;
+        let mut approach = points(&results.records.approach);
+        if from.is_finite() {
+            approach.retain(|p| p.0 >= from);
+        }
+        let mut series = vec![Series::leg("approach", approach)];
         if !results.listed.is_empty() {
             series.push(Series {
                 stroke: Stroke::Markers,
-                ..Series::solid("listed states", points(&results.listed))
+                ..Series::solid("listed states", listed)
             });
         }
         out.push((

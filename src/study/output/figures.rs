@@ -316,8 +316,11 @@ pub fn charts(plan: &Plan, results: &Results) -> Vec<(String, Chart)> {
                 x_label: format!("separation d ({dp}m)"),
                 y_label: format!("load P ({lp}N), > 0 compressive"),
                 series,
+                // One scale per axis: linear (a symmetric-log axis reads as
+                // log and linear mixed); the tensile range has its own
+                // zoomed chart below.
                 y_range: None,
-                y_symlog: true,
+                y_symlog: false,
             },
         ));
         out.extend(adhesive_chart(results, &title, (ds, dp)));

@@ -46,7 +46,7 @@ impl Notation {
         };
         if plain {
             let decimals = if step > 0.0 { (-step_exp).max(0) } else { 3 };
-            // Log ticks (step 0) are powers of ten: as many decimals as the
+            // Log ticks (step 0) are m x 10^k: as many decimals as the
             // smallest one needs.
             let decimals = if step > 0.0 {
                 decimals
@@ -54,7 +54,7 @@ impl Notation {
                 ticks
                     .iter()
                     .filter(|t| **t != 0.0)
-                    .map(|t| (-(t.abs().log10().round() as i32)).max(0))
+                    .map(|t| (-((t.abs().log10() + 1e-9).floor() as i32)).max(0))
                     .max()
                     .unwrap_or(0)
             };
@@ -151,10 +151,24 @@ impl Axis {
     pub fn log(lo: f64, hi: f64) -> Axis {
         let (e0, e1) = (lo.log10().ceil() as i32, hi.log10().floor() as i32);
         let every = (((e1 - e0) / 9) + 1).max(1);
-        let ticks: Vec<f64> = (e0..=e1)
+        let mut ticks: Vec<f64> = (e0..=e1)
             .filter(|e| (e - e0) % every == 0)
             .map(|e| 10f64.powi(e))
             .collect();
+        // Under two decades: 1-2-5 ticks (then every 1..9 x 10^k), so
+        // that an axis has at least three labels.
+        for mantissas in [
+            &[1.0, 2.0, 5.0][..],
+            &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
+        ] {
+            if ticks.len() >= 3 {
+                break;
+            }
+            ticks = (e0 - 1..=e1)
+                .flat_map(|e| mantissas.iter().map(move |m| m * 10f64.powi(e)))
+                .filter(|v| *v >= lo && *v <= hi)
+                .collect();
+        }
         let minor = (e0 - 1..=e1)
             .flat_map(|e| (1..10).map(move |m| m as f64 * 10f64.powi(e)))
             .filter(|v| *v >= lo && *v <= hi)
@@ -357,6 +371,29 @@ mod tests {
         let l = Axis::log(3e-14, 7e-4);
         assert!(l.ticks().iter().all(|t| l.label(*t).contains('e')));
         assert_eq!(l.label(1e-13), "1e-13");
+    }
+
+    #[test]
+    fn a_short_log_axis_gets_one_two_five_labels() {
+        let a = Axis::log(0.005, 0.7);
+        let labels: Vec<String> = a.ticks().iter().map(|t| a.label(*t)).collect();
+        assert_eq!(
+            labels,
+            ["0.005", "0.01", "0.02", "0.05", "0.1", "0.2", "0.5"]
+        );
+        let b = Axis::log(2.1e-7, 3.9e-7);
+        let labels: Vec<String> = b.ticks().iter().map(|t| b.label(*t)).collect();
+        assert_eq!(
+            labels,
+            ["3e-7"],
+            "fewer than three when the axis spans less"
+        );
+        let c = Axis::log(1.5e-6, 9e-6);
+        let labels: Vec<String> = c.ticks().iter().map(|t| c.label(*t)).collect();
+        assert_eq!(
+            labels,
+            ["2e-6", "3e-6", "4e-6", "5e-6", "6e-6", "7e-6", "8e-6", "9e-6"]
+        );
     }
 
     #[test]

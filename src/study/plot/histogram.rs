@@ -58,7 +58,13 @@ impl Histogram {
         for x in &v {
             counts[(((x - lo) / w) as usize).min(bins - 1)] += 1;
         }
-        let top = *counts.iter().max().unwrap_or(&1) as f64 * 1.15;
+        // Headroom above the bars for the legend (about 20 px per entry of
+        // a ~400 px plot): the markers stop at the bars' height, so the
+        // legend covers neither bars nor markers.
+        let tallest = *counts.iter().max().unwrap_or(&1) as f64;
+        let entries = 1.0 + self.markers.len() as f64;
+        let top = tallest * 1.08 / (1.0 - (0.06 * entries + 0.04)).max(0.4);
+        let mark_top = tallest * 1.08;
         let root = super::frame::titled_root_at(path, &self.title, width, height, 1)?;
         let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(0.0, top));
         let mut chart = ChartBuilder::on(&root)
@@ -88,14 +94,35 @@ impl Histogram {
             .legend(move |(x, y)| {
                 Rectangle::new([(x, y - 5), (x + 20, y + 5)], bar.mix(0.5).filled())
             });
+        // Markers differ by dash pattern as well as colour (solid, long
+        // dash, short dash, dotted, ...): readable in grey print.
+        const DASHES: [(u32, u32); 5] = [(0, 0), (12, 5), (6, 4), (2, 4), (12, 4)];
         for (k, (label, x)) in self.markers.iter().enumerate() {
             let c = COLOURS[1 + k % (COLOURS.len() - 1)];
             let style = c.stroke_width(2);
-            chart
-                .draw_series(LineSeries::new(vec![(*x, 0.0), (*x, top)], style))
+            let (dash, gap) = DASHES[k % DASHES.len()];
+            let line = vec![(*x, 0.0), (*x, mark_top)];
+            let drawn = if dash == 0 {
+                chart.draw_series(LineSeries::new(line, style))
+            } else {
+                chart.draw_series(DashedLineSeries::new(line, dash, gap, style))
+            };
+            drawn
                 .map_err(|e| fail(e.to_string()))?
                 .label(label.clone())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+                .legend(move |(x, y)| {
+                    if dash == 0 {
+                        PathElement::new(vec![(x, y), (x + 20, y)], style).into_dyn()
+                    } else {
+                        plotters::element::DashedPathElement::new(
+                            vec![(x, y), (x + 20, y)],
+                            dash.min(8),
+                            gap.min(4),
+                            style,
+                        )
+                        .into_dyn()
+                    }
+                });
         }
         super::frame::legend_and_finish(&mut chart, &root, path, &self.title, (width, height))
     }

@@ -98,8 +98,16 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
         RGBColor(44, 160, 44),
     ];
     for ((panel, kind), colour) in panels.iter().zip(MAP_LAWS).zip(colours) {
+        // A law within tolerance nowhere says so over its empty panel.
+        let anywhere = (0..table.mu.len())
+            .any(|i| (0..table.load_bar.len()).any(|j| table.within(kind, i, j, tol)));
+        let caption = if anywhere {
+            kind.name().to_string()
+        } else {
+            format!("{}: nowhere within {tol:e}", kind.name())
+        };
         let mut chart = ChartBuilder::on(panel)
-            .caption(kind.name(), ("sans-serif", 18))
+            .caption(caption, ("sans-serif", 18))
             .margin(8)
             .x_label_area_size(40)
             .y_label_area_size(48)
@@ -109,7 +117,7 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
             .configure_mesh()
             .x_desc("Tabor parameter mu")
             .y_desc("load P / (pi w R)")
-            .label_style(("sans-serif", 12))
+            .label_style(("sans-serif", 14))
             .axis_desc_style(("sans-serif", 14))
             .x_label_formatter(&|v| xa.label(*v))
             .y_label_formatter(&|v| ya.label(*v))

@@ -71,7 +71,10 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
         .chain(model.iter().map(|p| &p.1))
         .copied()
         .fold(0.0, f64::max)
-        * 1.08;
+        * 1.08
+        // Headroom for the legend in the upper right corner: it covers
+        // neither bars nor the curve.
+        / 0.8;
     let title = format!("Summit heights ({n} summits)");
     let root = super::frame::titled_root_at(path, &title, 800, 500, 1)?;
     let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(0.0, ymax));
@@ -108,6 +111,7 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], line.stroke_width(2)));
     chart
         .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 14))
@@ -165,6 +169,8 @@ pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
         .disable_mesh()
         .x_desc(format!("x ({name})"))
         .y_desc(format!("y ({name})"))
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 16))
         .x_label_formatter(&|v| xa.label(*v))
         .y_label_formatter(&|v| ya.label(*v))
         .draw()
