@@ -71,13 +71,13 @@ impl TabulatedProfile {
         if let Some(i) = (1..n).find(|&i| !(r[i] > r[i - 1])) {
             return Err(Error::invalid(
                 "r",
-                format!("r must increase strictly (r[{i}] = {})", r[i]),
+                format!("r must increase strictly (r[{i}] = {:e})", r[i]),
             ));
         }
         if let Some(i) = (1..n).find(|&i| f[i] < f[i - 1]) {
             return Err(Error::invalid(
                 "f",
-                format!("f must not decrease (f[{i}] = {} < f[{}])", f[i], i - 1),
+                format!("f must not decrease (f[{i}] = {:e} < f[{}])", f[i], i - 1),
             ));
         }
         if !(f[n - 1] > 0.0) {
@@ -92,7 +92,7 @@ impl TabulatedProfile {
             return Err(Error::invalid(
                 "f",
                 format!(
-                    "not smooth enough: the slope jumps from {} to {} at r = {} m; \
+                    "not smooth enough: the slope jumps from {:.4e} to {:.4e} at r = {:e} m; \
                      tabulate more finely",
                     del[k - 1],
                     del[k],

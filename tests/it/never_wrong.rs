@@ -681,6 +681,76 @@ fn profile_keys_are_blamed_for_their_own_values() {
     assert!(err.contains("with law.exponent = 5e1"), "{err}");
 }
 
+/// A tabulated paraboloid shrunk 1e20-fold in both radii and heights (R =
+/// 1e-25 m, table to 5e-26 m) was blamed on `materials.e1` ("no JKR
+/// pull-off instability ... the table ends before it"): typical summits
+/// press far beyond the table, where it goes on as a cone. The radii are
+/// now blamed with the radius the table must reach; a table that reaches
+/// it (the same paraboloid at R = 10 um) runs, and a table too short
+/// for the same profile is refused the same way. Its messages print
+/// slopes as `1.5000e-1`, not as 40 decimal digits.
+#[test]
+fn a_table_shorter_than_the_contact_is_blamed_on_its_radii() {
+    let dir = tmp("tabulated-blame");
+    let table = |scale: f64, n: usize, end: f64| {
+        let r: Vec<f64> = (0..=n).map(|i| end * i as f64 / n as f64).collect();
+        let f: Vec<String> = r
+            .iter()
+            .map(|x| format!("{:e}", scale * x * x / 2e-5))
+            .collect();
+        let r: Vec<String> = r.iter().map(|x| format!("{:e}", scale * x)).collect();
+        edited(
+            "conical-summits.toml",
+            &[
+                ("profile =", "profile = \"tabulated\""),
+                (
+                    "tan_angle",
+                    &format!(
+                        "profile_r = [{}]\nprofile_f = [{}]",
+                        r.join(", "),
+                        f.join(", ")
+                    ),
+                ),
+            ],
+        )
+    };
+    for (name, scene, ok) in [
+        ("fits", table(1.0, 60, 5e-6), true),
+        ("tiny", table(1e-20, 60, 5e-6), false),
+        ("short", table(1.0, 20, 5e-7), false),
+    ] {
+        std::fs::write(dir.join(format!("{name}.toml")), scene).unwrap();
+        let (code, _, err) = run(&["run", &format!("{name}.toml"), "--plan"], &dir);
+        if ok {
+            assert_eq!(code, 0, "{name}: {err}");
+            continue;
+        }
+        assert_eq!(code, 2, "{name}: {err}");
+        assert!(err.contains("error: law.profile_r:"), "{name}: {err}");
+        assert!(
+            err.contains("beyond the table's last radius"),
+            "{name}: {err}"
+        );
+    }
+    let coarse = edited(
+        "conical-summits.toml",
+        &[
+            ("profile =", "profile = \"tabulated\""),
+            (
+                "tan_angle",
+                "profile_r = [0.0, 1e-30, 2e-30]\nprofile_f = [0.0, 5e-8, 2e-7]",
+            ),
+        ],
+    );
+    std::fs::write(dir.join("coarse.toml"), coarse).unwrap();
+    let (code, _, err) = run(&["run", "coarse.toml", "--plan"], &dir);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("the slope jumps from 5.0000e22 to 1.5000e23 at r = 1e-30 m"),
+        "{err}"
+    );
+}
+
 /// A start below the closest separation was refused as "allowed finite, in
 /// (5e-9, inf)" without the rule: the message now names both keys and why.
 #[test]

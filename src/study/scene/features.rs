@@ -180,6 +180,22 @@ impl Scene {
                 let Some(a) = contact_radius_at(profile, sigma) else {
                     return Ok(());
                 };
+                if let Profile::Tabulated(t) = profile {
+                    // Beyond its last radius a table goes on as a cone:
+                    // typical summits must press within the table.
+                    if a > t.max_radius() && a >= lo_a && a <= hi_a {
+                        return Err(Error::invalid(
+                            "law.profile_r",
+                            format!(
+                                "at an interference of surface.sigma = {sigma:e} m the \
+                                 profile's contact radius is {a:.3e} m, beyond the table's last \
+                                 radius {:.3e} m (the profile would go on as a cone there, \
+                                 which the table does not say); tabulate to at least {a:.3e} m",
+                                t.max_radius()
+                            ),
+                        ));
+                    }
+                }
                 if a >= lo_a && a <= hi_a {
                     return Ok(());
                 }
