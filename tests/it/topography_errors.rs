@@ -310,3 +310,41 @@ fn an_unknown_extension_names_the_file_and_the_known_ones() {
     );
     let _ = std::fs::remove_file(&path);
 }
+
+/// A header that declares a map beyond the memory available (an X3P of
+/// 20000 x 20000 pixels, 24 bytes a pixel: 9.6 GB) is refused from its
+/// declared dimensions before the heights are allocated, naming the file,
+/// the dimensions and the estimate; under an address-space limit of 3 GB
+/// (`ulimit -v`, which the check reads) the 3.2 GB of heights alone would
+/// abort the process.
+#[test]
+fn a_header_beyond_the_memory_is_refused_by_its_declared_dimensions() {
+    let b = x3p_with(&sample("generated-float.x3p"), |x| {
+        x.replace("<SizeX>25</SizeX>", "<SizeX>20000</SizeX>")
+            .replace("<SizeY>20</SizeY>", "<SizeY>20000</SizeY>")
+    });
+    let path = scratch().join("beyond-memory.x3p");
+    std::fs::write(&path, &b).unwrap();
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 3000000 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_asperity"))
+        .arg("surface")
+        .arg(&path)
+        .arg("--json")
+        .output()
+        .expect("run asperity");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty(), "{err}");
+    for word in [
+        path.display().to_string().as_str(),
+        "20000 x 20000 map its header declares",
+        "X3P (ISO 25178-72)",
+        "needs about 9.6 GB",
+        "refused before allocating",
+    ] {
+        assert!(err.contains(word), "'{word}' in {err}");
+    }
+    let _ = std::fs::remove_file(&path);
+}
