@@ -54,7 +54,7 @@ impl Default for ReadOptions {
 #[derive(Serialize, Debug, Clone, PartialEq)]
 pub struct SourceJson {
     /// The format's short name (`x3p`, `sdf`, `gwy`, `sur`, `di`, `ibw`,
-    /// `opd`, `opdx`, `nc`, `frt`, `npy`, `text`).
+    /// `opd`, `opdx`, `nc`, `frt`, `plux`, `npy`, `text`).
     pub format: &'static str,
     /// The channel read.
     pub channel: String,

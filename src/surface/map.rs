@@ -263,7 +263,7 @@ mod tests {
     fn the_one_validating_pass_finds_every_bad_height_and_the_largest() {
         // 8 lanes and a tail of 3: a bad height in every position is found.
         let z: Vec<f64> = (0..35).map(|k| (k as f64 - 17.0) * 0.5).collect();
-        assert_eq!(largest_finite(&z), Some(9.0));
+        assert_eq!(largest_finite(&z), Some(8.5));
         for k in 0..35 {
             for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
                 let mut w = z.clone();
@@ -272,8 +272,8 @@ mod tests {
             }
         }
         let map = HeightMap::new(5, 7, z[..35].to_vec()).unwrap();
-        assert_eq!(map.largest(), 9.0);
-        assert_eq!(map.clone().scaled(0.1).unwrap().largest(), 9.0 * 0.1);
+        assert_eq!(map.largest(), 8.5);
+        assert_eq!(map.clone().scaled(0.1).unwrap().largest(), 8.5 * 0.1);
     }
 
     #[test]

@@ -32,6 +32,7 @@ mod md5;
 mod nc;
 mod opd;
 mod opdx;
+mod plux;
 mod sanity;
 mod sdf;
 mod sur;
@@ -92,11 +93,13 @@ pub enum Format {
     NetCdf,
     /// FRT MicroProf `.frt`.
     Frt,
+    /// Sensofar `.plux`.
+    Plux,
 }
 
 impl Format {
     /// Every format, in the order `docs/surface.md` lists them.
-    pub const ALL: [Format; 12] = [
+    pub const ALL: [Format; 13] = [
         Format::Npy,
         Format::Text,
         Format::X3p,
@@ -109,6 +112,7 @@ impl Format {
         Format::Opdx,
         Format::NetCdf,
         Format::Frt,
+        Format::Plux,
     ];
 
     /// The short name (`x3p`, `sdf`, ..., `di` for Nanoscope, `nc`).
@@ -126,6 +130,7 @@ impl Format {
             Format::Opdx => "opdx",
             Format::NetCdf => "nc",
             Format::Frt => "frt",
+            Format::Plux => "plux",
         }
     }
 
@@ -144,12 +149,13 @@ impl Format {
             Format::Opdx => "Dektak OPDx",
             Format::NetCdf => "NetCDF-3",
             Format::Frt => "FRT MicroProf",
+            Format::Plux => "Sensofar .plux",
         }
     }
 
     /// The format of a file name's extension (case-insensitive): `npy`,
     /// `txt`/`csv`/`asc`, `x3p`, `sdf`, `gwy`, `sur`, `di`/`spm`/three
-    /// digits (Nanoscope), `ibw`, `opd`, `opdx`, `nc`, `frt`.
+    /// digits (Nanoscope), `ibw`, `opd`, `opdx`, `nc`, `frt`, `plux`.
     pub fn from_extension(ext: &str) -> Option<Format> {
         let e = ext.to_ascii_lowercase();
         Some(match e.as_str() {
@@ -166,13 +172,14 @@ impl Format {
             "opdx" => Format::Opdx,
             "nc" => Format::NetCdf,
             "frt" => Format::Frt,
+            "plux" => Format::Plux,
             _ => return None,
         })
     }
 
     /// The extensions [`Format::from_extension`] knows, for messages.
     pub const EXTENSIONS: &'static str = ".npy, .txt, .csv, .asc, .x3p, .sdf, .gwy, .sur, .di, \
-        .spm, .001-.999, .ibw, .opd, .opdx, .nc, .frt";
+        .spm, .001-.999, .ibw, .opd, .opdx, .nc, .frt, .plux";
 }
 
 /// Which channel of a file with several to read.
@@ -523,6 +530,7 @@ pub fn read_bytes(bytes: &[u8], format: Format, channel: &Channel) -> Result<Mea
         Format::Opdx => opdx::read(bytes, channel),
         Format::NetCdf => nc::read(bytes, channel),
         Format::Frt => frt::read(bytes, channel),
+        Format::Plux => plux::read(bytes, channel),
     };
     parsed.map_err(|b| b.error(format))
 }

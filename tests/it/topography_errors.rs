@@ -88,6 +88,11 @@ fn text_value(b: &[u8], key: &str, value: &str) -> Vec<u8> {
 
 /// The same archive with `main.xml` rewritten by `edit`.
 fn x3p_with(bytes: &[u8], edit: impl Fn(&str) -> String) -> Vec<u8> {
+    zip_with(bytes, "main.xml", edit)
+}
+
+/// The same archive with its member `member` rewritten by `edit`.
+fn zip_with(bytes: &[u8], member: &str, edit: impl Fn(&str) -> String) -> Vec<u8> {
     let mut zin = zip::ZipArchive::new(std::io::Cursor::new(bytes)).unwrap();
     let mut out = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
     let opts =
@@ -97,7 +102,7 @@ fn x3p_with(bytes: &[u8], edit: impl Fn(&str) -> String) -> Vec<u8> {
         let name = f.name().unwrap().to_string();
         let mut data = Vec::new();
         f.read_to_end(&mut data).unwrap();
-        if name == "main.xml" {
+        if name == member {
             data = edit(&String::from_utf8(data).unwrap()).into_bytes();
         }
         out.start_file(name, opts).unwrap();
@@ -253,6 +258,17 @@ fn cases() -> Vec<Case> {
                     }
                     p += 6 + len;
                 }
+            },
+        },
+        Case {
+            sample: "generated-1.plux",
+            ext: "plux",
+            format: "Sensofar .plux",
+            huge: |b| {
+                zip_with(b, "index.xml", |x| {
+                    x.replace("<IMAGE_SIZE_X>27<", "<IMAGE_SIZE_X>99999<")
+                        .replace("<IMAGE_SIZE_Y>14<", "<IMAGE_SIZE_Y>99999<")
+                })
             },
         },
     ]
