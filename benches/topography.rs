@@ -5,6 +5,12 @@
 //! most instruments write it), and binary SDF. Target: at most 2x the
 //! `.npy` read.
 //!
+//! The map read at the memory floor: `read_npy` (the `.npy` memory-mapped
+//! and validated in one pass, the buffer the characterisation uses) alone
+//! and followed by the characterisation, as `asperity surface MAP.npy`
+//! does (`docs/performance.md`, "Round three": at most 0.15 s of CPU for
+//! both, whole process).
+//!
 //! Criterion times CPU (user + system of the process, from
 //! `/proc/self/stat`, so both cores' work counts) per read; the ratios to
 //! `.npy` are printed at the end.
@@ -12,8 +18,8 @@
 //! `cargo bench --bench topography`
 
 use asperity::surface::synthetic::GaussianSurface;
-use asperity::surface::{npy, HeightMap};
-use asperity::topography::{read, to_x3p, Channel};
+use asperity::surface::{npy, HeightMap, Topography};
+use asperity::topography::{read, read_npy, to_x3p, Channel};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use std::io::{Read, Write};
@@ -138,5 +144,42 @@ fn reading(c: &mut Criterion) {
     let _ = std::fs::remove_dir_all(dir);
 }
 
-criterion_group!(benches, reading);
+/// CPU of `iters` runs of `f`.
+fn cpu_of(iters: u64, mut f: impl FnMut()) -> Duration {
+    let t0 = cpu_time();
+    for _ in 0..iters {
+        f();
+    }
+    cpu_time() - t0
+}
+
+fn npy_floor(c: &mut Criterion) {
+    let (dir, paths) = files();
+    let p = &paths[0].1;
+    let map = read_npy(p).unwrap();
+    assert!(
+        map.is_shared(),
+        "a native float64 .npy is read where it lies"
+    );
+    drop(map);
+    let read_only = || {
+        black_box(read_npy(black_box(p)).unwrap().heights().len());
+    };
+    let characterised = || {
+        let topo = Topography::new(read_npy(black_box(p)).unwrap(), DX).unwrap();
+        black_box(topo.characterise(false).unwrap().summits.len());
+    };
+    let mut g = c.benchmark_group("npy_4096");
+    g.sample_size(10);
+    g.measurement_time(Duration::from_secs(10));
+    g.warm_up_time(Duration::from_secs(2));
+    g.bench_function("read_npy_cpu", |b| b.iter_custom(|n| cpu_of(n, read_only)));
+    g.bench_function("read_npy_characterise_cpu", |b| {
+        b.iter_custom(|n| cpu_of(n, characterised))
+    });
+    g.finish();
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+criterion_group!(benches, reading, npy_floor);
 criterion_main!(benches);

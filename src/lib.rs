@@ -22,7 +22,9 @@
 //! # Ok::<(), asperity::Error>(())
 //! ```
 #![deny(missing_docs)]
-#![forbid(unsafe_code)]
+// One module maps files into memory (`topography::mapped`, its one `unsafe`
+// block allowed there with its reasons); nothing else may use `unsafe`.
+#![deny(unsafe_code)]
 // `!(x > y)` is the NaN-safe test this crate uses on purpose: NaN fails it.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 // Constants keep the digits of their published or mpmath source.

@@ -24,8 +24,18 @@ the median of both runs' medians taken. Both answers are checked against
 each other: summit count and the sum of their flat indices equal, moments, plane and summit
 statistics to 1e-12 relative (roundoff of sums in another order).
 
+End to end (the map read from its file, as a user runs it): the same
+`.npy` through `asperity surface MAP.npy --pixel-size 1e-7 --json` against
+a Python process doing `np.load` and `characterise` above, each a whole
+process on one thread (`RAYON_NUM_THREADS=1`), run in turn (A B A B ...),
+E2E_REPEATS each; CPU time (user + system) and peak resident memory of each
+process from `/usr/bin/time`, medians quoted, and the numpy process's own
+`np.load` + `characterise` CPU time (without the interpreter's start). The
+answers are checked against each other (moments to 1e-12, summit count
+equal).
+
 Run from the repository root:
-  cargo build --release --example surface_ns_per_pixel
+  cargo build --release --example surface_ns_per_pixel --bin asperity
   python3 benches/peers/surface_numpy.py        # needs numpy
 Writes benches/peers/surface_numpy.json.
 """
@@ -46,6 +56,21 @@ DX = 1e-7
 REPEATS = 5
 RUST_REPEATS = 9
 EXAMPLE = "target/release/examples/surface_ns_per_pixel"
+ASPERITY = "target/release/asperity"
+E2E_REPEATS = 5
+NUMPY_CHILD = """
+import sys, time
+t0 = time.process_time()
+import numpy as np
+sys.path.insert(0, {here!r})
+from surface_numpy import characterise
+t1 = time.process_time()
+r = characterise(np.load({npy!r}), {dx!r})
+t2 = time.process_time()
+import json
+print(json.dumps({{"m0": r["m0"], "m2": r["m2"], "m4": r["m4"], "summits": r["summits"],
+                  "import_s": t1 - t0, "load_characterise_s": t2 - t1}}))
+"""
 NPY = "/tmp/asperity_surface_numpy_map.npy"
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "surface_numpy.json")
 
@@ -98,6 +123,58 @@ def rust_run(write_npy):
     return json.loads(subprocess.run(args, env=env, check=True, capture_output=True, text=True).stdout)
 
 
+def whole_process(args, env):
+    """Runs args under /usr/bin/time; its stdout, CPU seconds (user + system)
+    and peak RSS (MiB). (A child forked from this process would start its
+    peak RSS at this process's, which holds the map: /usr/bin/time's own
+    child does not.)"""
+    stats = "/tmp/asperity_surface_numpy_time.txt"
+    timed = ["/usr/bin/time", "-f", "%U %S %M", "-o", stats] + args
+    out = subprocess.run(timed, env=env, check=True, capture_output=True, text=True).stdout
+    with open(stats) as f:
+        user, system, kib = f.read().split()[-3:]
+    os.remove(stats)
+    return out, float(user) + float(system), float(kib) / 1024.0
+
+
+def end_to_end(ours):
+    """asperity surface MAP.npy against np.load + characterise, whole processes in turn."""
+    env = dict(os.environ, RAYON_NUM_THREADS="1")
+    here = os.path.dirname(os.path.abspath(__file__))
+    child = NUMPY_CHILD.format(here=here, npy=NPY, dx=DX)
+    a_cmd = [ASPERITY, "surface", NPY, "--pixel-size", repr(DX), "--json"]
+    b_cmd = [sys.executable, "-c", child]
+    a, b = [], []
+    for k in range(E2E_REPEATS + 1):
+        ra = whole_process(a_cmd, env)
+        rb = whole_process(b_cmd, env)
+        if k > 0:  # the first pair warms the page cache
+            a.append(ra)
+            b.append(rb)
+    got = json.loads(a[-1][0])
+    theirs = json.loads(b[-1][0])
+    assert got["summits"]["count"] == ours["summits"] == theirs["summits"]
+    worst = max(abs(got[k] - ours[k]) / abs(ours[k]) for k in ("m0", "m2", "m4"))
+    worst = max([worst] + [abs(theirs[k] - ours[k]) / abs(ours[k]) for k in ("m0", "m2", "m4")])
+    assert worst <= 1e-12, worst
+    med = lambda v: float(np.median(v))  # noqa: E731
+    a_cpu, b_cpu = med([r[1] for r in a]), med([r[1] for r in b])
+    in_process = med([json.loads(r[0])["load_characterise_s"] for r in b])
+    return {
+        "command": " ".join(a_cmd),
+        "file_mib": round(os.path.getsize(NPY) / 2**20, 1),
+        "repeats": E2E_REPEATS,
+        "asperity_cpu_s_median": round(a_cpu, 3),
+        "asperity_peak_mib_median": round(med([r[2] for r in a]), 1),
+        "numpy_process_cpu_s_median": round(b_cpu, 3),
+        "numpy_process_peak_mib_median": round(med([r[2] for r in b]), 1),
+        "numpy_load_characterise_cpu_s_median": round(in_process, 3),
+        "ratio_numpy_process_over_asperity": round(b_cpu / a_cpu, 2),
+        "ratio_numpy_in_process_over_asperity": round(in_process / a_cpu, 2),
+        "largest_relative_difference": worst,
+    }
+
+
 def cpu_model():
     try:
         out = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
@@ -107,8 +184,9 @@ def cpu_model():
 
 
 def main():
-    if not os.path.exists(EXAMPLE):
-        sys.exit(f"{EXAMPLE} missing: cargo build --release --example surface_ns_per_pixel")
+    for exe in (EXAMPLE, ASPERITY):
+        if not os.path.exists(exe):
+            sys.exit(f"{exe} missing: cargo build --release --example surface_ns_per_pixel --bin asperity")
     first = rust_run(write_npy=True)
     z = np.load(NPY)
     assert z.shape == (SIDE, SIDE) and z.dtype == np.float64
@@ -118,6 +196,7 @@ def main():
         ours = characterise(z, DX)
         times.append(time.process_time() - t0)
     second = rust_run(write_npy=False)
+    e2e = end_to_end(ours)
     os.remove(NPY)
     numpy_ms = float(np.median(times)) * 1e3
     rust_ms = float(np.median([first["cpu_ms_median"], second["cpu_ms_median"]]))
@@ -149,6 +228,7 @@ def main():
         "summit_index_sum": index_sum,
         "largest_relative_difference": max(worst.values()),
         "relative_differences": worst,
+        "end_to_end": e2e,
         "load_average": os.getloadavg(),
     }
     with open(OUT, "w") as f:

@@ -239,7 +239,7 @@ pub fn surface_py(
 /// Read a measured map from an instrument or exchange file: AFM,
 /// profilometer and interferometer formats with their pixel sizes and
 /// units (``.x3p``, ``.sdf``, ``.gwy``, ``.sur``, ``.di``/``.spm``,
-/// ``.ibw``, ``.opd``, ``.opdx``, ``.nc``, ``.frt``), ``.npy`` or a text
+/// ``.ibw``, ``.opd``, ``.opdx``, ``.nc``, ``.frt``, ``.plux``), ``.npy`` or a text
 /// matrix.
 ///
 /// Parameters

@@ -54,7 +54,7 @@ impl Default for ReadOptions {
 #[derive(Serialize, Debug, Clone, PartialEq)]
 pub struct SourceJson {
     /// The format's short name (`x3p`, `sdf`, `gwy`, `sur`, `di`, `ibw`,
-    /// `opd`, `opdx`, `nc`, `frt`, `npy`, `text`).
+    /// `opd`, `opdx`, `nc`, `frt`, `plux`, `npy`, `text`).
     pub format: &'static str,
     /// The channel read.
     pub channel: String,
@@ -104,17 +104,32 @@ pub fn read_measured(path: &Path, o: &ReadOptions) -> CommandResult<MeasuredMap>
     let shown = path.display().to_string();
     let format = topography::format_of(path)?;
     refuse_unit(o.height_unit, format, &shown)?;
+    let to_m = o.height_unit.map_or(1.0, HeightUnit::metres) * o.scale;
+    let unit = o.height_unit.map_or("m", Named::name).to_string();
+    if format == Format::Npy {
+        // The one buffer: the mapped file, validated once, copied only
+        // when scaled.
+        one_channel(&o.channel, format)?;
+        let map = topography::read_npy(path)?;
+        return Ok(MeasuredMap {
+            map: map.scaled(to_m).map_err(|e| e.renamed(&param("scale")))?,
+            format,
+            channel: "heights".into(),
+            unit,
+            file_pixels: None,
+            periodic: false,
+            missing: 0,
+        });
+    }
     let mut m = topography::read(path, &o.channel)?;
     let missing = m.missing();
     if missing > 0 && o.fill_missing {
         m.fill_missing().map_err(|e| e.renamed(&shown))?;
     }
-    let to_m = o.height_unit.map_or(1.0, HeightUnit::metres) * o.scale;
     let (format, channel, file_pixels, periodic) =
         (m.format, m.channel.clone(), m.pixel_size, m.periodic);
-    let unit = match (o.height_unit, format) {
-        (Some(u), _) => Named::name(u).to_string(),
-        (None, Format::Npy | Format::Text) => "m".to_string(),
+    let unit = match format {
+        Format::Text => unit,
         _ => m.unit.clone(),
     };
     let map = m.into_map().map_err(|e| e.renamed(&shown))?;
@@ -194,6 +209,17 @@ pub fn read_topography(
         periodic: m.periodic,
     };
     Ok((m.heights, meta))
+}
+
+/// A one-channel file (`.npy`) takes only the default channel or 0.
+fn one_channel(channel: &Channel, format: Format) -> CommandResult<()> {
+    if matches!(channel, Channel::Default | Channel::Index(0)) {
+        return Ok(());
+    }
+    Err(Error::invalid(
+        param("channel"),
+        format!("a {} file has one channel", format.describe()),
+    ))
 }
 
 /// `{height_unit}` is only for `.npy` and text maps.

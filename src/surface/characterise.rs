@@ -74,7 +74,7 @@ impl Topography {
     pub fn with_pixels(map: HeightMap, pixel_size: f64, dy: f64) -> Result<Self> {
         PIXEL_SIZE_RANGE.check("pixel_size", pixel_size)?;
         PIXEL_SIZE_RANGE.check("pixel_size_y", dy)?;
-        let largest = map.heights().iter().fold(0.0, |m: f64, z| m.max(z.abs()));
+        let largest = map.largest();
         if !(largest <= MAX_HEIGHT) {
             return Err(Error::invalid(
                 "heights",

@@ -37,7 +37,7 @@ pub mod synthetic;
 pub mod text;
 
 pub use characterise::{Characterisation, Topography, MAX_HEIGHT, PIXEL_SIZE_RANGE};
-pub use map::HeightMap;
+pub use map::{HeightMap, HeightSource, Heights};
 pub use moments::Moments;
 pub use nayak::{GwParameters, NayakPrediction, MCCOOL_HEIGHT_CONSTANT, NAYAK_HEIGHT_CONSTANT};
 pub use plane::Plane;

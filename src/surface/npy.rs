@@ -17,6 +17,22 @@ fn bad(reason: impl Into<String>) -> Error {
     Error::invalid(NAME, reason)
 }
 
+/// What a `.npy` header says of its array, checked against the file's
+/// length: where the data start and how to read them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Layout {
+    /// Rows of the array.
+    pub rows: usize,
+    /// Columns.
+    pub cols: usize,
+    /// Bytes per value: 8 (float64) or 4 (float32).
+    pub size: usize,
+    /// Whether the values are big-endian.
+    pub big_endian: bool,
+    /// The byte offset of the data in the file.
+    pub offset: usize,
+}
+
 /// Parses a `.npy` file's bytes into a height map.
 ///
 /// # Errors
@@ -25,6 +41,19 @@ fn bad(reason: impl Into<String>) -> Error {
 /// float32), Fortran order, a rank other than 2, truncated data, or any
 /// reason [`HeightMap::new`] gives (too small, NaN or infinite heights).
 pub fn parse(bytes: &[u8]) -> Result<HeightMap> {
+    let l = layout(bytes)?;
+    let want = l.rows * l.cols * l.size;
+    let heights = decode(&bytes[l.offset..l.offset + want], l.size, l.big_endian);
+    HeightMap::new(l.rows, l.cols, heights)
+}
+
+/// The [`Layout`] of a `.npy` file's bytes: the header parsed and the data
+/// checked to be exactly the `rows x cols` values it describes.
+///
+/// # Errors
+/// As [`parse`], except the reasons of [`HeightMap::new`] (the values are
+/// not read).
+pub fn layout(bytes: &[u8]) -> Result<Layout> {
     if bytes.is_empty() {
         return Err(bad("empty file"));
     }
@@ -85,8 +114,13 @@ pub fn parse(bytes: &[u8]) -> Result<HeightMap> {
             data.len() - want
         )));
     }
-    let heights = decode(&data[..want], size, big_endian);
-    HeightMap::new(rows, cols, heights)
+    Ok(Layout {
+        rows,
+        cols,
+        size,
+        big_endian,
+        offset: start + len,
+    })
 }
 
 /// `(rows, cols)` of a 2-D shape.
@@ -111,7 +145,7 @@ fn two_dims(shape: &[usize]) -> Result<(usize, usize)> {
 
 /// The values of `data` (float64 when `size` is 8, else float32; little-
 /// or big-endian) as `f64`.
-fn decode(data: &[u8], size: usize, big_endian: bool) -> Vec<f64> {
+pub fn decode(data: &[u8], size: usize, big_endian: bool) -> Vec<f64> {
     if size == 8 {
         data.chunks_exact(8)
             .map(|b| {

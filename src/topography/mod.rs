@@ -27,10 +27,12 @@ mod fill;
 mod frt;
 mod gwy;
 mod ibw;
+mod mapped;
 mod md5;
 mod nc;
 mod opd;
 mod opdx;
+mod plux;
 mod sanity;
 mod sdf;
 mod sur;
@@ -48,6 +50,19 @@ use std::path::Path;
 /// Most pixels a map may declare (2^31, 17 GB of heights): a header
 /// beyond is refused before anything is allocated.
 pub const MAX_PIXELS: usize = 1 << 31;
+
+/// Peak memory (bytes) per pixel a map's header declares, of reading and
+/// characterising it: the heights (8), one map-sized working copy a reader
+/// or a command may make (8: an inflated X3P member, a transposed or
+/// flipped map, a filled or scaled copy) and the summits at their most (8:
+/// one per 2 x 2 pixels, 32 bytes each). The file itself is memory-mapped:
+/// its pages are the page cache's, not counted. A header declaring more
+/// than the memory available is refused before anything is allocated.
+pub const BYTES_PER_PIXEL: f64 = 24.0;
+
+/// The same for a float64 `.npy` read where it lies ([`read_npy`]): no
+/// heights of its own, only the working copy and the summits.
+pub const NPY_MAPPED_BYTES_PER_PIXEL: f64 = 16.0;
 
 /// A file format asperity reads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -78,11 +93,13 @@ pub enum Format {
     NetCdf,
     /// FRT MicroProf `.frt`.
     Frt,
+    /// Sensofar `.plux`.
+    Plux,
 }
 
 impl Format {
     /// Every format, in the order `docs/surface.md` lists them.
-    pub const ALL: [Format; 12] = [
+    pub const ALL: [Format; 13] = [
         Format::Npy,
         Format::Text,
         Format::X3p,
@@ -95,6 +112,7 @@ impl Format {
         Format::Opdx,
         Format::NetCdf,
         Format::Frt,
+        Format::Plux,
     ];
 
     /// The short name (`x3p`, `sdf`, ..., `di` for Nanoscope, `nc`).
@@ -112,6 +130,7 @@ impl Format {
             Format::Opdx => "opdx",
             Format::NetCdf => "nc",
             Format::Frt => "frt",
+            Format::Plux => "plux",
         }
     }
 
@@ -130,12 +149,13 @@ impl Format {
             Format::Opdx => "Dektak OPDx",
             Format::NetCdf => "NetCDF-3",
             Format::Frt => "FRT MicroProf",
+            Format::Plux => "Sensofar .plux",
         }
     }
 
     /// The format of a file name's extension (case-insensitive): `npy`,
     /// `txt`/`csv`/`asc`, `x3p`, `sdf`, `gwy`, `sur`, `di`/`spm`/three
-    /// digits (Nanoscope), `ibw`, `opd`, `opdx`, `nc`, `frt`.
+    /// digits (Nanoscope), `ibw`, `opd`, `opdx`, `nc`, `frt`, `plux`.
     pub fn from_extension(ext: &str) -> Option<Format> {
         let e = ext.to_ascii_lowercase();
         Some(match e.as_str() {
@@ -152,13 +172,14 @@ impl Format {
             "opdx" => Format::Opdx,
             "nc" => Format::NetCdf,
             "frt" => Format::Frt,
+            "plux" => Format::Plux,
             _ => return None,
         })
     }
 
     /// The extensions [`Format::from_extension`] knows, for messages.
     pub const EXTENSIONS: &'static str = ".npy, .txt, .csv, .asc, .x3p, .sdf, .gwy, .sur, .di, \
-        .spm, .001-.999, .ibw, .opd, .opdx, .nc, .frt";
+        .spm, .001-.999, .ibw, .opd, .opdx, .nc, .frt, .plux";
 }
 
 /// Which channel of a file with several to read.
@@ -259,6 +280,8 @@ pub(crate) type Parsed<T> = std::result::Result<T, Bad>;
 pub(crate) struct Bad {
     reason: String,
     channel: bool,
+    /// Beyond the memory: `(rows, cols, needed, available)` (bytes).
+    memory: Option<(usize, usize, f64, f64)>,
 }
 
 impl Bad {
@@ -267,6 +290,7 @@ impl Bad {
         Bad {
             reason: reason.into(),
             channel: false,
+            memory: None,
         }
     }
 
@@ -292,6 +316,43 @@ impl Bad {
         Bad {
             reason,
             channel: true,
+            memory: None,
+        }
+    }
+
+    /// A map of `rows x cols` pixels needs `needed` bytes, more than the
+    /// `available`.
+    fn memory(rows: usize, cols: usize, needed: f64, available: f64) -> Bad {
+        Bad {
+            reason: format!("{rows} x {cols} pixels need more memory than is available"),
+            channel: false,
+            memory: Some((rows, cols, needed, available)),
+        }
+    }
+
+    /// The crate's error for this reason about a file in `format` (named
+    /// `topography`, renamed to the file by [`read`]).
+    fn error(self, format: Format) -> Error {
+        if let Some((rows, cols, needed, available)) = self.memory {
+            return Error::OutOfMemory {
+                what: "topography".into(),
+                doing: format!(
+                    "reading and characterising the {rows} x {cols} map its header declares ({}, \
+                     {BYTES_PER_PIXEL} bytes a pixel at most)",
+                    format.describe()
+                ),
+                needed,
+                available,
+                hint: ": refused before allocating; crop or downsample it".into(),
+            };
+        }
+        if self.channel {
+            Error::invalid("{channel}", self.reason)
+        } else {
+            Error::invalid(
+                "topography",
+                format!("{} file: {}", format.describe(), self.reason),
+            )
         }
     }
 }
@@ -328,9 +389,29 @@ pub(crate) fn pick(names: &[String], default: usize, choice: &Channel) -> Parsed
     }
 }
 
+/// `rows x cols` pixels are plausible ([`dims`]) and fit in the memory
+/// available at [`BYTES_PER_PIXEL`] ([`fits`]): what every reader asks
+/// before it allocates the heights; the count of pixels.
+pub(crate) fn grid(rows: usize, cols: usize) -> Parsed<usize> {
+    let n = dims(rows, cols)?;
+    fits(rows, cols, BYTES_PER_PIXEL)?;
+    Ok(n)
+}
+
+/// `Ok` when `rows x cols` pixels at `per_pixel` bytes fit in the memory
+/// available ([`crate::study::memory::available`]; always when no bound is
+/// known).
+pub(crate) fn fits(rows: usize, cols: usize, per_pixel: f64) -> Parsed<()> {
+    let needed = rows as f64 * cols as f64 * per_pixel;
+    match crate::study::memory::available() {
+        Some(have) if needed > have => Err(Bad::memory(rows, cols, needed, have)),
+        _ => Ok(()),
+    }
+}
+
 /// `rows x cols` pixels are plausible: both > 0, their product at most
 /// [`MAX_PIXELS`]; the count of pixels.
-pub(crate) fn grid(rows: usize, cols: usize) -> Parsed<usize> {
+pub(crate) fn dims(rows: usize, cols: usize) -> Parsed<usize> {
     if rows == 0 || cols == 0 {
         return Err(Bad::corrupt(format!(
             "the header gives {rows} x {cols} pixels"
@@ -348,17 +429,22 @@ pub(crate) fn grid(rows: usize, cols: usize) -> Parsed<usize> {
 
 /// `rows x cols` values of `size` bytes from `data` (exactly that many
 /// bytes or more): their bytes.
+///
+/// A file too short for its header is truncated before it is too large
+/// for the memory ([`fits`], checked last).
 pub(crate) fn raster(data: &[u8], rows: usize, cols: usize, size: usize) -> Parsed<&[u8]> {
-    let n = grid(rows, cols)?;
+    let n = dims(rows, cols)?;
     let want = n
         .checked_mul(size)
         .ok_or_else(|| Bad::corrupt("the data size overflows"))?;
-    data.get(..want).ok_or_else(|| {
+    let data = data.get(..want).ok_or_else(|| {
         Bad::truncated(format!(
             "{rows} x {cols} values of {size} bytes need {want} bytes, {} are left",
             data.len()
         ))
-    })
+    })?;
+    fits(rows, cols, BYTES_PER_PIXEL)?;
+    Ok(data)
 }
 
 /// Flips the rows of a row-major `rows x cols` map (row `i` <-> `rows-1-i`).
@@ -406,7 +492,11 @@ pub fn read_bytes(bytes: &[u8], format: Format, channel: &Channel) -> Result<Mea
     let parsed = match format {
         Format::Npy | Format::Text => {
             let map = match format {
-                Format::Npy => crate::surface::npy::parse(bytes)?,
+                Format::Npy => {
+                    let l = crate::surface::npy::layout(bytes)?;
+                    fits(l.rows, l.cols, BYTES_PER_PIXEL).map_err(|b| b.error(format))?;
+                    crate::surface::npy::parse(bytes)?
+                }
                 _ => match std::str::from_utf8(bytes) {
                     Ok(t) => crate::surface::text::parse(t)?,
                     Err(_) => return Err(Error::invalid("topography", "not UTF-8 text")),
@@ -425,7 +515,7 @@ pub fn read_bytes(bytes: &[u8], format: Format, channel: &Channel) -> Result<Mea
                 unit: "m".into(),
                 rows: map.rows(),
                 cols: map.cols(),
-                heights: map.heights().to_vec(),
+                heights: map.into_heights(),
                 pixel_size: None,
                 periodic: false,
             });
@@ -440,17 +530,9 @@ pub fn read_bytes(bytes: &[u8], format: Format, channel: &Channel) -> Result<Mea
         Format::Opdx => opdx::read(bytes, channel),
         Format::NetCdf => nc::read(bytes, channel),
         Format::Frt => frt::read(bytes, channel),
+        Format::Plux => plux::read(bytes, channel),
     };
-    parsed.map_err(|b| {
-        if b.channel {
-            Error::invalid("{channel}", b.reason)
-        } else {
-            Error::invalid(
-                "topography",
-                format!("{} file: {}", format.describe(), b.reason),
-            )
-        }
-    })
+    parsed.map_err(|b| b.error(format))
 }
 
 /// The format of `path` by its extension.
@@ -471,7 +553,10 @@ pub fn format_of(path: &Path) -> Result<Format> {
 }
 
 /// Reads the map in `path` by its extension ([`format_of`]); errors about
-/// the content name the file.
+/// the content name the file. The file is memory-mapped; the memory a map
+/// needs is checked against its header's dimensions at [`BYTES_PER_PIXEL`]
+/// before the heights are allocated (a text map, which declares none, by
+/// its size: [`crate::study::memory::check_map`]).
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the file (unreadable, unknown extension, bad
@@ -481,10 +566,30 @@ pub fn format_of(path: &Path) -> Result<Format> {
 pub fn read(path: &Path, channel: &Channel) -> Result<Measured> {
     let shown = path.display().to_string();
     let format = format_of(path)?;
-    crate::study::memory::check_map(path)?;
+    if format == Format::Text {
+        crate::study::memory::check_map(path)?;
+    }
     let bytes =
-        std::fs::read(path).map_err(|e| Error::invalid(&shown, format!("cannot read: {e}")))?;
+        mapped::open(path).map_err(|e| Error::invalid(&shown, format!("cannot read: {e}")))?;
     read_bytes(&bytes, format, channel).map_err(|e| match e.field() {
+        Some("topography") => e.renamed(&shown),
+        _ => e,
+    })
+}
+
+/// Reads the `.npy` map in `path` into the one buffer the characterisation
+/// uses: a float64 map in the machine's byte order (what `numpy.save`
+/// writes) is the memory-mapped file itself, validated in one pass and
+/// never copied ([`HeightMap::is_shared`]); a float32 or byte-swapped map
+/// is decoded into one `Vec`. Errors about the content name the file.
+///
+/// # Errors
+/// As [`read`].
+pub fn read_npy(path: &Path) -> Result<HeightMap> {
+    let shown = path.display().to_string();
+    let bytes =
+        mapped::open(path).map_err(|e| Error::invalid(&shown, format!("cannot read: {e}")))?;
+    mapped::npy_map(&bytes).map_err(|e| match e.field() {
         Some("topography") => e.renamed(&shown),
         _ => e,
     })

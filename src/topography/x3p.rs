@@ -18,9 +18,10 @@ use super::{pick, pixel, Bad, Channel, Format, Measured};
 use std::collections::HashMap;
 use std::io::{Read, Write};
 
-/// The text of every leaf element of `main.xml` by its path below the root
+/// The text of every leaf element of the XML document `xml` (the archive
+/// member `what`, for messages) by its path below the root
 /// (`Record1/Axes/CX/Increment`), namespace prefixes dropped.
-fn leaves(xml: &str) -> Result<HashMap<String, String>, Bad> {
+pub(super) fn leaves(xml: &str, what: &str) -> Result<HashMap<String, String>, Bad> {
     use quick_xml::events::Event;
     let mut reader = quick_xml::Reader::from_str(xml);
     let mut path: Vec<String> = Vec::new();
@@ -46,13 +47,15 @@ fn leaves(xml: &str) -> Result<HashMap<String, String>, Bad> {
             Ok(_) => {}
             Err(e) => {
                 return Err(Bad::corrupt(format!(
-                    "main.xml is not well-formed XML at byte {}: {e}",
+                    "{what} is not well-formed XML at byte {}: {e}",
                     reader.buffer_position()
                 )))
             }
         }
         if path.len() > 64 {
-            return Err(Bad::corrupt("main.xml nests deeper than 64 elements"));
+            return Err(Bad::corrupt(format!(
+                "{what} nests deeper than 64 elements"
+            )));
         }
     }
     Ok(out)
@@ -60,7 +63,7 @@ fn leaves(xml: &str) -> Result<HashMap<String, String>, Bad> {
 
 /// A member of the archive, read whole if its declared size is at most
 /// `limit` bytes.
-fn member<R: Read + std::io::Seek>(
+pub(super) fn member<R: Read + std::io::Seek>(
     zip: &mut zip::ZipArchive<R>,
     name: &str,
     limit: u64,
@@ -128,7 +131,7 @@ fn mask_invalid<R: Read + std::io::Seek>(
 /// The `rows x cols` values of `N` bytes each in member `name`, decoded by
 /// `f` while the member inflates, 64 KiB at a time: a deflated member never
 /// exists whole in memory beside the heights (one copy, not two).
-fn member_values<R: Read + std::io::Seek, const N: usize>(
+pub(super) fn member_values<R: Read + std::io::Seek, const N: usize>(
     zip: &mut zip::ZipArchive<R>,
     name: &str,
     rows: usize,
@@ -186,7 +189,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         .map_err(|e| Bad::corrupt(format!("not a readable zip archive: {e}")))?;
     let xml = member(&mut zip, "main.xml", 1 << 24)?;
     let xml = String::from_utf8(xml).map_err(|_| Bad::corrupt("main.xml is not UTF-8"))?;
-    let x = leaves(&xml)?;
+    let x = leaves(&xml, "main.xml")?;
     let get = |k: &str| {
         x.get(k)
             .map(String::as_str)
@@ -210,7 +213,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     if count("Record3/MatrixDimension/SizeZ")? != 1 {
         return Err(Bad::unsupported("SizeZ other than 1 (volume data)"));
     }
-    let n = super::grid(ny, nx)?;
+    super::grid(ny, nx)?;
     let (dx, dy) = (
         num("Record1/Axes/CX/Increment")?,
         num("Record1/Axes/CY/Increment")?,
@@ -227,9 +230,6 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
         .map_or(Ok(0.0), |_| num("Record1/Axes/CZ/Offset"))?;
     let link = get("Record3/DataLink/PointDataLink")
         .map_err(|_| Bad::unsupported("no Record3/DataLink/PointDataLink (inline DataList)"))?;
-    // The heights only: the member inflates straight into them.
-    crate::study::memory::ensure("topography", "reading the X3P heights", 8.0 * n as f64, "")
-        .map_err(|e| Bad::corrupt(e.to_string()))?;
     // Scaled by the increment and offset; non-finite values are missing.
     let plain = inc == 1.0 && off == 0.0;
     let scale = move |v: f64| {

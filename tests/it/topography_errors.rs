@@ -88,6 +88,11 @@ fn text_value(b: &[u8], key: &str, value: &str) -> Vec<u8> {
 
 /// The same archive with `main.xml` rewritten by `edit`.
 fn x3p_with(bytes: &[u8], edit: impl Fn(&str) -> String) -> Vec<u8> {
+    zip_with(bytes, "main.xml", edit)
+}
+
+/// The same archive with its member `member` rewritten by `edit`.
+fn zip_with(bytes: &[u8], member: &str, edit: impl Fn(&str) -> String) -> Vec<u8> {
     let mut zin = zip::ZipArchive::new(std::io::Cursor::new(bytes)).unwrap();
     let mut out = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
     let opts =
@@ -97,7 +102,7 @@ fn x3p_with(bytes: &[u8], edit: impl Fn(&str) -> String) -> Vec<u8> {
         let name = f.name().unwrap().to_string();
         let mut data = Vec::new();
         f.read_to_end(&mut data).unwrap();
-        if name == "main.xml" {
+        if name == member {
             data = edit(&String::from_utf8(data).unwrap()).into_bytes();
         }
         out.start_file(name, opts).unwrap();
@@ -255,6 +260,17 @@ fn cases() -> Vec<Case> {
                 }
             },
         },
+        Case {
+            sample: "generated-1.plux",
+            ext: "plux",
+            format: "Sensofar .plux",
+            huge: |b| {
+                zip_with(b, "index.xml", |x| {
+                    x.replace("<IMAGE_SIZE_X>27<", "<IMAGE_SIZE_X>99999<")
+                        .replace("<IMAGE_SIZE_Y>14<", "<IMAGE_SIZE_Y>99999<")
+                })
+            },
+        },
     ]
 }
 
@@ -308,5 +324,43 @@ fn an_unknown_extension_names_the_file_and_the_known_ones() {
         err.contains("map.xyz") && err.contains("unknown extension 'xyz'") && err.contains(".x3p"),
         "{err}"
     );
+    let _ = std::fs::remove_file(&path);
+}
+
+/// A header that declares a map beyond the memory available (an X3P of
+/// 20000 x 20000 pixels, 24 bytes a pixel: 9.6 GB) is refused from its
+/// declared dimensions before the heights are allocated, naming the file,
+/// the dimensions and the estimate; under an address-space limit of 3 GB
+/// (`ulimit -v`, which the check reads) the 3.2 GB of heights alone would
+/// abort the process.
+#[test]
+fn a_header_beyond_the_memory_is_refused_by_its_declared_dimensions() {
+    let b = x3p_with(&sample("generated-float.x3p"), |x| {
+        x.replace("<SizeX>25</SizeX>", "<SizeX>20000</SizeX>")
+            .replace("<SizeY>20</SizeY>", "<SizeY>20000</SizeY>")
+    });
+    let path = scratch().join("beyond-memory.x3p");
+    std::fs::write(&path, &b).unwrap();
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 3000000 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_asperity"))
+        .arg("surface")
+        .arg(&path)
+        .arg("--json")
+        .output()
+        .expect("run asperity");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty(), "{err}");
+    for word in [
+        path.display().to_string().as_str(),
+        "20000 x 20000 map its header declares",
+        "X3P (ISO 25178-72)",
+        "needs about 9.6 GB",
+        "refused before allocating",
+    ] {
+        assert!(err.contains(word), "'{word}' in {err}");
+    }
     let _ = std::fs::remove_file(&path);
 }

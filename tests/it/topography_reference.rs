@@ -216,5 +216,5 @@ fn surface_rms_height_is_the_rms_after_the_mean_plane() {
         );
         checked += 1;
     }
-    assert_eq!(checked, 22);
+    assert_eq!(checked, 23);
 }

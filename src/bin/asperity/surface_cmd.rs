@@ -15,7 +15,7 @@ use std::path::PathBuf;
 #[derive(Args, Debug)]
 pub struct SurfaceArgs {
     /// The height map: an instrument file (`.x3p`, `.sdf`, `.gwy`, `.sur`,
-    /// `.di`/`.spm`/`.001`, `.ibw`, `.opd`, `.opdx`, `.nc`, `.frt`: heights,
+    /// `.di`/`.spm`/`.001`, `.ibw`, `.opd`, `.opdx`, `.nc`, `.frt`, `.plux`: heights,
     /// pixel sizes and unit from the file), NumPy `.npy` (2-D float64/float32,
     /// C order) or a text matrix (`.txt`, `.csv`, `.asc`).
     file: PathBuf,

@@ -364,7 +364,7 @@ pub struct SurfaceSpec {
     pub heights: Option<Vec<f64>>,
     /// A measured height map, path relative to the scene file's directory:
     /// an instrument file (`.x3p`, `.sdf`, `.gwy`, `.sur`, `.di`/`.spm`,
-    /// `.ibw`, `.opd`, `.opdx`, `.nc`, `.frt`: heights, pixel sizes and unit
+    /// `.ibw`, `.opd`, `.opdx`, `.nc`, `.frt`, `.plux`: heights, pixel sizes and unit
     /// from the file, its height channel), `.npy` or a text matrix
     /// (`.txt`/`.csv`/`.asc`). The summits come from the map
     /// (`docs/surface.md`, "Scenes from measurements"): `density`, `radius`

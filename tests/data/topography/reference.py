@@ -19,7 +19,8 @@ least-squares mean plane of the heights (with the missing pixels filled by
 asperity's rule when there are any: `fill_missing` below). No map is stored.
 
 `--generate` first writes the `generated-*` samples with SurfaceTopography's
-own writers (`to_gwy`, `to_x3p`, `to_netcdf`) from seeded synthetic maps
+own writers (`to_gwy`, `to_x3p`, `to_netcdf`; `generate_plux` writes the
+`.plux`, for which no writer exists, in the layout its reader reads) from seeded synthetic maps
 (non-square pixels, missing pixels, integer X3P): the snapshot of the
 repository lacks every `.gwy` example, and the writers cover the layouts the
 remaining examples do not (X3P integers and validity bits, NetCDF masks and
@@ -62,6 +63,7 @@ SAMPLES = [
     ("generated-int16.x3p", "x3p"),
     ("generated-int32.x3p", "x3p"),
     ("generated-masked.nc", "nc"),
+    ("generated-1.plux", "plux"),
 ]
 
 
@@ -90,6 +92,35 @@ def generate():
     t.to_x3p(os.path.join(HERE, "generated-int32.x3p"), dtype="L")
     t = Topography(synthetic(16, 12, 6, missing=6), (1.6, 1.2), unit="um", periodic=True)
     t.to_netcdf(os.path.join(HERE, "generated-masked.nc"))
+    generate_plux()
+
+
+def generate_plux():
+    """A Sensofar .plux as SurfaceTopography's PLUXReader reads it (no
+    writer exists and the repository's plux-1.plux is absent from its
+    snapshot): a zip of index.xml (GENERAL: IMAGE_SIZE_X/Y, FOV_X/Y, the
+    pixel sizes in um; LAYER_k/FILENAME_Z), recipe.txt and per layer the
+    float32 heights in um, IMAGE_SIZE_Y rows of IMAGE_SIZE_X, x fastest,
+    NaN where missing. Two layers, non-square pixels, 5 missing pixels."""
+    import zipfile
+
+    nx, ny = 27, 14
+    layers = [synthetic(nx, ny, 7, missing=5), synthetic(nx, ny, 8) * 3.0]
+    index = (
+        '<?xml version="1.0" encoding="UTF-8"?>\n<xml><GENERAL><VERSION>1</VERSION>'
+        "<DATE>2026-11-29T12:00:00</DATE>"
+        f"<IMAGE_SIZE_X>{nx}</IMAGE_SIZE_X><IMAGE_SIZE_Y>{ny}</IMAGE_SIZE_Y>"
+        "<FOV_X>0.6459</FOV_X><FOV_Y>0.8125</FOV_Y></GENERAL>"
+        "<INFO><ITEM_0><NAME>Device</NAME><VALUE>S neox</VALUE></ITEM_0></INFO>"
+        + "".join(f"<LAYER_{k}><FILENAME_Z>LAYER_{k}.raw</FILENAME_Z></LAYER_{k}>" for k in range(len(layers)))
+        + "</xml>\n"
+    )
+    fixed = (2026, 11, 29, 12, 0, 0)  # the same bytes on every run
+    with zipfile.ZipFile(os.path.join(HERE, "generated-1.plux"), "w") as z:
+        for name, data in [("index.xml", index.encode()), ("recipe.txt", b"<xml><RECIPE/></xml>\n")] + [
+            (f"LAYER_{k}.raw", np.ma.filled(h, np.nan).T.astype("<f4").tobytes()) for k, h in enumerate(layers)
+        ]:
+            z.writestr(zipfile.ZipInfo(name, fixed), data, compress_type=zipfile.ZIP_DEFLATED)
 
 
 def fill_missing(z):
