@@ -100,43 +100,10 @@ impl<'a> SharedHeights<'a> {
         if n == 0 || !(z_hi > z_lo) {
             return Ok(vec![0.0; n]);
         }
-        let mut points = vec![z_lo, z_hi];
-        let mut add = |z: f64| {
-            if z > z_lo && z < z_hi {
-                points.push(z);
-            }
-        };
-        for br in [Branch::Approach, Branch::Retract] {
-            for b in law.breakpoints(br) {
-                add(t + b / sigma);
-            }
-        }
-        for c in law.history_breakpoints() {
-            add(c / sigma);
-        }
-        for m in law.contact_loss_peaks(sigma * t) {
-            add(m / sigma);
-        }
-        for step in LADDER {
-            add(z_lo + step);
-        }
-        // A density that jumps at its support's own edge (not where its
-        // tail is cut): each component's edge is a breakpoint.
-        let (edge_lo, edge_hi) = dist.support();
-        for edge in [sup_lo, sup_hi] {
-            if (edge == edge_lo || edge == edge_hi) && dist.pdf(edge) > EDGE_PDF {
-                for &h in h_mins {
-                    add(edge - h);
-                }
-            }
-        }
-        points.sort_by(f64::total_cmp);
-        points.dedup();
-        let floor = self.floor / self.factor;
-        let target = |mag: f64| (self.rtol * mag.abs()).max(floor);
+        let points = self.pieces(t, h_mins, (z_lo, z_hi), (sup_lo, sup_hi));
         let mut cursor = LawCursor::default();
         let (mut heights, mut density) = (vec![0.0; 21 * n], vec![0.0; 21 * n]);
-        let mut rule = |a: f64, b: f64| -> Panel {
+        let rule = |a: f64, b: f64| -> Panel {
             let z = kronrod21_nodes(a, b);
             let delta = z.map(|z| sigma * (z - t));
             let dm = z.map(|z| sigma * z);
@@ -181,6 +148,69 @@ impl<'a> SharedHeights<'a> {
             }
             p
         };
+        self.adapt(rule, &points, n, t)
+    }
+
+    /// Panel ends in `z'` on `[z_lo, z_hi]` at gap `t`: the law's kinks
+    /// there (none depends on the closest gap), a ladder from the lower
+    /// end, and each component's edge of a support `(sup_lo, sup_hi)`
+    /// where the density jumps.
+    fn pieces(&self, t: f64, h_mins: &[f64], z: (f64, f64), sup: (f64, f64)) -> Vec<f64> {
+        let ((z_lo, z_hi), (sup_lo, sup_hi)) = (z, sup);
+        let sigma = self.model.surface().sigma;
+        let law = self.model.law();
+        let dist = self.model.distribution();
+        let mut points = vec![z_lo, z_hi];
+        let mut add = |z: f64| {
+            if z > z_lo && z < z_hi {
+                points.push(z);
+            }
+        };
+        for br in [Branch::Approach, Branch::Retract] {
+            for b in law.breakpoints(br) {
+                add(t + b / sigma);
+            }
+        }
+        for c in law.history_breakpoints() {
+            add(c / sigma);
+        }
+        for m in law.contact_loss_peaks(sigma * t) {
+            add(m / sigma);
+        }
+        for step in LADDER {
+            add(z_lo + step);
+        }
+        // A density that jumps at its support's own edge (not where its
+        // tail is cut): each component's edge is a breakpoint.
+        let (edge_lo, edge_hi) = dist.support();
+        for edge in [sup_lo, sup_hi] {
+            if (edge == edge_lo || edge == edge_hi) && dist.pdf(edge) > EDGE_PDF {
+                for &h in h_mins {
+                    add(edge - h);
+                }
+            }
+        }
+        points.sort_by(f64::total_cmp);
+        points.dedup();
+        points
+    }
+
+    /// Adaptive bisection of the pieces `points` with `rule(a, b)` one K21
+    /// panel of the `n` components, until each meets `rtol int |f_k|` or
+    /// the floor: the integrals times `factor`.
+    ///
+    /// # Errors
+    /// [`Error::NoConvergence`] past the model's most intervals.
+    fn adapt(
+        &self,
+        mut rule: impl FnMut(f64, f64) -> Panel,
+        points: &[f64],
+        n: usize,
+        t: f64,
+    ) -> Result<Vec<f64>> {
+        let law = self.model.law();
+        let floor = self.floor / self.factor;
+        let target = |mag: f64| (self.rtol * mag.abs()).max(floor);
         let mut panels: Vec<Panel> = points
             .windows(2)
             .filter(|w| w[1] > w[0])
@@ -203,8 +233,8 @@ impl<'a> SharedHeights<'a> {
                 .fold(0.0, f64::max)
         };
         let (_, mut err, mut mag) = sums(&panels);
-        for i in 0..panels.len() {
-            panels[i].key = key(&panels[i], &mag);
+        for p in &mut panels {
+            p.key = key(p, &mag);
         }
         let done = |e: &[f64], m: &[f64]| (0..n).all(|k| e[k] <= target(m[k]));
         while !done(&err, &mag) {
@@ -253,7 +283,7 @@ mod tests {
     use super::*;
     use crate::gw::{Accuracy, RoughSurface};
     use crate::heights::Gaussian;
-    use crate::law::plastic::{build, AdhesivePlastic, PlasticLaw, PlasticLoading};
+    use crate::law::plastic::{build, AdhesivePlastic, PlasticLoading};
     use crate::loading::{History, LoadingModel, Observables};
     use crate::material::plastic::{Plasticity, Variant};
     use std::sync::Arc;

@@ -26,6 +26,9 @@ const MIN_WIDTH: f64 = 1e-7;
 /// Most panels in one table.
 const MAX_PANELS: usize = 20_000;
 
+/// `n` functions at once: per point, the `n` values ([`Table::build_many`]).
+pub(crate) type Many<'a> = dyn Fn(&[f64]) -> Result<Vec<Vec<f64>>> + 'a;
+
 /// `f` and `f'` as piecewise Chebyshev series on `[lo, hi]`.
 #[derive(Debug, Clone)]
 pub(crate) struct Table {
@@ -88,7 +91,7 @@ impl Table {
         tol: f64,
         scale: f64,
         n: usize,
-        f: &dyn Fn(&[f64]) -> Result<Vec<Vec<f64>>>,
+        f: &Many<'_>,
     ) -> Result<Vec<Self>> {
         let nodes: [f64; DEG + 1] = lobatto_nodes();
         // Known kinks of the function start their own panels.
