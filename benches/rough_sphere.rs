@@ -58,5 +58,22 @@ fn bench_rough_sphere(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_rough_sphere);
+/// The plastic adhesive bump, `examples/scenes/switch-bump-plastic.toml`
+/// as shipped (one load, 10 points per leg, pull-off, resistance): the
+/// whole run, whose retraction table dominates (docs/performance.md,
+/// "Round three: curves and the bump"). About 10 s a run: 10 samples.
+fn bench_plastic_bump(c: &mut Criterion) {
+    use asperity::study::{Plan, PlanMode, Scene};
+    let text = include_str!("../examples/scenes/switch-bump-plastic.toml");
+    let scene = Scene::from_toml(text).unwrap();
+    let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
+    let mut group = c.benchmark_group("rough_sphere");
+    group.sample_size(10);
+    group.bench_function("plastic_bump_scene", |b| {
+        b.iter(|| black_box(plan.run().unwrap().curve.approach.len()))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_rough_sphere, bench_plastic_bump);
 criterion_main!(benches);

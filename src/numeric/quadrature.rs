@@ -232,6 +232,16 @@ pub fn kronrod21_batch_masked<const N: usize, F: FnMut(&[f64; 21], &mut [[f64; N
     kronrod21_sums(&fv, 0.5 * (b - a), present)
 }
 
+/// The K21 sums of one scalar integrand's values `fv` at the ascending
+/// abscissae of a panel of half-width `h` ([`kronrod21_nodes`]): (value,
+/// error estimate, `int |f|`), the same arithmetic as [`kronrod21_batch`]
+/// (for integrands with a number of components known only at run time).
+#[inline]
+pub fn kronrod21_sums_one(fv: &[f64; 21], h: f64) -> (f64, f64, f64) {
+    let (v, e, m) = kronrod21_sums(&fv.map(|x| [x]), h, &[true]);
+    (v[0], e[0], m[0])
+}
+
 /// One K21 panel on each interval of `points` (ascending; empty intervals
 /// skipped), only the `present` components summed: per component the
 /// total (value, error estimate, `int |f|`) and the evaluations. The

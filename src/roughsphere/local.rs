@@ -21,6 +21,7 @@
 //! table per node; laws without hysteresis reuse the approach law.
 
 use super::retract_table::{RetractTable, Weights};
+use super::shared_heights::SharedHeights;
 use super::table::Table;
 use crate::error::{Error, Result};
 use crate::gw::{Accuracy, GwModel};
@@ -413,26 +414,24 @@ impl LocalLaw {
             .clone()
             .with_accuracy(Accuracy::new((RETRACT_QUAD * self.table_tol).max(1e-13))?);
         let model = &accurate;
-        let slice = move |h_min: f64, ts: &[f64]| -> Result<Vec<f64>> {
-            let back = History::Retract {
-                closest: sigma * h_min,
-            };
-            ts.iter()
-                .map(|&t| {
-                    let s = model.state(sigma * (h_min + t), back, &Observables::LOAD)?;
-                    Ok(s.load().unwrap_or(0.0) * per_area)
-                })
+        // One set of law evaluations per gap `t` serves every closest gap
+        // (`shared_heights.rs`); its noise floor, like its relative
+        // tolerance, a fraction RETRACT_QUAD of what the tables may err.
+        let floor = RETRACT_FLOOR * self.scale;
+        let shared = SharedHeights::new(
+            model,
+            self.model.surface().summits() * per_area,
+            (RETRACT_QUAD * self.table_tol).max(1e-13),
+            RETRACT_QUAD * self.table_tol * floor,
+        );
+        let shared = &shared;
+        let slices = move |h_mins: &[f64], ts: &[f64]| -> Result<Vec<Vec<f64>>> {
+            use rayon::prelude::*;
+            ts.par_iter()
+                .map(|&t| shared.pressures(t, h_mins))
                 .collect()
         };
-        RetractTable::build(
-            lo,
-            self.top,
-            t_max,
-            &splits,
-            self.table_tol,
-            RETRACT_FLOOR * self.scale,
-            &slice,
-        )
+        RetractTable::build(lo, self.top, t_max, &splits, self.table_tol, floor, &slices)
     }
 
     /// The law of a node whose closest gap was `h_min`, on retraction: its

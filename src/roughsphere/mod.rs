@@ -58,6 +58,7 @@ mod observe;
 mod problem;
 mod report;
 mod retract_table;
+mod shared_heights;
 mod solve;
 mod table;
 pub mod units;

@@ -52,8 +52,10 @@ const MAX_PANELS: usize = 200;
 /// check at the test points measures the total).
 const T_TABLE_SHARE: f64 = 0.25;
 
-/// The pressure of one radius in `t` at a fixed `H_min`.
-pub(crate) type Slice<'a> = dyn Fn(f64, &[f64]) -> Result<Vec<f64>> + Sync + 'a;
+/// The pressures at closest gaps `h_mins` and gaps `h_min + t` for every
+/// `t` of `ts`: per `t`, one value per closest gap (one set of law
+/// evaluations serves them all, `shared_heights.rs`).
+pub(crate) type Slices<'a> = dyn Fn(&[f64], &[f64]) -> Result<Vec<Vec<f64>>> + Sync + 'a;
 
 /// `p(H, H_min)` for `H_min` in `[lo, hi_min]` and `t` in `[0, t_max]`.
 #[derive(Debug)]
@@ -76,6 +78,8 @@ pub(crate) struct RetractTable {
 #[derive(Debug, Clone)]
 pub(crate) struct Weights {
     terms: Vec<(f64, Arc<Table>)>,
+    /// The terms as one table when they share their panels in `t`.
+    combined: Option<Table>,
     h_min: f64,
     t_max: f64,
 }
@@ -140,7 +144,7 @@ fn first_panels(lo: f64, hi_min: f64) -> Vec<(f64, f64)> {
 /// scale)`, over the gaps `h_min + ts`.
 ///
 /// # Errors
-/// `slice`'s errors.
+/// `slices`' errors.
 fn panel_error(
     a: f64,
     b: f64,
@@ -148,40 +152,39 @@ fn panel_error(
     ts: &[f64],
     tol: f64,
     scale: f64,
-    slice: &Slice<'_>,
+    slices: &Slices<'_>,
 ) -> Result<f64> {
-    use rayon::prelude::*;
     let tests: Vec<f64> = (0..DEG)
         .map(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
         .collect();
-    Ok(tests
-        .par_iter()
-        .map(|&x| -> Result<f64> {
-            let h_min = 0.5 * (a + b) + 0.5 * (b - a) * x;
-            let direct = slice(h_min, ts)?;
-            let w = barycentric(x);
-            Ok(ts
-                .iter()
-                .zip(&direct)
-                .map(|(&t, &p)| {
-                    let v: f64 = w.iter().map(|&(k, c)| c * tables[k].eval(t).0).sum();
-                    (v - p).abs() / (tol * (p.abs() + scale))
-                })
-                .fold(0.0, f64::max))
-        })
-        .collect::<Result<Vec<f64>>>()?
-        .into_iter()
-        .fold(0.0, f64::max))
+    let h_mins: Vec<f64> = tests
+        .iter()
+        .map(|&x| 0.5 * (a + b) + 0.5 * (b - a) * x)
+        .collect();
+    let direct = slices(&h_mins, ts)?;
+    let mut worst = 0.0f64;
+    for (i, &x) in tests.iter().enumerate() {
+        let w = barycentric(x);
+        for (j, &t) in ts.iter().enumerate() {
+            let p = direct[j][i];
+            let v: f64 = w.iter().map(|&(k, c)| c * tables[k].eval(t).0).sum();
+            worst = worst.max((v - p).abs() / (tol * (p.abs() + scale)));
+        }
+    }
+    Ok(worst)
 }
 
 impl RetractTable {
     /// Tabulates on `[lo, hi_min]` in `H_min` and `[0, t_max]` in `t`:
-    /// `slice(h_min, ts)` returns the pressure at gaps `h_min + t` after
-    /// `h_min` (the model's own states), `splits` are the kinks in `t`,
-    /// `tol` and `scale` the tolerance `tol (|p| + scale)`.
+    /// `slices(h_mins, ts)` returns the pressures at gaps `h_min + t` after
+    /// each `h_min` (the model's own states), `splits` are the kinks in
+    /// `t`, `tol` and `scale` the tolerance `tol (|p| + scale)`. The tables
+    /// in `t` of all the nodes missing at a step (first every node of the
+    /// first panels, then those of halved panels) are built together, on
+    /// the same panels in `t`.
     ///
     /// # Errors
-    /// `slice`'s errors; [`Error::NoConvergence`] past [`MAX_PANELS`].
+    /// `slices`' errors; [`Error::NoConvergence`] past [`MAX_PANELS`].
     pub fn build(
         lo: f64,
         hi_min: f64,
@@ -189,19 +192,22 @@ impl RetractTable {
         splits: &[f64],
         tol: f64,
         scale: f64,
-        slice: &Slice<'_>,
+        slices: &Slices<'_>,
     ) -> Result<Self> {
-        use rayon::prelude::*;
-        let build_t = |h_min: f64| -> Result<Arc<Table>> {
-            let f = |ts: &[f64]| slice(h_min, ts);
-            Ok(Arc::new(Table::build(
+        let build_t = |h_mins: &[f64]| -> Result<Vec<Arc<Table>>> {
+            let f = |ts: &[f64]| slices(h_mins, ts);
+            Ok(Table::build_many(
                 0.0,
                 t_max,
                 splits,
                 T_TABLE_SHARE * tol,
                 scale,
+                h_mins.len(),
                 &f,
-            )?))
+            )?
+            .into_iter()
+            .map(Arc::new)
+            .collect())
         };
         let ts: Vec<f64> = (0..T_SAMPLES)
             .map(|k| {
@@ -210,8 +216,16 @@ impl RetractTable {
             })
             .collect();
         let mut todo = first_panels(lo, hi_min);
-        // Tables by `H_min` (panel ends are shared with the neighbours).
+        // Tables by `H_min` (panel ends are shared with the neighbours),
+        // first those of every first panel, together.
         let mut known: Vec<(f64, Arc<Table>)> = Vec::new();
+        {
+            let mut first: Vec<f64> = todo.iter().flat_map(|&(a, b)| lobatto(a, b)).collect();
+            first.sort_by(f64::total_cmp);
+            first.dedup();
+            let built = build_t(&first)?;
+            known.extend(first.into_iter().zip(built));
+        }
         let mut done: Vec<(f64, Vec<Arc<Table>>)> = Vec::new();
         let mut error = 0.0f64;
         while let Some((a, b)) = todo.pop() {
@@ -221,11 +235,10 @@ impl RetractTable {
                 .copied()
                 .filter(|x| !known.iter().any(|(k, _)| k == x))
                 .collect();
-            let built: Vec<Arc<Table>> = missing
-                .par_iter()
-                .map(|&h| build_t(h))
-                .collect::<Result<_>>()?;
-            known.extend(missing.into_iter().zip(built));
+            if !missing.is_empty() {
+                let built = build_t(&missing)?;
+                known.extend(missing.into_iter().zip(built));
+            }
             let tables: Vec<Arc<Table>> = xs
                 .iter()
                 .map(|x| {
@@ -236,7 +249,7 @@ impl RetractTable {
                         .expect("built above")
                 })
                 .collect();
-            let worst = panel_error(a, b, &tables, &ts, tol, scale, slice)?;
+            let worst = panel_error(a, b, &tables, &ts, tol, scale, slices)?;
             if worst <= 1.0 || b - a <= MIN_WIDTH {
                 error = error.max(worst * tol);
                 done.push((a, tables));
@@ -291,11 +304,19 @@ impl RetractTable {
         let i = self.edges.partition_point(|e| *e <= x).clamp(1, n) - 1;
         let (a, b) = (self.edges[i], self.edges[i + 1]);
         let u = ((2.0 * x - a - b) / (b - a)).clamp(-1.0, 1.0);
+        let terms: Vec<(f64, Arc<Table>)> = barycentric(u)
+            .into_iter()
+            .map(|(k, c)| (c, self.nodes[i][k].clone()))
+            .collect();
+        let combined = if terms.len() > 1 {
+            let refs: Vec<(f64, &Table)> = terms.iter().map(|(c, t)| (*c, t.as_ref())).collect();
+            Table::combine(&refs)
+        } else {
+            None
+        };
         Weights {
-            terms: barycentric(u)
-                .into_iter()
-                .map(|(k, c)| (c, self.nodes[i][k].clone()))
-                .collect(),
+            terms,
+            combined,
             h_min,
             t_max: self.t_max,
         }
@@ -313,6 +334,9 @@ impl Weights {
             return (0.0, 0.0);
         }
         let t = t.min(self.t_max);
+        if let Some(table) = &self.combined {
+            return table.eval(t);
+        }
         let (mut p, mut dp) = (0.0, 0.0);
         for (c, table) in &self.terms {
             let (v, d) = table.eval(t);
@@ -335,9 +359,14 @@ mod tests {
             let g = (-(h_min * h_min) / 2.0).exp();
             g * ((1.0 - t).max(0.0).powf(1.5) - 0.3 * (-t).exp())
         };
-        let slice = |h_min: f64, ts: &[f64]| Ok(ts.iter().map(|&t| f(h_min, t)).collect());
+        let slices = |h_mins: &[f64], ts: &[f64]| {
+            Ok(ts
+                .iter()
+                .map(|&t| h_mins.iter().map(|&h| f(h, t)).collect())
+                .collect())
+        };
         let tol = 1e-9;
-        let t = RetractTable::build(-3.0, 5.0, 6.0, &[1.0], tol, 1e-4, &slice).unwrap();
+        let t = RetractTable::build(-3.0, 5.0, 6.0, &[1.0], tol, 1e-4, &slices).unwrap();
         assert!(t.error() <= tol, "{}", t.error());
         let mut worst = 0.0f64;
         for i in 0..=97 {

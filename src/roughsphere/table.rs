@@ -14,6 +14,7 @@
 use crate::error::{Error, Result};
 use crate::numeric::chebyshev::{clenshaw, lobatto_coefficients, lobatto_nodes};
 use std::f64::consts::PI;
+use std::sync::Arc;
 
 /// Polynomial degree per panel.
 pub(crate) const DEG: usize = 10;
@@ -25,10 +26,14 @@ const MIN_WIDTH: f64 = 1e-7;
 /// Most panels in one table.
 const MAX_PANELS: usize = 20_000;
 
+/// `n` functions at once: per point, the `n` values ([`Table::build_many`]).
+pub(crate) type Many<'a> = dyn Fn(&[f64]) -> Result<Vec<Vec<f64>>> + 'a;
+
 /// `f` and `f'` as piecewise Chebyshev series on `[lo, hi]`.
 #[derive(Debug, Clone)]
 pub(crate) struct Table {
-    edges: Vec<f64>,
+    /// Panel edges (shared by the tables of one [`Table::build_many`]).
+    edges: Arc<[f64]>,
     coef: Vec<[f64; DEG + 1]>,
     /// Coefficients of the derivative (in the panel's own variable).
     dcoef: Vec<[f64; DEG + 1]>,
@@ -64,6 +69,30 @@ impl Table {
         scale: f64,
         f: &dyn Fn(&[f64]) -> Result<Vec<f64>>,
     ) -> Result<Self> {
+        let many = |xs: &[f64]| -> Result<Vec<Vec<f64>>> {
+            Ok(f(xs)?.into_iter().map(|y| vec![y]).collect())
+        };
+        let mut t = Self::build_many(lo, hi, splits, tol, scale, 1, &many)?;
+        Ok(t.remove(0))
+    }
+
+    /// [`Table::build`] of `n` functions on the same panels: `f(xs)`
+    /// returns, per point of `xs`, the `n` values; a panel is accepted
+    /// when every function passes (functions with the same kinks, whose
+    /// values share their costly part: the retraction pressures of many
+    /// closest gaps from one set of law evaluations, `shared_heights.rs`).
+    ///
+    /// # Errors
+    /// As [`Table::build`].
+    pub fn build_many(
+        lo: f64,
+        hi: f64,
+        splits: &[f64],
+        tol: f64,
+        scale: f64,
+        n: usize,
+        f: &Many<'_>,
+    ) -> Result<Vec<Self>> {
         let nodes: [f64; DEG + 1] = lobatto_nodes();
         // Known kinks of the function start their own panels.
         let mut cuts: Vec<f64> = splits
@@ -76,26 +105,32 @@ impl Table {
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
         let mut todo: Vec<(f64, f64)> = cuts.windows(2).map(|w| (w[0], w[1])).rev().collect();
-        let mut done: Vec<(f64, [f64; DEG + 1])> = Vec::new();
+        let mut done: Vec<(f64, Vec<[f64; DEG + 1]>)> = Vec::new();
         let mut evaluations = 0;
+        let tests: Vec<f64> = (0..DEG)
+            .map(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
+            .collect();
         while let Some((a, b)) = todo.pop() {
             let mid = 0.5 * (a + b);
             let half = 0.5 * (b - a);
             let mut xs: Vec<f64> = nodes.iter().map(|t| mid + half * t).collect();
-            let tests: Vec<f64> = (0..DEG)
-                .map(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
-                .collect();
             xs.extend(tests.iter().map(|t| mid + half * t));
             let ys = f(&xs)?;
             evaluations += xs.len();
-            let vals: [f64; DEG + 1] = std::array::from_fn(|k| ys[k]);
-            let c = lobatto_coefficients(&vals);
-            let ok = tests.iter().zip(&ys[DEG + 1..]).all(|(t, y)| {
-                let e = (clenshaw(&c, *t) - y).abs();
-                e <= tol * (y.abs() + scale)
+            let cs: Vec<[f64; DEG + 1]> = (0..n)
+                .map(|i| {
+                    let vals: [f64; DEG + 1] = std::array::from_fn(|k| ys[k][i]);
+                    lobatto_coefficients(&vals)
+                })
+                .collect();
+            let ok = cs.iter().enumerate().all(|(i, c)| {
+                tests.iter().zip(&ys[DEG + 1..]).all(|(t, y)| {
+                    let e = (clenshaw(c, *t) - y[i]).abs();
+                    e <= tol * (y[i].abs() + scale)
+                })
             });
             if ok || b - a <= MIN_WIDTH * (hi - lo) {
-                done.push((a, c));
+                done.push((a, cs));
             } else {
                 todo.push((mid, b));
                 todo.push((a, mid));
@@ -111,9 +146,44 @@ impl Table {
         done.sort_by(|x, y| x.0.total_cmp(&y.0));
         let mut edges: Vec<f64> = done.iter().map(|x| x.0).collect();
         edges.push(hi);
-        let coef: Vec<[f64; DEG + 1]> = done.into_iter().map(|x| x.1).collect();
-        let dcoef = coef.iter().map(derivative).collect();
-        Ok(Table { edges, coef, dcoef })
+        let edges: Arc<[f64]> = edges.into();
+        Ok((0..n)
+            .map(|i| {
+                let coef: Vec<[f64; DEG + 1]> = done.iter().map(|x| x.1[i]).collect();
+                let dcoef = coef.iter().map(derivative).collect();
+                Table {
+                    edges: edges.clone(),
+                    coef,
+                    dcoef,
+                }
+            })
+            .collect())
+    }
+
+    /// `sum_k c_k f_k` as one table, when every `f_k` has the same panels
+    /// (tables of one [`Table::build_many`]); `None` otherwise. Its value
+    /// and slope are those of the sum to rounding, at the cost of one
+    /// table.
+    pub fn combine(terms: &[(f64, &Table)]) -> Option<Table> {
+        let (_, first) = terms.first()?;
+        if !terms
+            .iter()
+            .all(|(_, t)| Arc::ptr_eq(&t.edges, &first.edges))
+        {
+            return None;
+        }
+        let sum = |pick: fn(&Table) -> &Vec<[f64; DEG + 1]>| -> Vec<[f64; DEG + 1]> {
+            (0..first.coef.len())
+                .map(|i| {
+                    std::array::from_fn(|j| terms.iter().map(|(c, t)| c * pick(t)[i][j]).sum())
+                })
+                .collect()
+        };
+        Some(Table {
+            edges: first.edges.clone(),
+            coef: sum(|t| &t.coef),
+            dcoef: sum(|t| &t.dcoef),
+        })
     }
 
     /// Interval covered.
