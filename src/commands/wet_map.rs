@@ -138,8 +138,11 @@ pub fn wet_states(
     let mut states = Vec::with_capacity(cmp.states.len());
     for st in &cmp.states {
         let s = &st.solution;
-        // Rows run along y (pixel dy), a row along x (dx).
-        let f = flooded_force(&m, &s.gap, rows, cols, dy, dx)?;
+        // The adhesive gap solver may leave gaps of a rounding below 0
+        // (freed pixels): they are in contact. Rows run along y (pixel
+        // dy), a row along x (dx).
+        let gaps: Vec<f64> = s.gap.iter().map(|g| g.max(0.0)).collect();
+        let f = flooded_force(&m, &gaps, rows, cols, dy, dx)?;
         let per_summit = match (cmp.gw_summits, st.gw_separation) {
             (Some(g), Some(d)) => Some(per_summit_pressure(&m, g.density, g.radius, g.sigma, d)?),
             _ => None,
