@@ -52,6 +52,7 @@ pub mod roughsphere;
 pub mod special;
 pub mod spectrum;
 pub mod sphere;
+pub mod stickiness;
 #[cfg(feature = "study")]
 pub mod study;
 pub mod surface;

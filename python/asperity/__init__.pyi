@@ -174,6 +174,7 @@ def persson(
     slope_rms: Optional[float] = None,
     gamma: float = 1.0,
     adhesion_energy: Optional[float] = None,
+    adhesion_range: Optional[float] = None,
 ) -> Dict[str, Any]:
     """`asperity persson --json`: Persson's theory and GW on a self-affine
     spectrum."""
@@ -211,6 +212,13 @@ def bem(
     max_iterations: int = 10000,
     memory_limit_mib: float = 1024.0,
     out: Optional[Path] = None,
+    allow_unconverged: bool = False,
+    relative_humidity: Optional[float] = None,
+    surface_tension: float = 0.0728,
+    contact_angle_1: float = 0.0,
+    contact_angle_2: float = 0.0,
+    temperature: float = 293.15,
+    molar_volume: float = 1.8e-5,
 ) -> Dict[str, Any]:
     """`asperity bem --json` on a 2-D height map (m): FFT boundary elements
     beside GW and Persson."""

@@ -550,6 +550,11 @@ pub fn punch_fit_py(
 ///     Yang–Persson factor in [0, 1] of the mean gap (default 1).
 /// adhesion_energy : float, optional
 ///     w (J/m^2): adds the Persson–Tosatti number.
+/// adhesion_range : float, optional
+///     rho (m) of the interaction -w exp(-g/rho): with ``adhesion_energy``
+///     adds ``adhesion_criteria`` (Pastewka–Robbins with its validity
+///     rho/g0 < 0.1, Persson–Tosatti, the Tabor parameter at R = 1/h'',
+///     Müser's mu_rho).
 ///
 /// Returns
 /// -------
@@ -557,13 +562,14 @@ pub fn punch_fit_py(
 ///     ``states`` (``pressure_Pa``, ``area_fraction``, ``mean_gap_m``,
 ///     ``gw_area_fraction``, ``gw_mean_gap_m``), the spectrum's moments,
 ///     ``full_contact_energy_J_per_m2``, ``gw``, ``numerical_error``,
-///     ``model_error``, ``warnings``.
+///     ``model_error``, ``warnings``, ``adhesion_criteria`` (with an
+///     adhesion range).
 ///
 /// Examples
 /// --------
 /// >>> asperity.persson(0.8, 1e5, 4e5, 4e8, 1e9, [1e4, 1e5], h_rms=1e-8)
 #[pyfunction]
-#[pyo3(name = "persson", signature = (hurst, q_long, q_roll, q_short, estar, pressures, h_rms = None, slope_rms = None, gamma = 1.0, adhesion_energy = None))]
+#[pyo3(name = "persson", signature = (hurst, q_long, q_roll, q_short, estar, pressures, h_rms = None, slope_rms = None, gamma = 1.0, adhesion_energy = None, adhesion_range = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn persson_py(
     py: Python<'_>,
@@ -577,6 +583,7 @@ pub fn persson_py(
     slope_rms: Option<f64>,
     gamma: f64,
     adhesion_energy: Option<f64>,
+    adhesion_range: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
     let pressures = arrays::sequence(pressures, "pressures")?;
     let out = guard::long(py, "persson", &words(), || {
@@ -590,6 +597,7 @@ pub fn persson_py(
             pressures,
             gamma,
             adhesion_energy,
+            adhesion_range,
         })
     })?;
     serialised(py, &out, true)
@@ -716,6 +724,17 @@ pub fn rough_sphere_py(
 ///     Most iterations per solve (default 10,000).
 /// memory_limit_mib : float
 ///     Memory the solver may use (MiB, default 1024).
+/// allow_unconverged : bool
+///     A solve stopped at ``max_iterations`` gives its last iterate flagged
+///     ``converged: False`` with a warning; otherwise it raises
+///     ``RuntimeError`` with its residual (default False).
+/// relative_humidity : float, optional
+///     In (0, 1): adds ``capillary``, the flooded capillary attraction of
+///     every state beside per-summit menisci on GW's summits, and the
+///     regime h_m/u_rms.
+/// surface_tension, contact_angle_1, contact_angle_2, temperature, molar_volume : float
+///     The liquid (N/m, degrees, degrees, K, m^3/mol); default water at
+///     293.15 K wetting both surfaces.
 /// out : str or os.PathLike, optional
 ///     Write per-state .npy fields, bem.json and charts here.
 ///
@@ -723,16 +742,18 @@ pub fn rough_sphere_py(
 /// -------
 /// dict
 ///     ``states`` (``pressure_Pa``, ``mean_gap_m``, ``area_fraction``,
-///     ``clusters``, ``iterations``, ``residual``, ...), ``gw`` and
+///     ``clusters``, ``iterations``, ``residual``, ``converged``, ...), ``gw`` and
 ///     ``persson`` at the same pressures, ``relative_differences``,
-///     ``numerical_error``, ``model_error``, ``warnings``.
+///     ``numerical_error``, ``model_error``, ``warnings``; with an adhesion
+///     ``adhesion_criteria`` (Pastewka–Robbins with its validity,
+///     Persson–Tosatti, the Tabor parameter at R = 1/h'', Müser's mu_rho).
 ///
 /// Examples
 /// --------
 /// >>> h = numpy.load("examples/data/selfaffine-256.npy")
 /// >>> asperity.bem(h, 3.90625e-7, 1e9, pressures=[1e6, 1e7], periodic=True)
 #[pyfunction]
-#[pyo3(name = "bem", signature = (heights, pixel_size, estar, pressures = None, gaps = None, periodic = false, adhesion_energy = None, adhesion_range = None, gamma = 1.0, resistivity = None, tolerance = 1e-10, max_iterations = 10_000, memory_limit_mib = 1024.0, out = None))]
+#[pyo3(name = "bem", signature = (heights, pixel_size, estar, pressures = None, gaps = None, periodic = false, adhesion_energy = None, adhesion_range = None, gamma = 1.0, resistivity = None, tolerance = 1e-10, max_iterations = 10_000, memory_limit_mib = 1024.0, out = None, allow_unconverged = false, relative_humidity = None, surface_tension = 0.0728, contact_angle_1 = 0.0, contact_angle_2 = 0.0, temperature = 293.15, molar_volume = 1.8e-5))]
 #[allow(clippy::too_many_arguments)]
 pub fn bem_py(
     py: Python<'_>,
@@ -750,6 +771,13 @@ pub fn bem_py(
     max_iterations: usize,
     memory_limit_mib: f64,
     out: Option<PathBuf>,
+    allow_unconverged: bool,
+    relative_humidity: Option<f64>,
+    surface_tension: f64,
+    contact_angle_1: f64,
+    contact_angle_2: f64,
+    temperature: f64,
+    molar_volume: f64,
 ) -> PyResult<Py<PyAny>> {
     let targets = cmd::bem::BemTargets::from_options(
         arrays::opt_sequence(pressures, "pressures")?,
@@ -766,6 +794,15 @@ pub fn bem_py(
     input.tolerance = tolerance;
     input.max_iterations = max_iterations;
     input.memory_limit_mib = memory_limit_mib;
+    input.allow_unconverged = allow_unconverged;
+    input.liquid = relative_humidity.map(|rh| cmd::wet_map::Liquid {
+        relative_humidity: rh,
+        surface_tension,
+        contact_angle_1,
+        contact_angle_2,
+        temperature,
+        molar_volume,
+    });
     input.out = out;
     choice(input.validate())?;
     let map = arrays::height_map(heights, "heights")?;

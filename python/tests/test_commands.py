@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import asperity
-from conftest import REPO, assert_same, cli_json
+from conftest import REPO, assert_same, cli_json, close
 
 def num(x) -> str:
     """A number as the shortest text that reads back the same double."""
@@ -147,6 +147,31 @@ def test_bem(tmp_path):
     got = asperity.bem(z, 1e-7, 1e9, pressures=[1e6, 1e7], periodic=True, resistivity=2.2e-8)
     assert_same(got, ref)
     assert isinstance(got["states"][0]["cluster_sizes_px"], list)
+
+
+def test_bem_convergence_criteria_and_capillary_equal_cli():
+    f = REPO / "examples" / "data" / "selfaffine-256.npy"
+    z = np.load(f)
+    # A capped solve: RuntimeError with its residual, or flagged when allowed.
+    with pytest.raises(RuntimeError, match="residual"):
+        asperity.bem(z, 3.90625e-7, 1e9, pressures=[1e6], periodic=True, max_iterations=5)
+    got = asperity.bem(z, 3.90625e-7, 1e9, pressures=[1e6], periodic=True, max_iterations=5,
+                       allow_unconverged=True)
+    assert got["states"][0]["converged"] is False
+    assert any("not converged" in w for w in got["warnings"])
+    ref = cli_json("bem", f, "--pixel-size", 3.90625e-7, "--estar", 1e9, "--gaps", 2e-7,
+                   "--periodic", "--adhesion-energy", 0.05, "--adhesion-range", 2e-9,
+                   "--relative-humidity", 0.99)
+    got = asperity.bem(z, 3.90625e-7, 1e9, gaps=[2e-7], periodic=True, adhesion_energy=0.05,
+                       adhesion_range=2e-9, relative_humidity=0.99)
+    for key in ("pastewka_robbins", "persson_tosatti", "tabor", "mu_rho"):
+        assert close(got["adhesion_criteria"][key], ref["adhesion_criteria"][key]), key
+    assert got["capillary"]["states"][0]["regime"] == ref["capillary"]["states"][0]["regime"]
+    assert close(got["capillary"]["states"][0]["flooded_pressure_Pa"],
+                 ref["capillary"]["states"][0]["flooded_pressure_Pa"])
+    p = asperity.persson(0.8, 1e5, 4e5, 4e8, 1e9, [1e6], h_rms=1e-8, adhesion_energy=0.05,
+                         adhesion_range=2e-9)
+    assert p["adhesion_criteria"]["pastewka_robbins_valid"] is False
 
 
 def test_sweep_equals_cli(tmp_path):

@@ -21,6 +21,7 @@ use crate::gw::{Accuracy, GwOnMoments, GwPressureState};
 use crate::loading::{Derived, History, LoadingModel, Observables};
 use crate::persson::{Persson, PerssonState};
 use crate::spectrum::radial::radial_psd_xy;
+use crate::stickiness::{AdhesiveInteraction, Criteria, Roughness};
 use crate::surface::{HeightMap, Topography};
 use serde::Serialize;
 use std::fmt;
@@ -204,6 +205,28 @@ pub enum Warning {
         /// States compared.
         states: usize,
     },
+    /// State `state` stopped at the iteration cap (allowed): its residual
+    /// `residual` after `iterations` iterations is above `tolerance`.
+    Unconverged {
+        /// The state's index.
+        state: usize,
+        /// Iterations spent.
+        iterations: usize,
+        /// The last residual.
+        residual: f64,
+        /// The tolerance it did not reach.
+        tolerance: f64,
+    },
+    /// State `state` has no contact: its mean gap `mean_gap` (m) is beyond
+    /// the surface's highest point, `highest` (m) above its mean plane.
+    NoContact {
+        /// The state's index.
+        state: usize,
+        /// Its mean gap (m).
+        mean_gap: f64,
+        /// The highest point above the mean plane (m).
+        highest: f64,
+    },
     /// GW's mean gap is negative at state `state`: its summits, flattened
     /// one by one, are pressed below the mean plane, which no surface
     /// does (the exact mean gap is always positive).
@@ -278,6 +301,26 @@ impl fmt::Display for Warning {
                 100.0 * DIFFERENCE_LIMIT,
                 100.0 * difference
             ),
+            Warning::Unconverged {
+                state,
+                iterations,
+                residual,
+                tolerance,
+            } => write!(
+                f,
+                "state {state}: not converged: stopped at the iteration cap after {iterations} \
+                 iterations with residual {residual:.3e} above the tolerance {tolerance:e}; its \
+                 values are the last iterate's (converged: false)"
+            ),
+            Warning::NoContact {
+                state,
+                mean_gap,
+                highest,
+            } => write!(
+                f,
+                "state {state}: no contact: the mean gap {mean_gap:.4e} m is beyond the surface's \
+                 highest point ({highest:.4e} m above its mean plane)"
+            ),
             Warning::GwNegativeGap {
                 state,
                 pressure,
@@ -323,6 +366,20 @@ pub struct ExactState {
     pub cluster_sizes: Vec<SizeBin>,
     /// Contact resistances, with a resistivity.
     pub resistance: Option<Resistance>,
+    /// GW's separation (m) of the flat from the mean summit height at the
+    /// state's mean pressure, where GW has a state.
+    pub gw_separation: Option<f64>,
+}
+
+/// GW's summits on the map's moments (McCool).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GwSummits {
+    /// Summit density `eta` (1/m^2).
+    pub density: f64,
+    /// Summit radius `R` (m).
+    pub radius: f64,
+    /// Summit-height standard deviation `sigma` (m).
+    pub sigma: f64,
 }
 
 /// A theory's prediction at a state's mean pressure (null where it has
@@ -370,6 +427,13 @@ pub struct Comparison {
     pub solve_wall_s: f64,
     /// What lies outside a model's validity, in the order found.
     pub warnings: Vec<Warning>,
+    /// The stickiness criteria of the map with the adhesion, if any
+    /// ([`Problem::roughness`], [`Criteria`]).
+    pub criteria: Option<Criteria>,
+    /// The map's scales those criteria use.
+    pub roughness: Option<Roughness>,
+    /// GW's summits (none when McCool's heights have no variance).
+    pub gw_summits: Option<GwSummits>,
 }
 
 /// The map's theories: GW (none when McCool's heights have no variance),
@@ -422,7 +486,24 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
         differences: Vec::new(),
         solve_wall_s: 0.0,
         warnings: Vec::new(),
+        criteria: None,
+        roughness: None,
+        gw_summits: theories.gw.as_ref().map(|g| GwSummits {
+            density: g.params.density_per_m2,
+            radius: g.params.radius_m,
+            sigma: g.sigma,
+        }),
     };
+    if let Some(a) = input.adhesion {
+        let interaction = AdhesiveInteraction {
+            contact_modulus: input.contact_modulus,
+            energy: a.energy,
+            range: a.range,
+        };
+        let r = problem.roughness();
+        out.criteria = Some(at(Step::Adhesion, Criteria::new(&r, &interaction))?);
+        out.roughness = Some(r);
+    }
     for (index, &target) in input.targets.iter().enumerate() {
         let warm = out.states.last().map(|s| &s.solution);
         let solve = |warm| match input.control {
@@ -433,11 +514,32 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
         // contact, say 1e-300 Pa before 1e6 Pa) can keep the iteration from
         // converging where a cold start does: a failed warm start is
         // retried cold.
+        // An unconverged warm start (allowed) is retried cold likewise, and
+        // the smaller residual kept.
         let solved = match solve(warm) {
             Err(Error::NoConvergence { .. }) if warm.is_some() => solve(None),
+            Ok(s) if !s.converged && warm.is_some() => match solve(None) {
+                Ok(cold) if cold.converged || cold.residual < s.residual => Ok(cold),
+                _ => Ok(s),
+            },
             r => r,
         };
         let s = at(Step::Solve { index, target }, solved)?;
+        if !s.converged {
+            out.warnings.push(Warning::Unconverged {
+                state: index,
+                iterations: s.iterations,
+                residual: s.residual,
+                tolerance: options.tolerance,
+            });
+        }
+        if s.contact_pixels == 0 && s.mean_gap >= problem.zero_load_gap() {
+            out.warnings.push(Warning::NoContact {
+                state: index,
+                mean_gap: s.mean_gap,
+                highest: problem.zero_load_gap(),
+            });
+        }
         let cl = problem.clusters(&s);
         let state = theories.beside(&problem, s, &cl, &mut out)?;
         out.states.push(state);
@@ -579,6 +681,7 @@ impl Theories {
             });
         }
         let resistance = self.resistance(problem, cl, gw.as_ref())?;
+        let gw_separation = gw.map(|g| g.separation);
         let (mut gw, pe) = (prediction_gw(p, gw), prediction_persson(p, pe));
         // GW sums its summits' areas as if they never overlapped: above 1
         // that sum is not a fraction, so it is not reported.
@@ -605,6 +708,7 @@ impl Theories {
             clusters: cl.len(),
             cluster_sizes: size_distribution(cl),
             resistance,
+            gw_separation,
         })
     }
 

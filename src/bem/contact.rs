@@ -30,7 +30,8 @@ use crate::error::{Error, Result};
 /// pressure field, rescaled) or a uniform pressure.
 ///
 /// # Errors
-/// [`Error::NoConvergence`] after `options.max_iterations`.
+/// [`Error::NoConvergence`] after `options.max_iterations` (unless
+/// `options.allow_unconverged`: the last iterate, flagged).
 // Over 100 lines, kept whole: one Polonsky–Keer iteration loop whose
 // projection, step and convergence tests share the same dozen locals.
 pub(crate) fn solve_load(
@@ -56,7 +57,7 @@ pub(crate) fn solve_load(
     let mut r = vec![0.0; n];
     let (mut g_old, mut delta) = (1.0, false);
     let mut residual = f64::INFINITY;
-    for it in 0..options.max_iterations {
+    for it in 0..=options.max_iterations {
         crate::cancel::check()?;
         op.displacement(&p, &mut u);
         // g = K p - h, then shifted by its mean over S.
@@ -86,6 +87,10 @@ pub(crate) fn solve_load(
         residual = ((big_g + pen) / nf).sqrt() / h_rms;
         if residual < options.tolerance {
             return Ok(Solution::from_fields(p, g, c, it, residual));
+        }
+        if it == options.max_iterations {
+            let s = Solution::from_fields(p, g, c, it, residual);
+            return super::at_cap(s, options, "boundary elements (Polonsky-Keer)");
         }
         let ratio = if delta { big_g / g_old } else { 0.0 };
         let [num, sum_t] = update(&mut t, |rg, ts| {

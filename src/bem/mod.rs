@@ -11,6 +11,8 @@
 //!   exponential adhesion of Rey, Anciaux & Molinari (2017).
 //! - [`clusters`]: connected contact spots and their size distribution;
 //!   [`resistance`]: their constriction resistance.
+//! - `roughness`: the map's RMS gradient, curvature and full-contact
+//!   energy, the scales of the stickiness criteria ([`Problem::roughness`]).
 //! - [`compare`]: the exact states of a map beside GW (its moments) and
 //!   Persson (its radial spectrum) at the same mean pressures, with their
 //!   relative differences and warnings as data.
@@ -37,6 +39,7 @@ mod gap_control;
 pub mod operator;
 mod passes;
 pub mod resistance;
+mod roughness;
 
 pub use clusters::{Cluster, SizeBin};
 pub use gap_control::Exponential;
@@ -56,6 +59,10 @@ pub struct Options {
     pub max_iterations: usize,
     /// Bytes the solver may use (checked before allocating). Default 1 GiB.
     pub memory_limit: usize,
+    /// At the iteration cap, return the last iterate with
+    /// [`Solution::converged`] `false` (its residual measured) instead of
+    /// [`Error::NoConvergence`]. Default `false`.
+    pub allow_unconverged: bool,
 }
 
 impl Default for Options {
@@ -64,8 +71,29 @@ impl Default for Options {
             tolerance: 1e-10,
             max_iterations: 10_000,
             memory_limit: 1 << 30,
+            allow_unconverged: false,
         }
     }
+}
+
+/// The words every solver's [`Error::NoConvergence`] at its iteration cap
+/// ends its `what` with (a front end tells a cap from a breakdown by them).
+pub const AT_CAP: &str = "stopped at the iteration cap";
+
+/// The end of a solve at the iteration cap with the last iterate `s` (its
+/// residual measured): `s` flagged unconverged when
+/// [`Options::allow_unconverged`], else [`Error::NoConvergence`] naming
+/// `solver`, the iterations and the residual.
+pub(crate) fn at_cap(mut s: Solution, options: &Options, solver: &str) -> Result<Solution> {
+    if options.allow_unconverged {
+        s.converged = false;
+        return Ok(s);
+    }
+    Err(Error::NoConvergence {
+        what: format!("{solver}: {AT_CAP}"),
+        iterations: s.iterations,
+        residual: s.residual,
+    })
 }
 
 /// One converged state's fields (row-major, the map's shape).
@@ -85,6 +113,10 @@ pub struct Solution {
     pub iterations: usize,
     /// Final residual (see the solver).
     pub residual: f64,
+    /// Whether the residual fell below the tolerance (`false` only for a
+    /// solve stopped at the iteration cap with
+    /// [`Options::allow_unconverged`]).
+    pub converged: bool,
 }
 
 impl Solution {
@@ -105,6 +137,7 @@ impl Solution {
             contact_pixels,
             iterations: it,
             residual,
+            converged: true,
         }
     }
 
@@ -119,6 +152,7 @@ impl Solution {
             gap: g,
             iterations: it,
             residual,
+            converged: true,
         }
     }
 
@@ -378,6 +412,9 @@ impl Problem {
         warm: Option<&Solution>,
     ) -> Result<Solution> {
         positive("gap", gap)?;
+        if let Some(s) = self.separated(gap, options) {
+            return Ok(s);
+        }
         if self.periodic {
             return gap_control::solve_gap(
                 &self.op,
@@ -390,16 +427,6 @@ impl Problem {
                     .filter(|w| w.iter().sum::<f64>() > 0.0),
             );
         }
-        if gap >= self.zero_load_gap() {
-            let g = gap_control::rigid_gap(&self.heights, gap);
-            return Ok(Solution::from_gap_fields(
-                vec![0.0; g.len()],
-                g,
-                0.0,
-                0,
-                0.0,
-            ));
-        }
         // Padded: the pressure that gives the gap (the gap decreases with p).
         let start = warm.map_or(1e-2 * self.p_ref, |w| {
             w.mean_pressure.max(1e-9 * self.p_ref)
@@ -411,6 +438,45 @@ impl Problem {
             let v = s.mean_gap;
             last = Some(s.clone());
             Ok((v, s))
+        })
+    }
+
+    /// The state at mean gap `gap` (m) when the surfaces stay apart, at
+    /// once (no iteration): the rigid surface untouched, the gap
+    /// `g = c - h` with `c` giving the mean `gap`. Without adhesion that is
+    /// exact once `gap >= max h` ([`Problem::zero_load_gap`]), with zero
+    /// pressure and residual. With the exponential adhesion the pixels
+    /// carry the tension `-phi'(g) = -(w/rho) exp(-g/rho)`; the rigid state
+    /// is returned when its residual, the RMS of that tension about its
+    /// mean over `p_ref` (the gap solver's, with `K^-1 u = 0` for the
+    /// uniform displacement), is below the tolerance. `None` otherwise
+    /// (the solver is needed). Iterating there instead would only add
+    /// rounding: `u = g + h` loses the heights' digits when `g >> h`.
+    fn separated(&self, gap: f64, options: &Options) -> Option<Solution> {
+        if gap < self.zero_load_gap() {
+            return None;
+        }
+        let g = gap_control::rigid_gap(&self.heights, gap);
+        let n = g.len() as f64;
+        let Some(a) = self.adhesion else {
+            return Some(Solution::from_gap_fields(
+                vec![0.0; g.len()],
+                g,
+                0.0,
+                0,
+                0.0,
+            ));
+        };
+        let tension: Vec<f64> = g
+            .iter()
+            .map(|gi| a.energy / a.range * (-gi / a.range).exp())
+            .collect();
+        let mean = tension.iter().sum::<f64>() / n;
+        let rms = (tension.iter().map(|t| (t - mean).powi(2)).sum::<f64>() / n).sqrt();
+        let residual = rms / self.p_ref;
+        (residual < options.tolerance).then(|| {
+            let p = tension.iter().map(|t| -t).collect();
+            Solution::from_gap_fields(p, g, -mean, 0, residual)
         })
     }
 

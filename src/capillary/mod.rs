@@ -25,10 +25,12 @@
 mod beside;
 mod carlson;
 mod flooded;
+mod summits;
 mod two_zone;
 
 pub use beside::{derjaguin_error, WithMeniscus};
 pub use flooded::{flooded_force, FloodedForce, Regime};
+pub use summits::per_summit_pressure;
 pub use two_zone::{TwoZone, Zone};
 
 use crate::error::{Allowed, Error, Result};

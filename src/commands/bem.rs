@@ -3,7 +3,9 @@
 //! surface`) and Persson (from the map's radial spectrum) at the same mean
 //! pressures.
 
+use super::criteria::CriteriaOutput;
 use super::persson::positive_values;
+use super::wet_map::{wet_states, Liquid, WetOutput};
 use super::{param, CommandResult};
 use crate::bem::compare::{compare, CompareError, CompareInput, Comparison, Control, Step};
 use crate::bem::{memory_estimate, Exponential, Options, SizeBin, Solution};
@@ -110,6 +112,13 @@ pub struct BemInput {
     /// Memory the solver may use (MiB); larger maps are refused. Default
     /// 1024.
     pub memory_limit_mib: f64,
+    /// A solve stopped at the iteration cap gives its last iterate flagged
+    /// `converged: false` with a warning, instead of failing. Default
+    /// `false`.
+    pub allow_unconverged: bool,
+    /// The condensing liquid and humidity: adds the flooded capillary
+    /// attraction of every state beside per-summit menisci.
+    pub liquid: Option<Liquid>,
     /// Write contact/pressure/gap `.npy` per state, `bem.json` and charts
     /// here.
     pub out: Option<PathBuf>,
@@ -154,6 +163,8 @@ impl BemInput {
             tolerance: 1e-10,
             max_iterations: 10_000,
             memory_limit_mib: 1024.0,
+            allow_unconverged: false,
+            liquid: None,
             out: None,
         }
     }
@@ -175,6 +186,9 @@ pub struct BemState {
     pub iterations: usize,
     /// Final residual (dimensionless).
     pub residual: f64,
+    /// Whether the residual fell below the tolerance (`false` only with
+    /// `allow_unconverged`, with a warning).
+    pub converged: bool,
     /// Cluster sizes (pixels) in logarithmic bins.
     pub cluster_sizes_px: Vec<SizeBin>,
     /// Contact resistance, with a resistivity.
@@ -211,6 +225,16 @@ pub struct BemOutput {
     pub model_error: String,
     /// Results outside a model's validity.
     pub warnings: Vec<String>,
+    /// With an adhesion: the stickiness criteria of the map
+    /// ([`crate::stickiness`]: Pastewka–Robbins with its validity,
+    /// Persson–Tosatti, the Tabor parameter at `R = 1/h''`, Müser's
+    /// `mu_rho`) and the map's scales they use.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub adhesion_criteria: Option<CriteriaOutput>,
+    /// With a liquid: the capillary attraction of every state, flooded
+    /// and per-summit, with the regime.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub capillary: Option<WetOutput>,
 }
 
 impl BemInput {
@@ -237,6 +261,7 @@ impl BemInput {
                 tolerance: self.tolerance,
                 max_iterations: self.max_iterations,
                 memory_limit: (self.memory_limit_mib * 1048576.0) as usize,
+                allow_unconverged: self.allow_unconverged,
             },
         }
     }
@@ -254,8 +279,21 @@ impl BemInput {
 pub fn bem(map: &HeightMap, args: &BemInput) -> CommandResult<BemOutput> {
     args.validate()?;
     let memory = check_memory(map, args)?;
+    if let Some(l) = &args.liquid {
+        l.meniscus()?;
+    }
     let cmp = compare(map, &args.compare_input()).map_err(|e| named_failure(e, args))?;
-    let out = output(map, args, &cmp, memory);
+    let mut out = output(map, args, &cmp, memory);
+    if let Some(l) = &args.liquid {
+        let pixels = (
+            args.pixel_size,
+            args.pixel_size_y.unwrap_or(args.pixel_size),
+        );
+        out.capillary = wet_states(l, &cmp, (map.rows(), map.cols()), pixels)?;
+        if let Some(w) = &out.capillary {
+            out.warnings.extend(super::wet_map::warnings(w));
+        }
+    }
     if let Some(dir) = &args.out {
         crate::cancel::check()?;
         let solutions: Vec<&Solution> = cmp.states.iter().map(|s| &s.solution).collect();
@@ -328,7 +366,9 @@ fn named_failure(e: CompareError, args: &BemInput) -> Error {
     }
 }
 
-/// A solve that fails at target `t`: bad input names the targets; any
+/// A solve that fails at target `t`: bad input names the targets; a solve
+/// stopped at the iteration cap is the program's failure (not bad input:
+/// the CLI exits 1) with its residual and the inputs that change it; any
 /// other failure is the inputs' (the target, the modulus and the adhesion
 /// the user wrote, named with the failure).
 fn solve_failure(e: Error, t: f64, args: &BemInput) -> Error {
@@ -341,6 +381,28 @@ fn solve_failure(e: Error, t: f64, args: &BemInput) -> Error {
     }
     if matches!(e, Error::Cancelled) {
         return e;
+    }
+    if let Error::NoConvergence {
+        what,
+        iterations,
+        residual,
+    } = &e
+    {
+        if what.ends_with(crate::bem::AT_CAP) {
+            return Error::NoConvergence {
+                what: format!(
+                    "{target} {t:e}: {what} ({} {}, {} {:e}; {} gives the last iterate flagged \
+                     converged: false)",
+                    param("max_iterations"),
+                    args.max_iterations,
+                    param("tolerance"),
+                    args.tolerance,
+                    param("allow_unconverged")
+                ),
+                iterations: *iterations,
+                residual: *residual,
+            };
+        }
     }
     let adhesion = match args.adhesion {
         Some(a) => format!(
@@ -379,6 +441,7 @@ fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> 
                 clusters: st.clusters,
                 iterations: s.iterations,
                 residual: s.residual,
+                converged: s.converged,
                 cluster_sizes_px: st.cluster_sizes.clone(),
                 resistance: st.resistance,
             }
@@ -396,12 +459,37 @@ fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> 
         gamma: args.gamma,
         solve_wall_s: cmp.solve_wall_s,
         numerical_error: format!(
-            "boundary elements: each state converged to the stated residual (< {:e}; gap residual over h_rms under load control, KKT residual over the full-contact RMS pressure under gap control); on a 256^2 self-affine map the area fraction moves by < 1e-5 from 1e-8 to 1e-12; discretisation: Hertz on 512^2 within 0.2 % (docs/performance.md). Persson: quadrature 1e-12 relative on the map's radial spectrum",
+            "{}boundary elements: each state converged to the stated residual (< {:e}; gap residual over h_rms under load control, KKT residual over the full-contact RMS pressure under gap control); on a 256^2 self-affine map the area fraction moves by < 1e-5 from 1e-8 to 1e-12; discretisation: Hertz on 512^2 within 0.2 % (docs/performance.md). Persson: quadrature 1e-12 relative on the map's radial spectrum",
+            unconverged_note(cmp),
             args.tolerance
         ),
         model_error: measured_model_error(cmp),
-        warnings: cmp.warnings.iter().map(ToString::to_string).collect(),
+        warnings: cmp
+            .warnings
+            .iter()
+            .map(ToString::to_string)
+            .chain(cmp.criteria.iter().flat_map(|c| c.warnings(true)))
+            .collect(),
+        adhesion_criteria: cmp.criteria.zip(cmp.roughness).map(|(c, r)| CriteriaOutput {
+            criteria: c,
+            roughness: r.into(),
+        }),
+        capillary: None,
     }
+}
+
+/// The states that stopped at the iteration cap, in words (empty when
+/// every state converged).
+fn unconverged_note(cmp: &Comparison) -> String {
+    let n = cmp.states.iter().filter(|s| !s.solution.converged).count();
+    if n == 0 {
+        return String::new();
+    }
+    format!(
+        "{n} of {} states NOT converged (stopped at the iteration cap, converged: false: their \
+         error is not bounded by the tolerance); otherwise ",
+        cmp.states.len()
+    )
 }
 
 impl BemOutput {
@@ -502,13 +590,14 @@ fn print_table(o: &BemOutput) -> String {
     );
     let _ = writeln!(
         t,
-        "{:>12} {:>12} {:>12} {:>8} {:>6} {:>9} | {:>12} {:>12} {:>8} {:>8} | {:>12} {:>12} {:>8} {:>8}",
+        "{:>12} {:>12} {:>12} {:>8} {:>6} {:>9} {:>4} | {:>12} {:>12} {:>8} {:>8} | {:>12} {:>12} {:>8} {:>8}",
         "p (Pa)",
         "gap (m)",
         "A/A0",
         "clusters",
         "iter",
         "residual",
+        "conv",
         "GW A/A0",
         "GW gap",
         "dA/A",
@@ -529,13 +618,14 @@ fn print_table(o: &BemOutput) -> String {
     {
         let _ = writeln!(
             t,
-            "{:>12.5e} {:>12.5e} {:>12.5e} {:>8} {:>6} {:>9.2e} | {:>12} {:>12} {:>8} {:>8} | {:>12} {:>12} {:>8} {:>8}",
+            "{:>12.5e} {:>12.5e} {:>12.5e} {:>8} {:>6} {:>9.2e} {:>4} | {:>12} {:>12} {:>8} {:>8} | {:>12} {:>12} {:>8} {:>8}",
             s.pressure,
             s.mean_gap_m,
             s.area_fraction,
             s.clusters,
             s.iterations,
             s.residual,
+            if s.converged { "yes" } else { "NO" },
             f(g.area_fraction),
             f(g.mean_gap_m),
             pct(d.gw_area),
@@ -548,8 +638,14 @@ fn print_table(o: &BemOutput) -> String {
     }
     let _ = writeln!(
         t,
-        "(dA/A, du/u: the model's area fraction and mean gap against the exact ones, model/exact - 1)"
+        "(iter, residual, conv: the solver's iterations, final residual and whether it fell below the tolerance; dA/A, du/u: the model's area fraction and mean gap against the exact ones, model/exact - 1)"
     );
+    if let Some(c) = &o.adhesion_criteria {
+        t.push_str(&c.criteria.text());
+    }
+    if let Some(w) = &o.capillary {
+        t.push_str(&super::wet_map::text(w));
+    }
     for w in &o.warnings {
         let _ = writeln!(t, "warning: {w}");
     }

@@ -36,6 +36,7 @@
 //! ```
 
 pub mod bem;
+pub mod criteria;
 pub mod fn_;
 pub mod heating;
 pub mod law;
@@ -48,6 +49,7 @@ pub mod sphere;
 pub mod spots;
 pub mod surface;
 mod vocabulary;
+pub mod wet_map;
 
 pub use vocabulary::{param, Vocabulary};
 

@@ -1,6 +1,7 @@
 //! `asperity persson`: Persson's contact theory on an analytic self-affine
 //! spectrum, with GW on the same spectrum beside it.
 
+use super::criteria::{of_spectrum, CriteriaOutput};
 use super::{param, CommandResult};
 use crate::error::positive;
 use crate::gw::GwOnMoments;
@@ -35,6 +36,8 @@ pub struct PerssonInput {
     /// Work of adhesion w (J/m^2): adds the Persson–Tosatti number
     /// U_full/w.
     pub adhesion_energy: Option<f64>,
+    /// Range rho (m) of `-w exp(-g/rho)`: adds the stickiness criteria.
+    pub adhesion_range: Option<f64>,
 }
 
 /// The normalisation from the two optional inputs, exactly one of which is
@@ -139,6 +142,9 @@ pub struct PerssonOutput {
     pub model_error: String,
     /// Results outside a model's validity.
     pub warnings: Vec<String>,
+    /// With an adhesion energy and range: the stickiness criteria.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub adhesion_criteria: Option<CriteriaOutput>,
 }
 
 /// Persson's theory and GW on a self-affine spectrum (`asperity persson`).
@@ -194,6 +200,8 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
         })
         .transpose()?;
     warnings.extend(non_finite_warnings(&states, &above_one));
+    let adhesion = (input.adhesion_energy, input.adhesion_range);
+    let adhesion_criteria = of_spectrum(&spectrum, input.estar, adhesion, &mut warnings)?;
     let pt = match (pt, input.adhesion_energy) {
         (Some(x), Some(w)) if !x.is_finite() => {
             warnings.push(format!(
@@ -231,6 +239,7 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
             input.gamma
         ),
         warnings,
+        adhesion_criteria,
     })
 }
 
@@ -475,6 +484,9 @@ fn print_table(o: &PerssonOutput) -> String {
         t,
         "(GW/P A, GW/P u: GW's area fraction and mean gap against Persson's, GW/Persson - 1)"
     );
+    if let Some(c) = &o.adhesion_criteria {
+        t.push_str(&c.criteria.text());
+    }
     for w in &o.warnings {
         let _ = writeln!(t, "warning: {w}");
     }

@@ -89,6 +89,12 @@ pub struct MapState {
     pub load_at_gap: Option<f64>,
     /// Of the mean gap at the same load.
     pub mean_gap: Option<f64>,
+    /// The exact solve's iterations.
+    pub iterations: usize,
+    /// Its final residual (dimensionless).
+    pub residual: f64,
+    /// Whether it converged.
+    pub converged: bool,
 }
 
 /// GW's model error on the map, or why it is not measured.
@@ -443,6 +449,9 @@ fn exact_states(
             area: relative(g.area_fraction, area),
             load_at_gap: gw_load_at_exact_gap.and_then(|l| relative(l, load)),
             mean_gap: relative(g.mean_gap, gap),
+            iterations: s.iterations,
+            residual: s.residual,
+            converged: s.converged,
         });
         warm = Some(s);
     }

@@ -15,7 +15,9 @@ mod common;
 
 mod axisym;
 mod bem;
+mod bem_honest;
 mod capillary;
+mod capillary_maps;
 mod chart_rules;
 mod cli_bem;
 mod cli_electrical;
@@ -83,6 +85,7 @@ mod sphere_calibration;
 mod sphere_convergence;
 mod sphere_large_mu;
 mod sphere_scene;
+mod stickiness;
 mod struve;
 mod surface_reference;
 mod surface_scene;

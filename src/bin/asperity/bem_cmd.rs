@@ -6,6 +6,7 @@ use crate::CliError;
 use asperity::commands::bem::{bem, BemAdhesion, BemInput, BemTargets};
 use asperity::commands::measured::{plane_rms, unit_warnings};
 use asperity::commands::surface::map_name;
+use asperity::commands::wet_map::Liquid;
 use asperity::commands::Vocabulary;
 use clap::Args;
 use std::path::PathBuf;
@@ -62,6 +63,55 @@ pub struct BemArgs {
     /// Memory the solver may use (MiB); larger maps are refused.
     #[arg(long, allow_hyphen_values = true, default_value_t = 1024.0)]
     memory_limit_mib: f64,
+    /// A solve stopped at --max-iterations gives its last iterate, flagged
+    /// converged: false with a warning (otherwise it fails, exit 1).
+    #[arg(long)]
+    allow_unconverged: bool,
+    /// Relative humidity in (0, 1): adds the flooded capillary attraction of
+    /// every state (Laplace pressure where the gap is below the meniscus
+    /// height) beside per-summit menisci on GW's summits, and the regime.
+    #[arg(long, allow_hyphen_values = true)]
+    relative_humidity: Option<f64>,
+    /// Surface tension of the condensing liquid (N/m); water 0.0728.
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        default_value_t = 0.0728,
+        requires = "relative_humidity"
+    )]
+    surface_tension: f64,
+    /// Contact angle of the liquid on the map's body (degrees).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        default_value_t = 0.0,
+        requires = "relative_humidity"
+    )]
+    contact_angle_1: f64,
+    /// Contact angle of the liquid on the flat (degrees).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        default_value_t = 0.0,
+        requires = "relative_humidity"
+    )]
+    contact_angle_2: f64,
+    /// Temperature of liquid and vapour (K).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        default_value_t = 293.15,
+        requires = "relative_humidity"
+    )]
+    temperature: f64,
+    /// Molar volume of the liquid (m^3/mol); water 1.8e-5.
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        default_value_t = 1.8e-5,
+        requires = "relative_humidity"
+    )]
+    molar_volume: f64,
     /// Write contact.npy/pressure.npy/gap.npy per state, bem.json and charts here.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -84,6 +134,15 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     input.tolerance = args.tolerance;
     input.max_iterations = args.max_iterations;
     input.memory_limit_mib = args.memory_limit_mib;
+    input.allow_unconverged = args.allow_unconverged;
+    input.liquid = args.relative_humidity.map(|rh| Liquid {
+        relative_humidity: rh,
+        surface_tension: args.surface_tension,
+        contact_angle_1: args.contact_angle_1,
+        contact_angle_2: args.contact_angle_2,
+        temperature: args.temperature,
+        molar_volume: args.molar_volume,
+    });
     input.out = args.out.clone();
     // The map's content is named by its file (and the scale).
     let words = Vocabulary::cli().with("heights", map_name(&args.map, args.read.scale));

@@ -44,6 +44,11 @@ pub struct PerssonArgs {
     /// Work of adhesion w (J/m^2): adds the Persson–Tosatti number U_full/w.
     #[arg(long, allow_hyphen_values = true)]
     adhesion_energy: Option<f64>,
+    /// Range rho (m) of the exponential interaction -w exp(-g/rho): with
+    /// --adhesion-energy adds the stickiness criteria (Pastewka–Robbins,
+    /// Persson–Tosatti, Tabor at R = 1/h'', Müser's mu_rho).
+    #[arg(long, allow_hyphen_values = true, requires = "adhesion_energy")]
+    adhesion_range: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long)]
     json: bool,
@@ -60,6 +65,7 @@ pub fn run(args: &PerssonArgs) -> crate::CliResult {
         pressures: crate::list::parse("--pressures", &args.pressures)?,
         gamma: args.gamma,
         adhesion_energy: args.adhesion_energy,
+        adhesion_range: args.adhesion_range,
     })?;
     crate::print_output(&out, &out.text(), args.json)
 }

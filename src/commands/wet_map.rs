@@ -1,0 +1,256 @@
+//! The flooded capillary model on a map's exact states (`asperity bem
+//! --relative-humidity`): the Laplace pressure on the area where each
+//! state's gap is below the meniscus height `h_m`
+//! ([`crate::capillary::flooded_force`]), the regime from `h_m` over the
+//! RMS gap, and beside it the per-summit menisci on GW's summits of the
+//! same map at the same mean pressure
+//! ([`crate::capillary::per_summit_pressure`]), with their difference where
+//! both apply (the transition, `0.1 <= h_m/u_rms <= 1`).
+
+use super::{param, CommandResult};
+use crate::bem::compare::Comparison;
+use crate::capillary::{flooded_force, per_summit_pressure, Meniscus, Regime};
+use crate::Error;
+use serde::Serialize;
+
+/// The condensing liquid and the humidity (the scene's `adhesion.*` keys).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Liquid {
+    /// Relative humidity, in `(0, 1)`.
+    pub relative_humidity: f64,
+    /// Surface tension `gamma` (N/m); water 0.0728.
+    pub surface_tension: f64,
+    /// Contact angle on the rough body (degrees), in `[0, 180]`; 0.
+    pub contact_angle_1: f64,
+    /// Contact angle on the flat (degrees), in `[0, 180]`; 0.
+    pub contact_angle_2: f64,
+    /// Temperature `T` (K); 293.15.
+    pub temperature: f64,
+    /// Molar volume `V_m` (m^3/mol); water 1.8e-5.
+    pub molar_volume: f64,
+}
+
+impl Liquid {
+    /// Water at 293.15 K wetting both surfaces at `relative_humidity`.
+    pub fn water(relative_humidity: f64) -> Self {
+        Liquid {
+            relative_humidity,
+            surface_tension: crate::capillary::WATER_SURFACE_TENSION,
+            contact_angle_1: 0.0,
+            contact_angle_2: 0.0,
+            temperature: crate::capillary::ROOM_TEMPERATURE,
+            molar_volume: crate::capillary::WATER_MOLAR_VOLUME,
+        }
+    }
+
+    /// The meniscus, `None` when none condenses (`RH = 0`, or the liquid
+    /// does not wet the gap).
+    ///
+    /// # Errors
+    /// Naming the input (`{relative_humidity}`, `{contact_angle_1}`, ...).
+    pub fn meniscus(&self) -> CommandResult<Option<Meniscus>> {
+        for (name, deg) in [
+            ("contact_angle_1", self.contact_angle_1),
+            ("contact_angle_2", self.contact_angle_2),
+        ] {
+            crate::error::Allowed::closed(0.0, 180.0).check(&param(name), deg)?;
+        }
+        Meniscus::new(
+            self.surface_tension,
+            self.contact_angle_1.to_radians(),
+            self.contact_angle_2.to_radians(),
+            self.molar_volume,
+            self.temperature,
+            self.relative_humidity,
+        )
+        .map_err(|e| match e.field() {
+            Some(f) => {
+                let f = f.to_string();
+                e.renamed(&param(&f))
+            }
+            None => e,
+        })
+    }
+}
+
+/// One state's capillary attraction.
+#[derive(Serialize, Debug, Clone, Copy)]
+pub struct WetState {
+    /// The state's mean pressure (Pa) without the menisci.
+    #[serde(rename = "pressure_Pa")]
+    pub pressure: f64,
+    /// Its mean gap (m).
+    pub mean_gap_m: f64,
+    /// RMS gap `u_rms` (m).
+    pub rms_gap_m: f64,
+    /// `h_m / u_rms`.
+    pub ratio: f64,
+    /// The regime of the ratio (`per-summit` below 0.1, `flooded` above 1).
+    pub regime: Regime,
+    /// The wetted fraction `A_w/A0` (gap below `h_m`).
+    pub wetted_fraction: f64,
+    /// Flooded attraction per nominal area `Delta p A_w/A0` (Pa, > 0).
+    #[serde(rename = "flooded_pressure_Pa")]
+    pub flooded_pressure: f64,
+    /// The bound on the wetted edge's surface-tension term per nominal
+    /// area, `gamma L/A0` (Pa).
+    #[serde(rename = "edge_bound_Pa")]
+    pub edge_bound: f64,
+    /// Per-summit menisci on GW's summits at the same mean pressure (Pa),
+    /// where GW has a state.
+    #[serde(rename = "per_summit_pressure_Pa")]
+    pub per_summit_pressure: Option<f64>,
+    /// The model error in the transition: `per_summit/flooded - 1` (null
+    /// outside it, where one model applies).
+    pub model_error: Option<f64>,
+}
+
+/// What `--relative-humidity` adds to `asperity bem`.
+#[derive(Serialize, Debug, Clone)]
+pub struct WetOutput {
+    /// Kelvin radius `r_K` (m).
+    pub kelvin_radius_m: f64,
+    /// Laplace pressure `gamma/r_K` (Pa).
+    #[serde(rename = "laplace_pressure_Pa")]
+    pub laplace_pressure: f64,
+    /// Meniscus height `h_m = r_K (cos theta_1 + cos theta_2)` (m).
+    pub meniscus_height_m: f64,
+    /// One per exact state, in order.
+    pub states: Vec<WetState>,
+}
+
+/// The capillary attraction of every state of `cmp` on a `rows x cols`
+/// map of pixels `(dx, dy)` (m); `None` when no meniscus condenses.
+///
+/// # Errors
+/// Naming the liquid's input; [`Error::Invalid`] from the gap fields
+/// (none expected: the solver's gaps are finite and >= 0).
+pub fn wet_states(
+    liquid: &Liquid,
+    cmp: &Comparison,
+    (rows, cols): (usize, usize),
+    (dx, dy): (f64, f64),
+) -> CommandResult<Option<WetOutput>> {
+    let Some(m) = liquid.meniscus()? else {
+        return Ok(None);
+    };
+    let area = (rows * cols) as f64 * dx * dy;
+    let mut states = Vec::with_capacity(cmp.states.len());
+    for st in &cmp.states {
+        let s = &st.solution;
+        // The adhesive gap solver may leave gaps of a rounding below 0
+        // (freed pixels): they are in contact. Rows run along y (pixel
+        // dy), a row along x (dx).
+        let gaps: Vec<f64> = s.gap.iter().map(|g| g.max(0.0)).collect();
+        let f = flooded_force(&m, &gaps, rows, cols, dy, dx)?;
+        let per_summit = match (cmp.gw_summits, st.gw_separation) {
+            (Some(g), Some(d)) => Some(per_summit_pressure(&m, g.density, g.radius, g.sigma, d)?),
+            _ => None,
+        };
+        let flooded = f.force / area;
+        let model_error = per_summit
+            .filter(|_| f.regime == Regime::Transition && flooded > 0.0)
+            .map(|p| p / flooded - 1.0);
+        states.push(WetState {
+            pressure: s.mean_pressure,
+            mean_gap_m: s.mean_gap,
+            rms_gap_m: f.rms_gap,
+            ratio: f.ratio,
+            regime: f.regime,
+            wetted_fraction: f.wetted_fraction,
+            flooded_pressure: flooded,
+            edge_bound: f.perimeter_bound / area,
+            per_summit_pressure: per_summit,
+            model_error,
+        });
+    }
+    if states.is_empty() {
+        return Err(Error::invalid(param("relative_humidity"), "no state"));
+    }
+    Ok(Some(WetOutput {
+        kelvin_radius_m: m.kelvin_radius(),
+        laplace_pressure: m.laplace_pressure(),
+        meniscus_height_m: m.height(),
+        states,
+    }))
+}
+
+/// Warnings of the capillary states: the regime, and the Kelvin equation
+/// below its molecular limit.
+pub fn warnings(w: &WetOutput) -> Vec<String> {
+    let mut out = Vec::new();
+    if w.kelvin_radius_m < crate::capillary::MOLECULAR_SIZE {
+        out.push(format!(
+            "capillary: Kelvin radius {:.3e} m below a molecule ({:e} m): the continuum meniscus \
+             is outside its validity",
+            w.kelvin_radius_m,
+            crate::capillary::MOLECULAR_SIZE
+        ));
+    }
+    for (i, s) in w.states.iter().enumerate() {
+        let note = match s.regime {
+            Regime::Flooded => {
+                "flooded (h_m/u_rms > 1): the flooded column applies, per-summit \
+                                menisci have merged"
+            }
+            Regime::PerSummit => {
+                "per-summit (h_m/u_rms < 0.1): the per-summit column applies, \
+                                  the menisci have not merged"
+            }
+            Regime::Transition => continue,
+        };
+        out.push(format!("capillary state {i}: {note}"));
+    }
+    out
+}
+
+/// The capillary table `asperity bem` prints.
+pub fn text(w: &WetOutput) -> String {
+    use std::fmt::Write as _;
+    let mut t = format!(
+        "capillary: Kelvin radius {:.4e} m, Laplace pressure {:.4e} Pa, meniscus height h_m {:.4e} m\n",
+        w.kelvin_radius_m, w.laplace_pressure, w.meniscus_height_m
+    );
+    let _ = writeln!(
+        t,
+        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9}",
+        "p (Pa)",
+        "u_rms (m)",
+        "h_m/u",
+        "regime",
+        "A_w/A0",
+        "flooded (Pa)",
+        "summits (Pa)",
+        "summ/fl"
+    );
+    let f = |x: Option<f64>, pct: bool| match x {
+        Some(v) if pct => format!("{:+.1}%", 100.0 * v),
+        Some(v) => format!("{v:.4e}"),
+        None => "-".into(),
+    };
+    for s in &w.states {
+        let regime = match s.regime {
+            Regime::PerSummit => "per-summit",
+            Regime::Transition => "transition",
+            Regime::Flooded => "flooded",
+        };
+        let _ = writeln!(
+            t,
+            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9}",
+            s.pressure,
+            s.rms_gap_m,
+            s.ratio,
+            regime,
+            s.wetted_fraction,
+            s.flooded_pressure,
+            f(s.per_summit_pressure, false),
+            f(s.model_error, true)
+        );
+    }
+    t.push_str(
+        "(flooded: Laplace pressure on the area where the gap is below h_m; summits: menisci \
+         beside GW's summits at the same mean pressure; summ/fl: their difference where both \
+         apply, 0.1 <= h_m/u_rms <= 1)\n",
+    );
+    t
+}
