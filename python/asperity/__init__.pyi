@@ -211,6 +211,7 @@ def bem(
     max_iterations: int = 10000,
     memory_limit_mib: float = 1024.0,
     out: Optional[Path] = None,
+    hardness: Optional[float] = None,
 ) -> Dict[str, Any]:
     """`asperity bem --json` on a 2-D height map (m): FFT boundary elements
     beside GW and Persson."""

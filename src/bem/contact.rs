@@ -85,7 +85,7 @@ pub(crate) fn solve_load(
         });
         residual = ((big_g + pen) / nf).sqrt() / h_rms;
         if residual < options.tolerance {
-            return Ok(Solution::from_fields(p, g, c, it, residual));
+            return Ok(Solution::from_fields(p, g, f64::INFINITY, it, residual));
         }
         let ratio = if delta { big_g / g_old } else { 0.0 };
         let [num, sum_t] = update(&mut t, |rg, ts| {

@@ -15,6 +15,7 @@ mod common;
 
 mod axisym;
 mod bem;
+mod bem_plastic;
 mod capillary;
 mod chart_rules;
 mod cli_bem;
