@@ -219,6 +219,7 @@ def bem(
     contact_angle_2: float = 0.0,
     temperature: float = 293.15,
     molar_volume: float = 1.8e-5,
+    hardness: Optional[float] = None,
 ) -> Dict[str, Any]:
     """`asperity bem --json` on a 2-D height map (m): FFT boundary elements
     beside GW and Persson."""

@@ -714,6 +714,12 @@ pub fn rough_sphere_py(
 ///     Treat the map as periodic (otherwise padded to twice its size).
 /// adhesion_energy, adhesion_range : float, optional
 ///     w (J/m^2) and rho (m) of the interaction -w exp(-g/rho), together.
+/// hardness : float, optional
+///     Hardness H (Pa, > 0): the contact pressure is capped at H
+///     (elastic-perfectly-plastic); each state then has
+///     ``plastic_area_fraction``, ``plastic_volume_m3`` and
+///     ``plastic_volume_per_area_m``. Mean pressures up to H; not with an
+///     adhesion.
 /// gamma : float
 ///     Yang–Persson factor for Persson's mean gap, in [0, 1].
 /// resistivity : float, optional
@@ -753,7 +759,7 @@ pub fn rough_sphere_py(
 /// >>> h = numpy.load("examples/data/selfaffine-256.npy")
 /// >>> asperity.bem(h, 3.90625e-7, 1e9, pressures=[1e6, 1e7], periodic=True)
 #[pyfunction]
-#[pyo3(name = "bem", signature = (heights, pixel_size, estar, pressures = None, gaps = None, periodic = false, adhesion_energy = None, adhesion_range = None, gamma = 1.0, resistivity = None, tolerance = 1e-10, max_iterations = 10_000, memory_limit_mib = 1024.0, out = None, allow_unconverged = false, relative_humidity = None, surface_tension = 0.0728, contact_angle_1 = 0.0, contact_angle_2 = 0.0, temperature = 293.15, molar_volume = 1.8e-5))]
+#[pyo3(name = "bem", signature = (heights, pixel_size, estar, pressures = None, gaps = None, periodic = false, adhesion_energy = None, adhesion_range = None, gamma = 1.0, resistivity = None, tolerance = 1e-10, max_iterations = 10_000, memory_limit_mib = 1024.0, out = None, allow_unconverged = false, relative_humidity = None, surface_tension = 0.0728, contact_angle_1 = 0.0, contact_angle_2 = 0.0, temperature = 293.15, molar_volume = 1.8e-5, hardness = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn bem_py(
     py: Python<'_>,
@@ -778,6 +784,7 @@ pub fn bem_py(
     contact_angle_2: f64,
     temperature: f64,
     molar_volume: f64,
+    hardness: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
     let targets = cmd::bem::BemTargets::from_options(
         arrays::opt_sequence(pressures, "pressures")?,
@@ -789,6 +796,7 @@ pub fn bem_py(
         adhesion_energy,
         adhesion_range,
     ))?;
+    input.hardness = hardness;
     input.gamma = gamma;
     input.resistivity = resistivity;
     input.tolerance = tolerance;

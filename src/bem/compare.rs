@@ -65,6 +65,9 @@ pub struct CompareInput {
     /// The exponential adhesion of the exact solves, if any (periodic maps
     /// only; the theories stay non-adhesive).
     pub adhesion: Option<Exponential>,
+    /// The hardness `H` (Pa) capping the exact solves' contact pressure
+    /// ([`Problem::with_hardness`]), if any (the theories stay elastic).
+    pub hardness: Option<f64>,
     /// The Yang–Persson factor `gamma` in `[0, 1]` of Persson's mean gap.
     pub gamma: f64,
     /// Resistivity `rho` (Ohm m, both bodies): adds the contact resistances
@@ -185,6 +188,9 @@ pub enum Warning {
     NoGw,
     /// The exact states are adhesive, the theories are not.
     NonAdhesiveTheories,
+    /// The exact states are elastic–perfectly-plastic, the theories are
+    /// elastic.
+    ElasticTheories,
     /// A theory's `quantity` differs from the exact one by more than
     /// [`DIFFERENCE_LIMIT`] at `beyond` of the `states` states; the largest
     /// difference `difference` (relative, `model/exact - 1`) is at state
@@ -282,6 +288,11 @@ impl fmt::Display for Warning {
             Warning::NoGw => f.write_str(
                 "GW: the map's bandwidth leaves McCool's summit heights no variance; no GW \
                  prediction",
+            ),
+            Warning::ElasticTheories => f.write_str(
+                "GW and Persson columns are the elastic theories at the same mean pressure; the \
+                 exact states are elastic-perfectly-plastic (pressure capped at the hardness), so \
+                 their differences include the plasticity",
             ),
             Warning::NonAdhesiveTheories => f.write_str(
                 "GW and Persson columns are the non-adhesive theories at the same mean pressure",
@@ -477,6 +488,9 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
     if let Some(a) = input.adhesion {
         problem = at(Step::Adhesion, problem.with_adhesion(a.energy, a.range))?;
     }
+    if let Some(h) = input.hardness {
+        problem = at(Step::Problem, problem.with_hardness(h))?;
+    }
     let theories = Theories::new(map, input)?;
     let start = Instant::now();
     let mut out = Comparison {
@@ -550,6 +564,9 @@ pub fn compare(map: &HeightMap, input: &CompareInput) -> Result<Comparison, Comp
     }
     if input.adhesion.is_some() {
         out.warnings.push(Warning::NonAdhesiveTheories);
+    }
+    if input.hardness.is_some() {
+        out.warnings.push(Warning::ElasticTheories);
     }
     out.solve_wall_s = start.elapsed().as_secs_f64();
     Ok(out)

@@ -86,7 +86,7 @@ pub(crate) fn solve_load(
         });
         residual = ((big_g + pen) / nf).sqrt() / h_rms;
         if residual < options.tolerance {
-            return Ok(Solution::from_fields(p, g, c, it, residual));
+            return Ok(Solution::from_fields(p, g, f64::INFINITY, it, residual));
         }
         if it == options.max_iterations {
             let s = Solution::from_fields(p, g, c, it, residual);

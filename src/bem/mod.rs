@@ -38,6 +38,7 @@ pub(crate) mod fft;
 mod gap_control;
 pub mod operator;
 mod passes;
+mod plastic;
 pub mod resistance;
 mod roughness;
 
@@ -117,12 +118,28 @@ pub struct Solution {
     /// solve stopped at the iteration cap with
     /// [`Options::allow_unconverged`]).
     pub converged: bool,
+    /// Pixels at the hardness `p = H` (plastic; 0 without a hardness).
+    pub plastic_pixels: usize,
+    /// Plastically displaced volume per nominal area (m): the mean over
+    /// the map of the interpenetration `-g >= 0` the elastic field leaves
+    /// on the plastic pixels, `(1/N) sum_{p = H} (h + c - u)`; times the
+    /// nominal area it is the volume of material displaced (m^3). 0
+    /// without a hardness.
+    pub plastic_volume_per_area: f64,
 }
 
 impl Solution {
-    /// From the pressure solver: contact where `p > 0`; gaps clipped at 0.
-    fn from_fields(p: Vec<f64>, g: Vec<f64>, _approach: f64, it: usize, residual: f64) -> Self {
+    /// From the pressure solver: contact where `p > 0`; gaps clipped at 0;
+    /// plastic where `p >= hardness` (`inf`: none).
+    fn from_fields(p: Vec<f64>, g: Vec<f64>, hardness: f64, it: usize, residual: f64) -> Self {
         let n = p.len() as f64;
+        let (mut plastic_pixels, mut depth) = (0, 0.0);
+        for (pi, gi) in p.iter().zip(&g) {
+            if *pi >= hardness {
+                plastic_pixels += 1;
+                depth += (-gi).max(0.0);
+            }
+        }
         let gap: Vec<f64> = p
             .iter()
             .zip(&g)
@@ -138,6 +155,8 @@ impl Solution {
             iterations: it,
             residual,
             converged: true,
+            plastic_pixels,
+            plastic_volume_per_area: depth / n,
         }
     }
 
@@ -153,12 +172,19 @@ impl Solution {
             iterations: it,
             residual,
             converged: true,
+            plastic_pixels: 0,
+            plastic_volume_per_area: 0.0,
         }
     }
 
     /// Fraction of the pixels in contact.
     pub fn area_fraction(&self) -> f64 {
         self.contact_pixels as f64 / self.gap.len() as f64
+    }
+
+    /// Fraction of the pixels at the hardness (plastic).
+    pub fn plastic_fraction(&self) -> f64 {
+        self.plastic_pixels as f64 / self.gap.len() as f64
     }
 
     /// The contact map (`true` where the gap is 0).
@@ -189,6 +215,7 @@ pub struct Problem {
     p_ref: f64,
     op: HalfSpace,
     adhesion: Option<Exponential>,
+    hardness: Option<f64>,
 }
 
 impl Problem {
@@ -301,6 +328,7 @@ impl Problem {
             p_ref: 0.5 * contact_modulus * slope,
             op,
             adhesion: None,
+            hardness: None,
         })
     }
 
@@ -310,10 +338,14 @@ impl Problem {
     /// # Errors
     /// [`Error::OutOfRange`] naming `adhesion_energy` or `adhesion_range`;
     /// [`Error::Invalid`] named `periodic` on a padded map (the gap solver
-    /// needs the periodic stiffness).
+    /// needs the periodic stiffness), named `hardness` on a problem with a
+    /// hardness (the adhesive solver has no pressure cap).
     pub fn with_adhesion(mut self, energy: f64, range: f64) -> Result<Self> {
         positive("adhesion_energy", energy)?;
         positive("adhesion_range", range)?;
+        if self.hardness.is_some() {
+            return Err(no_plastic_adhesion());
+        }
         if !self.periodic {
             return Err(Error::invalid(
                 "periodic",
@@ -322,6 +354,34 @@ impl Problem {
         }
         self.adhesion = Some(Exponential { energy, range });
         Ok(self)
+    }
+
+    /// The same problem, elastic–perfectly-plastic: the contact pressure
+    /// capped at the hardness `H` (`hardness`, Pa). The pressure is the
+    /// minimiser of the complementary energy `(1/2) p.K p - p.h` over
+    /// `0 <= p <= H` at the imposed mean; on the plastic pixels (`p = H`)
+    /// the rigid surface passes through the elastic one by the
+    /// interpenetration `-g` (the material displaced plastically,
+    /// [`Solution::plastic_volume_per_area`]) (Almqvist, Sahlin, Larsson &
+    /// Glavatskih 2007, Tribol. Int. 40, 574; `docs/physics.md`). A mean
+    /// pressure above `H` has no solution.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `hardness` (finite, > 0);
+    /// [`Error::Invalid`] named `hardness` on a problem with adhesion (the
+    /// adhesive solver has no pressure cap).
+    pub fn with_hardness(mut self, hardness: f64) -> Result<Self> {
+        positive("hardness", hardness)?;
+        if self.adhesion.is_some() {
+            return Err(no_plastic_adhesion());
+        }
+        self.hardness = Some(hardness);
+        Ok(self)
+    }
+
+    /// The hardness `H` (Pa), if the problem is elastic–perfectly-plastic.
+    pub fn hardness(&self) -> Option<f64> {
+        self.hardness
     }
 
     /// Rows, columns.
@@ -367,8 +427,9 @@ impl Problem {
             .fold(f64::NEG_INFINITY, f64::max)
     }
 
-    /// The state at mean pressure `pressure > 0` (Pa), warm-started from
-    /// `warm` (a previous solution) if given.
+    /// The state at mean pressure `pressure > 0` (Pa; at most the hardness
+    /// when there is one), warm-started from `warm` (a previous solution)
+    /// if given.
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `pressure`; [`Error::NoConvergence`].
@@ -379,6 +440,9 @@ impl Problem {
         warm: Option<&Solution>,
     ) -> Result<Solution> {
         positive("pressure", pressure)?;
+        if let Some(h) = self.hardness {
+            crate::error::Allowed::open_closed(0.0, h).check("pressure", pressure)?;
+        }
         if self.adhesion.is_some() {
             // The gap that gives the pressure (P decreases with the gap).
             let start = warm.map_or(self.h_rms, |w| w.mean_gap.max(1e-6 * self.h_rms));
@@ -391,14 +455,21 @@ impl Problem {
                 Ok((v, s))
             });
         }
-        contact::solve_load(
-            &self.op,
-            &self.heights,
-            self.h_rms,
-            pressure,
-            options,
-            warm.map(|w| w.pressure.as_slice()),
-        )
+        let warm = warm.map(|w| w.pressure.as_slice());
+        match self.hardness {
+            Some(hardness) => plastic::solve_load(
+                &self.op,
+                &self.heights,
+                self.h_rms,
+                pressure,
+                hardness,
+                options,
+                warm,
+            ),
+            None => {
+                contact::solve_load(&self.op, &self.heights, self.h_rms, pressure, options, warm)
+            }
+        }
     }
 
     /// The state at mean gap `gap > 0` (m).
@@ -415,7 +486,7 @@ impl Problem {
         if let Some(s) = self.separated(gap, options) {
             return Ok(s);
         }
-        if self.periodic {
+        if self.periodic && self.hardness.is_none() {
             return gap_control::solve_gap(
                 &self.op,
                 &self.heights,
@@ -427,14 +498,16 @@ impl Problem {
                     .filter(|w| w.iter().sum::<f64>() > 0.0),
             );
         }
-        // Padded: the pressure that gives the gap (the gap decreases with p).
-        let start = warm.map_or(1e-2 * self.p_ref, |w| {
+        // Padded or plastic: the pressure that gives the gap (the gap
+        // decreases with p; above the hardness it is the fully plastic 0).
+        let cap = self.hardness.unwrap_or(f64::INFINITY);
+        let start = warm.map_or((1e-2 * self.p_ref).min(0.5 * cap), |w| {
             w.mean_pressure.max(1e-9 * self.p_ref)
         });
         let mut last: Option<Solution> = warm.cloned();
         let tol = (10.0 * options.tolerance).max(1e-12) * self.h_rms;
         monotone_root(start, gap, tol, true, |p| {
-            let s = self.solve_pressure(p, options, last.as_ref())?;
+            let s = self.solve_pressure(p.min(cap), options, last.as_ref())?;
             let v = s.mean_gap;
             last = Some(s.clone());
             Ok((v, s))
@@ -484,6 +557,14 @@ impl Problem {
     pub fn clusters(&self, s: &Solution) -> Vec<Cluster> {
         clusters::clusters(&s.contact(), self.rows, self.cols, self.periodic)
     }
+}
+
+/// The refusal of adhesion with a hardness.
+fn no_plastic_adhesion() -> Error {
+    Error::invalid(
+        "hardness",
+        "the adhesive solver (gap variables) has no pressure cap: give a hardness or an adhesion, not both",
+    )
 }
 
 /// Finds `x > 0` with `f(x) = target` for `f` monotone (decreasing when

@@ -98,6 +98,10 @@ pub struct BemInput {
     pub periodic: bool,
     /// The adhesive interaction, if any.
     pub adhesion: Option<BemAdhesion>,
+    /// Hardness `H` (Pa, finite, > 0): the contact pressure capped at `H`
+    /// (elastic–perfectly-plastic, [`crate::bem::Problem::with_hardness`]);
+    /// mean pressures at most `H`; not with an adhesion.
+    pub hardness: Option<f64>,
     /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap
     /// (default 1).
     pub gamma: f64,
@@ -144,9 +148,43 @@ impl BemInput {
         }
         positive(&param("memory_limit_mib"), self.memory_limit_mib)?;
         match &self.targets {
-            BemTargets::Pressures(p) => positive_values("pressures", p),
-            BemTargets::Gaps(g) => positive_values("gaps", g),
+            BemTargets::Pressures(p) => positive_values("pressures", p)?,
+            BemTargets::Gaps(g) => positive_values("gaps", g)?,
         }
+        self.validate_hardness()
+    }
+
+    /// The hardness: finite and > 0, without adhesion, and no mean
+    /// pressure above it.
+    fn validate_hardness(&self) -> CommandResult<()> {
+        let Some(h) = self.hardness else {
+            return Ok(());
+        };
+        positive(&param("hardness"), h)?;
+        if self.adhesion.is_some() {
+            return Err(Error::invalid(
+                param("hardness"),
+                format!(
+                    "not with {}: the adhesive solver has no pressure cap; give one or the other",
+                    param("adhesion_energy")
+                ),
+            ));
+        }
+        if let BemTargets::Pressures(p) = &self.targets {
+            for (i, &v) in p.iter().enumerate() {
+                if v > h {
+                    return Err(Error::invalid(
+                        param(&format!("pressures[{i}]")),
+                        format!(
+                            "{v:e} Pa is above {} = {h:e} Pa: a mean pressure above the hardness \
+                             has no solution (at the hardness every pixel is plastic)",
+                            param("hardness")
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The defaults with the required inputs.
@@ -158,6 +196,7 @@ impl BemInput {
             targets,
             periodic: false,
             adhesion: None,
+            hardness: None,
             gamma: 1.0,
             resistivity: None,
             tolerance: 1e-10,
@@ -189,6 +228,16 @@ pub struct BemState {
     /// Whether the residual fell below the tolerance (`false` only with
     /// `allow_unconverged`, with a warning).
     pub converged: bool,
+    /// With a hardness: the fraction of the pixels at `p = H` (plastic).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_area_fraction: Option<f64>,
+    /// With a hardness: the plastically displaced volume (m^3), the
+    /// interpenetration on the plastic pixels times the pixel area.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_volume_m3: Option<f64>,
+    /// With a hardness: that volume per nominal area (m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_volume_per_area_m: Option<f64>,
     /// Cluster sizes (pixels) in logarithmic bins.
     pub cluster_sizes_px: Vec<SizeBin>,
     /// Contact resistance, with a resistivity.
@@ -213,6 +262,9 @@ pub struct BemOutput {
     pub cols: usize,
     /// Whether the map was taken as periodic.
     pub periodic: bool,
+    /// The hardness (Pa) capping the contact pressure, if any.
+    #[serde(rename = "hardness_Pa", skip_serializing_if = "Option::is_none")]
+    pub hardness: Option<f64>,
     /// The solver's memory estimate (bytes).
     pub memory_estimate_bytes: usize,
     /// The Yang–Persson factor used.
@@ -255,6 +307,7 @@ impl BemInput {
                 energy: a.energy,
                 range: a.range,
             }),
+            hardness: self.hardness,
             gamma: self.gamma,
             resistivity: self.resistivity,
             options: Options {
@@ -347,6 +400,7 @@ fn named_failure(e: CompareError, args: &BemInput) -> Error {
                 ("pixel_size", "pixel_size"),
                 ("pixel_size_y", "pixel_size_y"),
                 ("contact_modulus", "estar"),
+                ("hardness", "hardness"),
             ],
         ),
         Step::Adhesion => match error.field().map(str::to_string) {
@@ -429,12 +483,21 @@ fn solve_failure(e: Error, t: f64, args: &BemInput) -> Error {
 
 /// The JSON record of a comparison.
 fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> BemOutput {
+    let (dx, dy) = (
+        args.pixel_size,
+        args.pixel_size_y.unwrap_or(args.pixel_size),
+    );
+    let nominal = (map.rows() * map.cols()) as f64 * dx * dy;
+    let plastic = |v: f64| args.hardness.map(|_| v);
     let states = cmp
         .states
         .iter()
         .map(|st| {
             let s = &st.solution;
             BemState {
+                plastic_area_fraction: plastic(s.plastic_fraction()),
+                plastic_volume_m3: plastic(s.plastic_volume_per_area * nominal),
+                plastic_volume_per_area_m: plastic(s.plastic_volume_per_area),
                 pressure: s.mean_pressure,
                 mean_gap_m: s.mean_gap,
                 area_fraction: s.area_fraction(),
@@ -455,6 +518,7 @@ fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> 
         rows: map.rows(),
         cols: map.cols(),
         periodic: args.periodic,
+        hardness: args.hardness,
         memory_estimate_bytes: memory,
         gamma: args.gamma,
         solve_wall_s: cmp.solve_wall_s,
@@ -645,6 +709,24 @@ fn print_table(o: &BemOutput) -> String {
     }
     if let Some(w) = &o.capillary {
         t.push_str(&super::wet_map::text(w));
+    }
+    if let Some(h) = o.hardness {
+        let _ = writeln!(
+            t,
+            "elastic-perfectly-plastic, hardness {h:.5e} Pa: {:>12} {:>16} {:>16}",
+            "plastic A/A0", "volume (m^3)", "per area (m)"
+        );
+        for (k, s) in o.states.iter().enumerate() {
+            let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.5e}"));
+            let _ = writeln!(
+                t,
+                "  state {k}, p = {:.5e} Pa: {:>12} {:>16} {:>16}",
+                s.pressure,
+                f(s.plastic_area_fraction),
+                f(s.plastic_volume_m3),
+                f(s.plastic_volume_per_area_m)
+            );
+        }
     }
     for w in &o.warnings {
         let _ = writeln!(t, "warning: {w}");

@@ -322,6 +322,7 @@ fn model_error(
             control: Control::Pressure,
             targets: MODEL_ERROR_LOADS.iter().map(|l| l * estar).collect(),
             adhesion: None,
+            hardness: None,
             gamma: 1.0,
             resistivity: None,
             options,

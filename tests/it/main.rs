@@ -16,6 +16,7 @@ mod common;
 mod axisym;
 mod bem;
 mod bem_honest;
+mod bem_plastic;
 mod capillary;
 mod capillary_maps;
 mod chart_rules;

@@ -69,6 +69,7 @@ fn report(name: &str, map: &HeightMap, dx: f64, periodic: bool, estar: f64, load
         control: Control::Pressure,
         targets: loads.iter().map(|l| l * estar).collect(),
         adhesion: None,
+        hardness: None,
         gamma: 1.0,
         resistivity: None,
         options: Options::default(),

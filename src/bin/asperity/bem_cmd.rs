@@ -47,6 +47,12 @@ pub struct BemArgs {
     /// Range rho (m) of the exponential interaction.
     #[arg(long, allow_hyphen_values = true, requires = "adhesion_energy")]
     adhesion_range: Option<f64>,
+    /// Hardness H (Pa, > 0): the contact pressure is capped at H
+    /// (elastic-perfectly-plastic); prints the plastic area fraction and the
+    /// plastically displaced volume. Mean pressures up to H; not with
+    /// adhesion.
+    #[arg(long, allow_hyphen_values = true)]
+    hardness: Option<f64>,
     /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap.
     #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     gamma: f64,
@@ -129,6 +135,7 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     let mut input = BemInput::new(args.read.pixel_size.unwrap_or(1.0), args.estar, targets);
     input.periodic = args.periodic;
     input.adhesion = BemAdhesion::from_options(args.adhesion_energy, args.adhesion_range)?;
+    input.hardness = args.hardness;
     input.gamma = args.gamma;
     input.resistivity = args.resistivity;
     input.tolerance = args.tolerance;
