@@ -151,7 +151,38 @@ impl BemInput {
             BemTargets::Pressures(p) => positive_values("pressures", p)?,
             BemTargets::Gaps(g) => positive_values("gaps", g)?,
         }
+        self.validate_scales()?;
         self.validate_hardness()
+    }
+
+    /// Physical scales: no mean pressure above E* (strains of order one,
+    /// outside the linear elasticity of the half-space); a work of adhesion
+    /// up to 10 J/m^2 (twice the surface energy of the most cohesive
+    /// metals) and a range from 0.01 nm to 1 um (surface forces to
+    /// capillary and electrostatic tails). Beyond them the solver ran to
+    /// its iteration cap (exit 1) or the criteria overflowed to null.
+    fn validate_scales(&self) -> CommandResult<()> {
+        if let BemTargets::Pressures(p) = &self.targets {
+            if let Some((i, v)) = p.iter().enumerate().find(|(_, v)| **v > self.estar) {
+                return Err(Error::invalid(
+                    param(&format!("pressures[{i}]")),
+                    format!(
+                        "{v:e} Pa is above {} = {:e} Pa: a mean pressure above the contact \
+                         modulus means strains of order one, outside the linear elasticity the \
+                         half-space solution assumes; allowed (0, {:e}] Pa",
+                        param("estar"),
+                        self.estar,
+                        self.estar
+                    ),
+                ));
+            }
+        }
+        if let Some(a) = self.adhesion {
+            crate::error::Allowed::open_closed(0.0, 10.0)
+                .check(&param("adhesion_energy"), a.energy)?;
+            crate::error::Allowed::closed(1e-11, 1e-6).check(&param("adhesion_range"), a.range)?;
+        }
+        Ok(())
     }
 
     /// The hardness: finite and > 0, without adhesion, and no mean
