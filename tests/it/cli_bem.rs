@@ -32,23 +32,26 @@ fn has_keys(v: &Value, keys: &[&str]) {
     }
 }
 
-const PERSSON: [&str; 15] = [
-    "persson",
-    "--hurst",
-    "0.8",
-    "--q-long",
-    "1e5",
-    "--q-roll",
-    "4e5",
-    "--q-short",
-    "4e8",
-    "--h-rms",
-    "1e-8",
-    "--estar",
-    "1e9",
-    "--pressures",
-    "1e4,1e6",
-];
+const PERSSON: [&str; 15] = {
+    let s = crate::common::cli::PERSSON_SPECTRUM;
+    [
+        s[0],
+        s[1],
+        s[2],
+        s[3],
+        s[4],
+        s[5],
+        s[6],
+        s[7],
+        s[8],
+        s[9],
+        s[10],
+        s[11],
+        s[12],
+        "--pressures",
+        "1e4,1e6",
+    ]
+};
 
 #[test]
 fn persson_contract() {

@@ -168,27 +168,18 @@ fn cli_prints_the_criteria() {
     let spec = &reference()["spectrum"];
     let v: Value = serde_json::from_str(
         run(&[
-            "persson",
-            "--hurst",
-            "0.8",
-            "--q-long",
-            "1e5",
-            "--q-roll",
-            "4e5",
-            "--q-short",
-            "4e8",
-            "--h-rms",
-            "1e-8",
-            "--estar",
-            "1e9",
-            "--pressures",
-            "1e6",
-            "--adhesion-energy",
-            "0.05",
-            "--adhesion-range",
-            "2e-9",
-            "--json",
-        ])
+            &crate::common::cli::PERSSON_SPECTRUM[..],
+            &[
+                "--pressures",
+                "1e6",
+                "--adhesion-energy",
+                "0.05",
+                "--adhesion-range",
+                "2e-9",
+                "--json",
+            ],
+        ]
+        .concat())
         .trim(),
     )
     .unwrap();

@@ -106,3 +106,22 @@ pub fn run_within(mut cmd: Command, limit: f64) -> Outcome {
         stderr: String::from_utf8_lossy(&t_err.join().unwrap()).into_owned(),
     }
 }
+
+/// `asperity persson` on the self-affine spectrum the tests share (Hurst
+/// 0.8, q 1e5 / 4e5 / 4e8 1/m, h_rms 10 nm, E* 1 GPa), before its
+/// pressures.
+pub const PERSSON_SPECTRUM: [&str; 13] = [
+    "persson",
+    "--hurst",
+    "0.8",
+    "--q-long",
+    "1e5",
+    "--q-roll",
+    "4e5",
+    "--q-short",
+    "4e8",
+    "--h-rms",
+    "1e-8",
+    "--estar",
+    "1e9",
+];
