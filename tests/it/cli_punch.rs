@@ -315,3 +315,38 @@ fn punch_fit_bad_input() {
         2,
     );
 }
+
+/// `--svg` draws the cycle's chart, and asks for the cycle it spans.
+#[test]
+fn svg_draws_the_cycle_and_needs_one() {
+    let dir = std::env::temp_dir().join(format!("asperity-cli-punch-svg-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("punch.svg");
+    let base = [
+        "punch",
+        "--estar",
+        "1",
+        "--w",
+        "0.008",
+        "--radius",
+        "1",
+        "--amplitude",
+        "0.1",
+        "--wavelength",
+        "0.03",
+    ];
+    let mut with_cycle = base.to_vec();
+    with_cycle.extend(["--cycle=-0.1:0.1", "--svg", svg.to_str().unwrap()]);
+    let (code, _, err) = run(&with_cycle);
+    assert_eq!(code, 0, "{err}");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        text.starts_with("<svg") && text.contains("<polyline"),
+        "{text:.200}"
+    );
+    let mut without = base.to_vec();
+    without.extend(["--svg", svg.to_str().unwrap()]);
+    let (code, _, err) = run(&without);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--svg") && err.contains("--cycle"), "{err}");
+}

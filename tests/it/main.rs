@@ -37,6 +37,8 @@ mod cli_surface;
 mod cli_sweep;
 mod cos_vs_maugis;
 mod docs;
+mod docs_figures;
+mod docs_tables;
 mod electrical;
 mod fuller_tabor;
 mod gaussian_fn;

@@ -86,3 +86,113 @@ fn the_stiction_map_is_what_its_command_writes() {
         "README.md's stiction map differs from what its command writes; paste:\n{table}"
     );
 }
+
+/// `x` to two significant digits, as the README prints them (0.23, 5.1).
+fn two_digits(x: f64) -> String {
+    let decimals = (1 - x.abs().log10().floor() as i32).max(0) as usize;
+    format!("{x:.decimals$}")
+}
+
+/// The README's humid-switch table: each row is `rf-mems-switch-humid.toml`
+/// at that relative humidity (the dry row: `rf-mems-switch.toml`), run with
+/// `--json`: the Kelvin radius and meniscus height of the plan, the
+/// switch's pull-off (`stiction.pull_off_N`, uN to one decimal), its
+/// sticking probability, the GW curve's pull-off (`pull_off_load_N`), and
+/// "flooded" exactly where the run warns that the menisci merge.
+#[test]
+fn the_humidity_table_is_what_the_humid_scene_gives() {
+    let readme = readme();
+    let rows: Vec<&str> = readme
+        .lines()
+        .skip_while(|l| !l.starts_with("| RH | r_K (nm) |"))
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .collect();
+    assert_eq!(rows.len(), 4, "dry and three humidities: {rows:?}");
+    let humid = crate::common::cli::example("rf-mems-switch-humid.toml");
+    let sigma = 5e-9;
+    assert!(humid.contains("sigma = 5e-9 "), "the scene's sigma changed");
+    let dir = tmp("humidity");
+    let mut wrong = Vec::new();
+    for row in rows {
+        let cells: Vec<&str> = row.split('|').map(str::trim).collect();
+        let (rh, scene) = match cells[1] {
+            "dry" => ("dry", crate::common::cli::example("rf-mems-switch.toml")),
+            rh => {
+                let line = "relative_humidity = 0.5 ";
+                assert!(humid.contains(line), "the scene's humidity line changed");
+                (
+                    rh,
+                    humid.replace(line, &format!("relative_humidity = {rh} ")),
+                )
+            }
+        };
+        let path = dir.join(format!("{rh}.toml"));
+        std::fs::write(&path, scene).unwrap();
+        let out = dir.join(format!("out-{rh}"));
+        let (code, stdout, err) = run(
+            &[
+                "run",
+                path.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--json",
+            ],
+            &dir,
+        );
+        assert_eq!(code, 0, "{rh}: {err}");
+        let s: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        let switch = -s["stiction"]["pull_off_N"].as_f64().unwrap() * 1e6;
+        let probability = s["stiction"]["sticks_probability"].as_f64().unwrap();
+        let gw = -s["pull_off_load_N"].as_f64().unwrap() * 1e6;
+        let probability = format!("{}", (probability * 100.0).round() / 100.0);
+        let expected = if rh == "dry" {
+            vec![
+                "dry".into(),
+                "-".into(),
+                "-".into(),
+                "-".into(),
+                format!("{switch:.1}"),
+                probability,
+                format!("about {gw:.0}"),
+            ]
+        } else {
+            let plan = s["plan"].to_string();
+            let number_after = |key: &str| -> f64 {
+                let at = plan
+                    .find(key)
+                    .unwrap_or_else(|| panic!("{rh}: no {key} in {plan}"));
+                let rest = &plan[at + key.len()..];
+                rest.split_whitespace().next().unwrap().parse().unwrap()
+            };
+            let (r_k, h_m) = (
+                number_after("Kelvin radius "),
+                number_after("meniscus height "),
+            );
+            let merged = s["warnings"].to_string().contains("menisci merge");
+            assert_eq!(
+                cells[4].starts_with("flooded"),
+                merged,
+                "{rh}: the regime cell {:?} against the run's warnings",
+                cells[4]
+            );
+            vec![
+                rh.into(),
+                two_digits(r_k * 1e9),
+                two_digits(h_m / sigma),
+                cells[4].into(),
+                format!("{switch:.1}"),
+                probability,
+                format!("{gw:.1}"),
+            ]
+        };
+        if cells[1..8] != expected.iter().map(String::as_str).collect::<Vec<_>>()[..] {
+            wrong.push(format!("| {} |", expected.join(" | ")));
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "README.md's humidity table differs from the runs; rows to paste:\n{}",
+        wrong.join("\n")
+    );
+}

@@ -9,7 +9,8 @@
 //! roll-off at 4 q_l, q_s at a 4-pixel wavelength, slope 0.1, seed 1).
 //!
 //! `cargo run --release --example model_error_maps` (prints a Markdown
-//! table; docs/physics.md quotes it).
+//! table; docs/physics.md quotes it, and `tests/it/docs_tables.rs` runs
+//! [`rows`] to hold the quote to it, the CPU column aside).
 use asperity::bem::compare::{compare, CompareInput, Control};
 use asperity::bem::Options;
 use asperity::gw::GwOnMoments;
@@ -60,7 +61,16 @@ fn pct(x: f64) -> String {
     format!("{:+.1} %", 100.0 * x)
 }
 
-fn report(name: &str, map: &HeightMap, dx: f64, periodic: bool, estar: f64, loads: &[f64]) {
+/// The table's rows for one map, each state's row a Markdown line.
+fn report(
+    name: &str,
+    map: &HeightMap,
+    dx: f64,
+    periodic: bool,
+    estar: f64,
+    loads: &[f64],
+) -> Vec<String> {
+    let mut rows = Vec::new();
     let input = CompareInput {
         pixel_size: dx,
         pixel_size_y: None,
@@ -111,7 +121,7 @@ fn report(name: &str, map: &HeightMap, dx: f64, periodic: bool, estar: f64, load
             p,
         );
         let o = |x: Option<f64>| x.map_or("-".into(), pct);
-        println!(
+        rows.push(format!(
             "| {name} | {:.0e} | {:.4} | {} | {} | {} | {} | {} | {} | {} |",
             p / estar,
             s.solution.area_fraction(),
@@ -126,34 +136,47 @@ fn report(name: &str, map: &HeightMap, dx: f64, periodic: bool, estar: f64, load
             } else {
                 String::new()
             }
-        );
+        ));
     }
     for w in &cmp.warnings {
         eprintln!("{name}: {w}");
     }
+    rows
 }
 
-fn main() {
-    println!(
-        "| map | p/E* | exact A/A0 | GW area | GW load at the same gap | GW gap | Persson area | \
-         Persson load at the same gap | Persson gap | exact solves |"
-    );
-    println!("|---|---|---|---|---|---|---|---|---|---|");
+/// The table's header and separator lines.
+pub const HEADER: &str =
+    "| map | p/E* | exact A/A0 | GW area | GW load at the same gap | GW gap | \
+     Persson area | Persson load at the same gap | Persson gap | exact solves |\n\
+     |---|---|---|---|---|---|---|---|---|---|";
+
+/// Every row of the table, map by map (paths from the repository root).
+pub fn rows(root: &std::path::Path) -> Vec<String> {
+    let mut rows = Vec::new();
     let measured =
-        npy::parse(&std::fs::read("examples/data/measured-topography.npy").unwrap()).unwrap();
+        npy::parse(&std::fs::read(root.join("examples/data/measured-topography.npy")).unwrap())
+            .unwrap();
     // gold on gold, as examples/scenes/measured-topography.toml
     let estar = 79e9 / (2.0 * (1.0 - 0.42 * 0.42));
-    report(
+    rows.extend(report(
         "measured 160^2 (padded)",
         &measured,
         50e-9,
         false,
         estar,
         &[1e-4, 3e-4, 1e-3],
-    );
+    ));
     let loads = [1e-3, 3e-3, 1e-2];
-    let sa256 = npy::parse(&std::fs::read("examples/data/selfaffine-256.npy").unwrap()).unwrap();
-    report("self-affine 256^2", &sa256, 1e-4 / 256.0, true, 1e9, &loads);
+    let sa256 =
+        npy::parse(&std::fs::read(root.join("examples/data/selfaffine-256.npy")).unwrap()).unwrap();
+    rows.extend(report(
+        "self-affine 256^2",
+        &sa256,
+        1e-4 / 256.0,
+        true,
+        1e9,
+        &loads,
+    ));
     let n = 512;
     let dx = 1e-8;
     let ql = 2.0 * PI / (n as f64 * dx);
@@ -166,5 +189,14 @@ fn main() {
     )
     .unwrap();
     let sa512 = random_phase_map(&spectrum, n, n, dx, 1).unwrap();
-    report("self-affine 512^2", &sa512, dx, true, 1e9, &loads);
+    rows.extend(report("self-affine 512^2", &sa512, dx, true, 1e9, &loads));
+    rows
+}
+
+#[allow(dead_code)] // the tests use `rows` alone
+fn main() {
+    println!("{HEADER}");
+    for row in rows(std::path::Path::new(".")) {
+        println!("{row}");
+    }
 }

@@ -35,6 +35,10 @@ pub struct PunchArgs {
     /// A displacement-controlled cycle HMIN:HMAX (m) whose energy loss is printed.
     #[arg(long, allow_hyphen_values = true)]
     cycle: Option<String>,
+    /// Draw load against depth over the --cycle (exact curve, envelopes, loading and
+    /// unloading paths) into this SVG file.
+    #[arg(long, value_name = "FILE.svg")]
+    svg: Option<PathBuf>,
     /// Print one JSON object instead of tables.
     #[arg(long)]
     json: bool,
@@ -75,7 +79,30 @@ pub fn run(args: &PunchArgs) -> crate::CliResult {
         depths: crate::list::parse_opt("--depths", args.depths.as_deref())?,
         cycle: args.cycle.as_deref().map(parse_cycle).transpose()?,
     })?;
+    if let Some(svg) = &args.svg {
+        draw(args, svg)?;
+    }
     crate::print_output(&out, &out.text, args.json)
+}
+
+/// The chart of `--svg`: the cycle's paths between the envelopes (the
+/// punch and the cycle were checked by [`punch`] already).
+fn draw(args: &PunchArgs, svg: &std::path::Path) -> crate::CliResult {
+    let Some((lo, hi)) = args.cycle.as_deref().map(parse_cycle).transpose()? else {
+        return Err(CliError::Usage(
+            "--svg: the chart spans a cycle: give --cycle HMIN:HMAX (m) too".into(),
+        ));
+    };
+    let p = asperity::punch::WavyPunch::new(
+        args.estar,
+        args.w,
+        args.radius,
+        args.amplitude,
+        args.wavelength,
+    )?;
+    asperity::study::plot::punch::PunchChart::cycle(&p, lo, hi)?.write_svg(svg, 900, 640)?;
+    eprintln!("wrote {}", svg.display());
+    Ok(())
 }
 
 pub fn run_fit(args: &PunchFitArgs) -> crate::CliResult {
