@@ -72,3 +72,125 @@ fn the_rough_sphere_regime_map_is_what_its_example_prints() {
         printed.join("\n")
     );
 }
+
+/// `x` as Python's `%.{p}g` prints it (the table's digits).
+fn g(x: f64, p: usize) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let sci = format!("{:.*e}", p - 1, x);
+    let (mantissa, exp) = sci.split_once('e').unwrap();
+    let exp: i32 = exp.parse().unwrap();
+    let trim = |s: &str| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s.to_string()
+        }
+    };
+    if exp < -4 || exp >= p as i32 {
+        let sign = if exp < 0 { '-' } else { '+' };
+        format!("{}e{sign}{:02}", trim(mantissa), exp.abs())
+    } else {
+        let decimals = (p as i32 - 1 - exp).max(0) as usize;
+        trim(&format!("{x:.decimals$}"))
+    }
+}
+
+/// docs/physics.md's "Model error on a rough surface": `mems-gold.toml` at
+/// five `sigma/z0` with each law, as the table's caption says (its
+/// regenerating command is this test: on a difference it prints the rows).
+#[test]
+fn the_pull_off_table_of_the_laws_is_what_the_scenes_give() {
+    use crate::common::cli::{example, run, tmp};
+    let physics = std::fs::read_to_string(root().join("docs/physics.md")).unwrap();
+    let header = "| sigma/z0 | calibrated (LJ) P_c [uN] |";
+    let at = physics.find(header).expect("the table's header changed");
+    let quoted: Vec<&str> = physics[at..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .collect();
+    let base = example("mems-gold.toml");
+    for key in [
+        "kind = \"auto\"",
+        "sigma = 5e-9 ",
+        "closest_separation = 5e-9 ",
+    ] {
+        assert!(base.contains(key), "mems-gold.toml changed: {key}");
+    }
+    let dir = tmp("pull-off-laws");
+    let scene = |sigma: f64, law: &str, seeds: u32| -> serde_json::Value {
+        let text = base
+            .replacen("kind = \"auto\"", &format!("kind = \"{law}\""), 1)
+            .replacen("sigma = 5e-9 ", &format!("sigma = {sigma:e} "), 1)
+            .replacen(
+                "closest_separation = 5e-9 ",
+                &format!("closest_separation = {sigma:e} "),
+                1,
+            )
+            + &format!("\n[montecarlo]\nseeds = {seeds}\n");
+        let path = dir.join(format!("{law}-{sigma:e}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let out = dir.join(format!("out-{law}-{sigma:e}"));
+        let (code, stdout, err) = run(
+            &[
+                "run",
+                path.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--json",
+            ],
+            &dir,
+        );
+        assert_eq!(code, 0, "{law} at sigma {sigma:e}: {err}");
+        serde_json::from_str(&stdout).unwrap()
+    };
+    let z0 = 0.3e-9;
+    let mut printed = Vec::new();
+    for sigma in [0.3e-9, 1e-9, 3e-9, 5e-9, 10e-9] {
+        let cal = scene(sigma, "calibrated", 100);
+        let mut row = vec![
+            g(sigma / z0, 3),
+            g(cal["pull_off_load_N"].as_f64().unwrap() * 1e6, 4),
+        ];
+        for law in ["maugis", "jkr", "dmt"] {
+            let v = scene(sigma, law, 2);
+            let shown = v["pull_off_load_N"]
+                .as_f64()
+                .map_or("none".to_string(), |p| g(p * 1e6, 4));
+            row.push(match v["model_error"]["pull_off"].as_f64() {
+                Some(e) => format!("{shown} ({:+.0} %)", 100.0 * e),
+                None => shown,
+            });
+        }
+        let pop = &cal["pull_off_population"];
+        let f = |k: &str| pop[k].as_f64().unwrap_or(f64::NAN);
+        row.push(format!(
+            "{} +- {}",
+            g(f("mean_N") * 1e6, 4),
+            g(f("mean_se_N") * 1e6, 2)
+        ));
+        row.push(g(f("p05_N") * 1e6, 4));
+        row.push(g(f("carriers"), 3));
+        printed.push(format!("| {} |", row.join(" | ")));
+    }
+    assert_eq!(
+        quoted,
+        printed,
+        "docs/physics.md's pull-off table differs from the runs; paste:\n{}",
+        printed.join("\n")
+    );
+}
+
+#[test]
+fn python_g_formatting() {
+    assert_eq!(g(-21540.4, 4), "-2.154e+04");
+    assert_eq!(g(-7989.2, 4), "-7989");
+    assert_eq!(g(-0.02143, 4), "-0.02143");
+    assert_eq!(g(1.0, 3), "1");
+    assert_eq!(g(10.0 / 0.3, 3), "33.3");
+    assert_eq!(g(6.4, 2), "6.4");
+    assert_eq!(g(8890.0, 3), "8.89e+03");
+    assert_eq!(g(0.0799, 3), "0.0799");
+}
