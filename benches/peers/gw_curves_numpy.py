@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Numpy peers of the two GW curves of issue 28, side by side with asperity.
+"""Numpy peers of the two GW curves of the curve benchmark, side by side with asperity.
 
 Same work as `cargo run --release --example gw_peer_curves -- CASE RTOL`
 (which this script runs, once per tolerance), both answers checked against

@@ -6,8 +6,8 @@
 # pull-off and the zero-load radius change by a factor 3.7-4.4 per doubling,
 # docs/performance.md), then writes sphere_converged.json.
 #   cargo build --release && sh tests/data/sphere_converged.sh
-# The mu = 10, 30 and 100 lines (jump-out, issue 11 item 5; large mu, issue
-# 12) are from solver version 5 through the library, since the CLI refuses
+# The mu = 10, 30 and 100 lines (jump-out; large mu)
+# are from solver version 5 through the library, since the CLI refuses
 # resolution 8 there by its 120 s estimate (mu = 10, 30, 100 took 18 s,
 # 113 s and ~4 min):
 #   cargo run --release --example sphere_large_mu -- --raw --res 4,8 10 30 100

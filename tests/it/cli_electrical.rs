@@ -123,7 +123,7 @@ fn spots_bad_input_exits_2_naming_the_field() {
         "radius_m",
     );
     // A file that cannot be read is bad input naming it, as for scenes and
-    // maps (issue 24's CLI fuzz; it was exit 1).
+    // maps (found by the CLI fuzz; it was exit 1).
     let (code, _, err) = run(&["spots", "/nonexistent/spots.csv", "--resistivity", "1e-8"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("/nonexistent/spots.csv"), "{err}");

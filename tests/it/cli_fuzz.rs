@@ -1,4 +1,4 @@
-//! CLI fuzz (issue 24, "done when"): every subcommand of `asperity --help`
+//! CLI fuzz: every subcommand of `asperity --help`
 //! with each numeric flag set to 0, -1, NaN, +-inf, 1e300, 1e-300, a huge
 //! count and text, and every file argument given an empty file, binary
 //! garbage, a truncated or wrong-dtype `.npy`, a CSV with text, a CSV with a
@@ -549,7 +549,7 @@ fn judge(case: &Case, o: &Outcome) -> Option<String> {
                 match nulls(&o.stdout) {
                     None => return Some(format!("exit 0, stdout not JSON: {}", o.stdout)),
                     // Holm's relation gives no temperature once molten
-                    // (issue 24 item 2): that null is the answer.
+                    // (a melted contact): that null is the answer.
                     // Nulls a warning explains are answers too.
                     Some(n)
                         if n > base

@@ -307,7 +307,7 @@ fn punch_fit_bad_input() {
             2,
         );
     }
-    // A file that cannot be read is bad input naming it (issue 24's CLI
+    // A file that cannot be read is bad input naming it (found by the CLI
     // fuzz; it was exit 1).
     one_line_error(
         &["punch-fit", "/nonexistent/data.csv", "--radius", "0.25"],

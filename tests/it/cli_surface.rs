@@ -45,7 +45,7 @@ fn json_has_exactly_the_contract_keys() {
         "m0",
         "m2",
         "m4",
-        // Issue 24 item 17: slopes and curvature beside the moments.
+        // slopes and curvature beside the moments.
         "rms_slope",
         "rms_gradient",
         "rms_curvature_per_m",

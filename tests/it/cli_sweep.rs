@@ -349,7 +349,7 @@ fn a_sweep_where_every_point_fails_exits_1() {
         env!("CARGO_MANIFEST_DIR")
     );
     // Every value out of the field's own range is refused before any
-    // point runs (issue 24's CLI fuzz): exit 2, nothing written.
+    // point runs (found by the CLI fuzz): exit 2, nothing written.
     let o = bin()
         .args(["sweep", &scene, "--vary", "materials.nu1=0.6:0.7:2"])
         .args(["--out", "o"])

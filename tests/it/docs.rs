@@ -749,6 +749,21 @@ fn code_and_docs_cite_no_issue_or_planning_document() {
     files.extend(files_under("python/src", &[".rs"]));
     files.extend(files_under("python/asperity", &[".py", ".pyi"]));
     files.extend(["README.md".to_string(), "python/README.md".to_string()]);
+    // The tests, tools, benches and examples too (this file quotes
+    // citations on purpose, below).
+    for (dir, exts) in [
+        ("tests", &[".rs", ".py", ".sh"][..]),
+        ("tools", &[".rs", ".py", ".md", ".sh"][..]),
+        ("benches", &[".rs", ".py"][..]),
+        ("examples", &[".rs"][..]),
+        ("python/tests", &[".py"][..]),
+    ] {
+        files.extend(
+            files_under(dir, exts)
+                .into_iter()
+                .filter(|f| f != "tests/it/docs.rs"),
+        );
+    }
     let mut found = Vec::new();
     for f in &files {
         for (n, line) in planning_citations(&read(f)) {

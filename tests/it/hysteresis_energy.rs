@@ -100,7 +100,7 @@ fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// Issue 24 item 7: `mems-gold.toml` with sigma = 1 nm, w = 0.033 J/m^2
+/// `mems-gold.toml` with sigma = 1 nm, w = 0.033 J/m^2
 /// (lambda 0.301: jump-in onto the non-contact branch), Maugis–Dugdale,
 /// closest separation 0.5 nm, start 6 nm, rtol 1e-6 reported 1.69725e-16 J
 /// against the exact 1.69423e-16 J (1.8e-3 off): the retracting summits'

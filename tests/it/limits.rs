@@ -1,4 +1,4 @@
-//! Limits with estimates (issue 24, item 10): work beyond a documented
+//! Limits with estimates: work beyond a documented
 //! bound is refused before it starts, naming the input and giving the
 //! estimate; long work says so on stderr. Each case failed on the code
 //! before its fix (ran for minutes, or failed after many seconds).
@@ -217,7 +217,7 @@ fn a_sweep_estimates_its_cost_after_the_first_point() {
     assert!(o.stdout.is_empty(), "{}", o.stdout);
 }
 
-/// Extreme `punch` inputs (issue 24, item 13) blamed --depths, the flag
+/// Extreme `punch` inputs blamed --depths, the flag
 /// the user did not get wrong (or did not write), after a long scan: the
 /// scan's grid is estimated before it starts and the input that sets it is
 /// named, at once.

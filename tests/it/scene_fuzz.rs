@@ -84,7 +84,7 @@ fn scenes() -> Vec<(String, String)> {
         "distribution = \"truncated-gaussian\"\ntruncation = 3.0",
         1,
     );
-    // The shaped profiles and electrical keys no example sets (issue 24:
+    // The shaped profiles and electrical keys no example sets (found by the fuzz:
     // the newer keys are fuzzed too): a power law, a true sphere and a
     // tabulated profile on the conical example; two metals and a hardness
     // on the switch example.

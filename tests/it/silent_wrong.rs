@@ -1,4 +1,4 @@
-//! Never silently wrong (issue 24): each case here was an exit-0 result that
+//! Never silently wrong: each case here was an exit-0 result that
 //! was wrong or meaningless without a word; now the value is right, or it
 //! comes with a warning, or the input is refused (exit 2) naming the flag or
 //! field and its range.
@@ -6,7 +6,7 @@ use crate::common::cli;
 use cli::{bin, example, json, run, tmp};
 use std::path::Path;
 
-/// Item 1: every listed load is met to the scene's `rtol` (before: 2.48e-6,
+/// Every listed load is met to the scene's `rtol` (before: 2.48e-6,
 /// 1.17e-5, 9.76e-5 N for soft-jkr, -4.07e-7 N for conical-summits' 1e-6 N,
 /// 1.7 % off for dmt-stiff).
 #[test]
@@ -55,7 +55,7 @@ fn edited(name: &str, edits: &[(&str, &str)]) -> String {
     lines.join("\n")
 }
 
-/// Item 2: Holm's relation ends where the metal melts. `heating --voltage
+/// Holm's relation ends where the metal melts. `heating --voltage
 /// 10` printed 31,991 K; now no temperature, `condition = molten` and a
 /// warning; softening is warned about; the inverse stops at melting.
 #[test]
@@ -128,7 +128,7 @@ fn no_temperature_above_melting_from_heating() {
     }
 }
 
-/// Item 2 in scenes: `film_resistance = 1e-6` gave 7.55e9 K with no word;
+/// In scenes: `film_resistance = 1e-6` gave 7.55e9 K with no word;
 /// now the summary's temperature is null and a warning names the current.
 #[test]
 fn no_temperature_above_melting_in_scenes() {
@@ -207,7 +207,7 @@ fn no_temperature_above_melting_in_scenes() {
     }
 }
 
-/// Item 3: two spots of 1 um whose centres are 0.1 um apart gave 0.0449
+/// Two spots of 1 um whose centres are 0.1 um apart gave 0.0449
 /// Ohm at exit 0 (3.7 times one spot); now exit 2 naming the pair.
 #[test]
 fn overlapping_spots_are_refused_naming_the_pair() {
@@ -242,8 +242,8 @@ fn write_map(dir: &Path, name: &str, f: impl Fn(usize, usize) -> f64) {
     std::fs::write(dir.join(name), text.join("\n") + "\n").unwrap();
 }
 
-/// Item 4: a map whose relief is roundoff (a tilted plane: 9.9e-22 m rms
-/// after the plane fit) was characterised; now refused as flat. Item 5:
+/// A map whose relief is roundoff (a tilted plane: 9.9e-22 m rms
+/// after the plane fit) was characterised; now refused as flat. And:
 /// `--pixel-size 1e-300` and heights x 1e300 gave nulls at exit 0.
 #[test]
 fn flat_maps_and_absurd_scales_are_refused() {
@@ -282,7 +282,7 @@ fn flat_maps_and_absurd_scales_are_refused() {
     );
 }
 
-/// Item 5: nulls at exit 0 (`F: null`, `load_N: null`) are now exit 2
+/// Nulls at exit 0 (`F: null`, `load_N: null`) are now exit 2
 /// naming the argument and its range or the overflow.
 #[test]
 fn overflowing_arguments_exit_2_naming_them() {
@@ -357,7 +357,7 @@ fn overflowing_arguments_exit_2_naming_them() {
     assert!(!out.contains("null"), "{out}");
 }
 
-/// Item 6: `shape --w 1e-300` gave a positive pull-off (4.7e-306 N: the
+/// `shape --w 1e-300` gave a positive pull-off (4.7e-306 N: the
 /// adhesive term underflowed); now -3/2 pi w R to the subnormal range.
 #[test]
 fn a_tiny_work_of_adhesion_keeps_a_tensile_pull_off() {
@@ -387,7 +387,7 @@ fn a_tiny_work_of_adhesion_keeps_a_tensile_pull_off() {
     }
 }
 
-/// Item 17: the rms slope and curvature users compare with other tools,
+/// The rms slope and curvature users compare with other tools,
 /// with the surface's rms gradient beside the profile slope.
 #[test]
 fn surface_prints_rms_slope_gradient_and_curvature() {
@@ -412,7 +412,7 @@ fn surface_prints_rms_slope_gradient_and_curvature() {
     );
 }
 
-/// Item 16: `--shard-from-env` reads the Slurm array variables; a stepped
+/// `--shard-from-env` reads the Slurm array variables; a stepped
 /// array is refused before any point runs (exit 2 naming the flag).
 #[test]
 fn shard_from_env_refuses_stepped_arrays() {
@@ -445,7 +445,7 @@ fn shard_from_env_refuses_stepped_arrays() {
     assert!(!dir.join("s/results.csv").exists());
 }
 
-/// Item 14: a misspelt or fractional-integer `--vary` path ran every point,
+/// A misspelt or fractional-integer `--vary` path ran every point,
 /// then exited 1; now exit 2 naming the path before the first point.
 #[test]
 fn vary_paths_are_checked_before_the_first_point() {

@@ -1,4 +1,4 @@
-//! Never silently wrong, round two (issue 24, items 7-13, 15): messages
+//! Never silently wrong, round two: messages
 //! that name the key the user wrote, plastic fits beyond their range,
 //! extreme shaped profiles, the calibration cache, leftovers and strict
 //! files. Each case failed on the code before its fix.
@@ -27,7 +27,7 @@ fn run_scene(dir: &Path, name: &str, scene: &str) -> (i32, String) {
     (code, err)
 }
 
-/// Item 13: listed states were blamed on `program.max_load` /
+/// Listed states were blamed on `program.max_load` /
 /// `program.closest_separation`, keys the scene does not have.
 #[test]
 fn listed_states_are_blamed_by_their_own_key() {
@@ -55,7 +55,7 @@ fn listed_states_are_blamed_by_their_own_key() {
     assert!(err.contains("error: program.separations:"), "{err}");
 }
 
-/// Item 13: `yield_strength = 1e3` was refused blaming
+/// `yield_strength = 1e3` was refused blaming
 /// `program.closest_separation` (an impossible real area that the elastic
 /// law on the same program does not reach).
 #[test]
@@ -89,7 +89,7 @@ fn an_absurd_yield_strength_is_blamed_on_itself() {
     }
 }
 
-/// Item 13: `montecarlo-gold.toml` at `rtol = 0.1` (inside the documented
+/// `montecarlo-gold.toml` at `rtol = 0.1` (inside the documented
 /// `[1e-12, 0.1]`) was refused naming `materials.e2`, then `adhesion.z0`:
 /// the law table's tolerance `0.1 x 0.1` rounded to 0.010000000000000002,
 /// just above the table's bound 1e-2.
@@ -106,7 +106,7 @@ fn the_largest_documented_rtol_runs() {
     assert_eq!(s["rtol"].as_f64(), Some(0.1));
 }
 
-/// Item 8: a Jackson–Green run whose highest summit's Hertz estimate is
+/// A Jackson–Green run whose highest summit's Hertz estimate is
 /// a/R = 0.28 (no warning before) reaches a/R = 0.46 by the fit's own
 /// contact radius (`a/R = sqrt(delta/R) (w/1.9)^(B/2)`): warned.
 #[test]
@@ -146,7 +146,7 @@ fn plastic_fits_beyond_their_range_are_warned() {
     );
 }
 
-/// Item 12: extreme shaped profiles ended in a quadrature failure (exit 1)
+/// Extreme shaped profiles ended in a quadrature failure (exit 1)
 /// or ran for minutes (`coefficient = 1e300` on a power law: a contact
 /// radius of 1.7e-77 m at one sigma); a 1 nm true sphere under 200 nm
 /// roughness ran on past its equator. Now refused up front, naming the key
@@ -202,7 +202,7 @@ fn extreme_shaped_profiles_are_refused_naming_the_key() {
     assert_eq!(code, 0, "{err}");
 }
 
-/// Item 15: `nominal_area = nan` was taken as "not given" (NaN is the
+/// `nominal_area = nan` was taken as "not given" (NaN is the
 /// unset mark); a NaN written anywhere is refused naming its key.
 #[test]
 fn a_written_nan_is_not_an_absent_key() {
@@ -219,7 +219,7 @@ fn a_written_nan_is_not_an_absent_key() {
     }
 }
 
-/// Item 15: a UTF-8 byte-order mark was accepted in scenes but refused in
+/// A UTF-8 byte-order mark was accepted in scenes but refused in
 /// CSVs (spots, height maps); now accepted in both, with the same numbers.
 #[test]
 fn a_byte_order_mark_is_accepted_in_csvs() {
@@ -250,7 +250,7 @@ fn a_byte_order_mark_is_accepted_in_csvs() {
     assert_eq!(plain, bom);
 }
 
-/// Item 15: 24 stray bytes after a `.npy` array were accepted; the file is
+/// 24 stray bytes after a `.npy` array were accepted; the file is
 /// now refused naming it.
 #[test]
 fn stray_bytes_after_npy_data_are_refused() {
@@ -268,7 +268,7 @@ fn stray_bytes_after_npy_data_are_refused() {
     assert!(err.contains("24 stray bytes"), "{err}");
 }
 
-/// Item 15: outputs are written whole or not at all (temporary file and
+/// Outputs are written whole or not at all (temporary file and
 /// rename): a run leaves no `*.tmp` beside its outputs, and a run whose
 /// `summary.json` cannot be written exits 1 leaving no temporary file.
 #[test]
@@ -306,7 +306,7 @@ fn scale_load_bars(v: &mut serde_json::Value, k: f64) {
     }
 }
 
-/// Item 9: a parseable but altered calibration cache entry (loads x1.5)
+/// A parseable but altered calibration cache entry (loads x1.5)
 /// was trusted silently (+50 % on the maximum load). Entries now carry a
 /// checksum; a bad one is recomputed, with a warning naming the file.
 #[test]
@@ -356,7 +356,7 @@ fn an_altered_calibration_cache_entry_is_recomputed_with_a_note() {
     assert!(!third["warnings"].to_string().contains("checksum"));
 }
 
-/// Item 11: a map far beyond the memory (a 20000 x 20000 `.npy` aborted on
+/// A map far beyond the memory (a 20000 x 20000 `.npy` aborted on
 /// allocation under an 8 GB limit) is refused before it is read, with the
 /// estimate. Here a sparse 80 GB file (100000 x 100000 doubles, no disk
 /// blocks): about 160 GB to characterise from the command line (16 bytes a
@@ -397,7 +397,7 @@ fn a_map_beyond_the_memory_is_refused_with_an_estimate() {
     std::fs::remove_file(&path).unwrap();
 }
 
-/// Item 10: a tabulated profile of 100,000 points ran for many minutes
+/// A tabulated profile of 100,000 points ran for many minutes
 /// without a word (22 s of CPU at 1,000 points); beyond the documented
 /// 2,000 points it is refused up front with the cost estimate.
 #[test]

@@ -30,7 +30,7 @@ fn facts(mu: f64, shape: Shape) -> asperity::sphere::SphereFacts {
         .unwrap()
 }
 
-/// Item 4: at mu = 0.005 the pull-off was -2.000034, beyond Bradley's rigid
+/// At mu = 0.005 the pull-off was -2.000034, beyond Bradley's rigid
 /// -2 (an elastic sphere is always less tensile). The default mesh must stay
 /// above -2 and within 1e-4 of the converged value (its own uncertainty is
 /// 4e-6).
@@ -44,7 +44,7 @@ fn small_mu_pull_off_does_not_overshoot_bradley() {
     }
 }
 
-/// Item 4, true sphere: the rigid limit (mu = 0.01, rho = 10) within 1e-4
+/// True sphere: the rigid limit (mu = 0.01, rho = 10) within 1e-4
 /// (relative) of the converged value, which lies above the rigid closed form
 /// (-1.7671) by the elastic correction.
 #[test]
@@ -54,7 +54,7 @@ fn rigid_true_sphere_matches_converged() {
     assert!(((p - r) / r).abs() < 1e-4, "{p} vs converged {r}");
 }
 
-/// Item 3: zero-load contact radii within 0.5% of the converged values at
+/// Zero-load contact radii within 0.5% of the converged values at
 /// the default resolution (mu = 0.5 was 0.56% small).
 #[test]
 fn zero_load_radii_within_half_a_percent() {
@@ -65,7 +65,7 @@ fn zero_load_radii_within_half_a_percent() {
     }
 }
 
-/// Item 1/2: a resolution below MIN_RESOLUTION (too coarse to resolve the
+/// A resolution below MIN_RESOLUTION (too coarse to resolve the
 /// edge: 0.05 gave a pull-off of -3.23) or above MAX_RESOLUTION is refused
 /// naming `resolution`; a mesh over MAX_NODES is refused before anything is
 /// allocated (promptly), with the estimate in the message.
@@ -136,7 +136,7 @@ fn cost_estimate_tracks_the_mesh() {
     }
 }
 
-/// Item 5: the mu = 10 jump-out load at the default resolution was about
+/// The mu = 10 jump-out load at the default resolution was about
 /// 0.9 % off (-0.8468, solver version 1; -0.8428 in version 2-3; -0.84121,
 /// 0.26 %, in version 4). Converged (resolutions 4 and 8, Richardson,
 /// version 5; uncertainty 1.2e-6): -0.839057. Version 5 (tangents along the

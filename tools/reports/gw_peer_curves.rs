@@ -1,4 +1,4 @@
-//! CPU time and values of the two GW curves of issue 28 against their
+//! CPU time and values of the two GW curves of the curve benchmark against their
 //! numpy peers (`benches/peers/gw_curves_numpy.py` runs this and compares):
 //! `cargo run --release --example gw_peer_curves -- CASE RTOL [REPEATS]`,
 //! `CASE` one of `resistance`, `kogut-etsion`.
