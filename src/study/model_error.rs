@@ -16,6 +16,7 @@ use crate::study::plan::FullSolver;
 use crate::study::scene::LawName;
 
 use super::map_error::MapModelError;
+use super::map_pull_off::MapPullOff;
 pub use crate::study::plan::REFERENCE_RTOL;
 
 /// A model error larger than this (relative) is a warning.
@@ -46,6 +47,10 @@ pub struct ModelError {
     /// solution of the map ([`super::map_error`]), or why it is not
     /// measured.
     pub map: Option<MapModelError>,
+    /// On a measured map with adhesion: GW's pull-off against the adhesive
+    /// boundary-element solution of the map ([`super::map_pull_off`]), or
+    /// why it is not measured.
+    pub map_pull_off: Option<MapPullOff>,
 }
 
 impl ModelError {
@@ -60,12 +65,22 @@ impl ModelError {
             reference_hysteresis_energy: None,
             listed_loads: Vec::new(),
             map: None,
+            map_pull_off: None,
         }
     }
 
     /// The reference sentence with the map's: what the per-state errors
     /// are measured against, then what the headline outputs' are.
     pub fn full_reference(&self) -> String {
+        let elastic = self.elastic_reference();
+        match self.map_pull_off.as_ref().filter(|p| p.exact.is_some()) {
+            Some(p) => format!("{elastic}. Pull-off on the map: GW against {}", p.reference),
+            None => elastic,
+        }
+    }
+
+    /// [`ModelError::full_reference`] without the map's pull-off.
+    fn elastic_reference(&self) -> String {
         match &self.map {
             Some(m) if !m.states.is_empty() => format!(
                 "{}. Pull-off, max load and hysteresis energy: {}",
@@ -157,6 +172,7 @@ impl ModelError {
             })
         })
         .chain(self.map.iter().flat_map(MapModelError::warnings))
+        .chain(self.map_pull_off.iter().filter_map(MapPullOff::warning))
         .collect()
     }
 }
@@ -301,5 +317,6 @@ fn reference_run(
         reference_hysteresis_energy: ref_energy,
         listed_loads: Vec::new(),
         map: None,
+        map_pull_off: None,
     })
 }
