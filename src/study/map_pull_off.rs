@@ -245,67 +245,54 @@ pub fn measure(
     Ok(Some(out))
 }
 
-/// The exact retraction from the mean pressure `p_max/A_n` (module
-/// documentation).
+/// The adhesive problem of the map, its solves counted.
+struct Counted {
+    problem: Problem,
+    options: Options,
+    solves: usize,
+    max_iterations: usize,
+    iterations: usize,
+}
+
+impl Counted {
+    fn count(&mut self, s: &Solution) {
+        self.solves += 1;
+        self.max_iterations = self.max_iterations.max(s.iterations);
+        self.iterations += s.iterations;
+    }
+
+    /// The state at mean gap `g` (m), warm-started from `warm`.
+    fn at(&mut self, g: f64, warm: &Solution) -> Result<Solution> {
+        crate::cancel::check()?;
+        let s = self.problem.solve_gap(g, &self.options, Some(warm))?;
+        self.count(&s);
+        Ok(s)
+    }
+}
+
+/// The retraction's steps from `start` by `step` (m): the most tensile
+/// `(gap, mean pressure)`, the state one step before it, and the steps
+/// made (module documentation).
 ///
 /// # Errors
 /// As the solves; [`Error::Invalid`] when the contact has not pulled off
 /// within twice the sweep.
-fn sweep(plan: &Plan, p_max: f64) -> Result<MapPullOff> {
-    let Some((map, mirrored)) = periodic_map(plan)? else {
-        return Err(Error::invalid("surface.topography", "no map"));
-    };
-    let t = plan
-        .topography
-        .as_ref()
-        .ok_or_else(|| Error::invalid("surface.topography", "no map"))?;
-    let c = &t.characterisation;
-    let (w, rho) = (
-        plan.contact.adhesion.work(),
-        plan.contact.adhesion.dugdale_range(),
-    );
-    let options = Options {
-        tolerance: TOLERANCE,
-        ..Options::default()
-    };
-    let problem = Problem::with_pixels(
-        &map,
-        (c.pixel_size_m, c.pixel_size_y_m),
-        plan.contact.contact_modulus,
-        true,
-        &options,
-    )?
-    .with_adhesion(w, rho)?;
-    let a_n = plan.surface.nominal_area;
-    // The start: the gap that gives the largest load (its root-find's
-    // solves count as one; their iterations are the last solve's).
-    let start = problem.solve_pressure(p_max / a_n, &options, None)?;
-    let mut solves = 1usize;
-    let mut max_it = start.iterations;
-    let mut all_it = start.iterations;
-    let mut solve = |g: f64, warm: Option<&Solution>| -> Result<Solution> {
-        crate::cancel::check()?;
-        let s = problem.solve_gap(g, &options, warm)?;
-        solves += 1;
-        max_it = max_it.max(s.iterations);
-        all_it += s.iterations;
-        Ok(s)
-    };
+fn retract(
+    solver: &mut Counted,
+    start: Solution,
+    step: f64,
+) -> Result<((f64, f64), Option<Solution>, usize)> {
     let u0 = start.mean_gap;
-    let end = problem.zero_load_gap() + END_RANGES * rho;
-    let step = (end - u0).max(END_RANGES * rho) / STEPS as f64;
-    // (gap, mean pressure) of each step; the state before the most tensile.
     let mut best = (u0, start.mean_pressure);
-    let mut best_k = 0usize;
+    let (mut best_k, mut k) = (0usize, 0usize);
     let mut before_best: Option<Solution> = None;
     let mut prev = start;
-    let mut k = 0;
     // Past the minimum with the surfaces apart the tension only falls; a
     // contact that holds beyond the sweep's end is followed up to twice it.
     let bracketed = loop {
         k += 1;
         let u = u0 + step * k as f64;
-        let s = solve(u, Some(&prev))?;
+        let s = solver.at(u, &prev)?;
         let apart = s.contact_pixels == 0;
         if s.mean_pressure < best.1 {
             best = (u, s.mean_pressure);
@@ -329,20 +316,67 @@ fn sweep(plan: &Plan, p_max: f64) -> Result<MapPullOff> {
             ),
         ));
     }
+    Ok((best, before_best, k))
+}
+
+/// The exact retraction from the mean pressure `p_max/A_n` (module
+/// documentation).
+///
+/// # Errors
+/// As the solves and [`retract`].
+fn sweep(plan: &Plan, p_max: f64) -> Result<MapPullOff> {
+    let Some((map, mirrored)) = periodic_map(plan)? else {
+        return Err(Error::invalid("surface.topography", "no map"));
+    };
+    let c = &plan
+        .topography
+        .as_ref()
+        .ok_or_else(|| Error::invalid("surface.topography", "no map"))?
+        .characterisation;
+    let (w, rho) = (
+        plan.contact.adhesion.work(),
+        plan.contact.adhesion.dugdale_range(),
+    );
+    let options = Options {
+        tolerance: TOLERANCE,
+        ..Options::default()
+    };
+    let problem = Problem::with_pixels(
+        &map,
+        (c.pixel_size_m, c.pixel_size_y_m),
+        plan.contact.contact_modulus,
+        true,
+        &options,
+    )?
+    .with_adhesion(w, rho)?;
+    let a_n = plan.surface.nominal_area;
+    // The start: the gap that gives the largest load (its root-find's
+    // solves count as one; their iterations are the last solve's).
+    let start = problem.solve_pressure(p_max / a_n, &options, None)?;
+    let step = (problem.zero_load_gap() + END_RANGES * rho - start.mean_gap).max(END_RANGES * rho)
+        / STEPS as f64;
+    let mut solver = Counted {
+        problem,
+        options,
+        solves: 0,
+        max_iterations: 0,
+        iterations: 0,
+    };
+    solver.count(&start);
+    let (mut best, before_best, k) = retract(&mut solver, start, step)?;
     // Golden section on the two steps about the most tensile, each solve
     // warm-started from the state one step before it.
     if let Some(warm) = before_best {
-        let lo = best.0 - step;
         let mut failure: Option<Error> = None;
         let (u, p) = golden_min(
-            |u| match solve(u, Some(&warm)) {
+            |u| match solver.at(u, &warm) {
                 Ok(s) => s.mean_pressure,
                 Err(e) => {
                     failure.get_or_insert(e);
                     f64::NAN
                 }
             },
-            lo,
+            best.0 - step,
             best.0 + step,
             step / 32.0,
         );
@@ -353,26 +387,8 @@ fn sweep(plan: &Plan, p_max: f64) -> Result<MapPullOff> {
             best = (u, p);
         }
     }
-    let (rows, cols) = (c.rows, c.cols);
-    let reference = format!(
-        "the adhesive boundary elements: the whole map{} as one elastic half-space under the \
-         exponential interaction -w exp(-g/rho), w = {w:e} J/m^2, rho = {rho:.4e} m (the \
-         Lennard-Jones law's largest tension w/rho = 1.0264 w/z0), tolerance {TOLERANCE:e}; \
-         pull-off the most tensile mean pressure of a mean-gap-controlled retraction from the \
-         run's largest load, {k} steps of {step:.3e} m refined by golden section to {:.2e} m",
-        if mirrored {
-            format!(
-                " (mirrored into a periodic {} x {} map)",
-                2 * rows,
-                2 * cols
-            )
-        } else {
-            " (periodic)".into()
-        },
-        step / 32.0
-    );
     Ok(MapPullOff {
-        reference,
+        reference: reference(w, rho, k, step, mirrored.then_some((c.rows, c.cols))),
         differences: differences(plan, rho, mirrored),
         gw: None,
         exact: Some(best.1.min(0.0) * a_n),
@@ -381,12 +397,33 @@ fn sweep(plan: &Plan, p_max: f64) -> Result<MapPullOff> {
         energy: w,
         range: rho,
         gap_step: Some(step),
-        solves,
-        max_iterations: max_it,
-        iterations: all_it,
+        solves: solver.solves,
+        max_iterations: solver.max_iterations,
+        iterations: solver.iterations,
         estimate_s: 0.0,
         seconds: 0.0,
     })
+}
+
+/// The reference sentence of a measured pull-off: `k` steps of `step` (m);
+/// `mirrored`: the map's rows and columns when it was mirrored.
+fn reference(w: f64, rho: f64, k: usize, step: f64, mirrored: Option<(usize, usize)>) -> String {
+    format!(
+        "the adhesive boundary elements: the whole map{} as one elastic half-space under the \
+         exponential interaction -w exp(-g/rho), w = {w:e} J/m^2, rho = {rho:.4e} m (the \
+         Lennard-Jones law's largest tension w/rho = 1.0264 w/z0), tolerance {TOLERANCE:e}; \
+         pull-off the most tensile mean pressure of a mean-gap-controlled retraction from the \
+         run's largest load, {k} steps of {step:.3e} m refined by golden section to {:.2e} m",
+        match mirrored {
+            Some((rows, cols)) => format!(
+                " (mirrored into a periodic {} x {} map)",
+                2 * rows,
+                2 * cols
+            ),
+            None => " (periodic)".into(),
+        },
+        step / 32.0
+    )
 }
 
 /// What differs between GW's pull-off and the exact one: the interaction

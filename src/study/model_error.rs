@@ -94,6 +94,29 @@ impl ModelError {
         }
     }
 
+    /// On a measured map, GW against the exact boundary-element solutions
+    /// of the map: the elastic states ([`super::map_error::measure`], at the
+    /// closest separation `closest`, m) and, with adhesion, the pull-off
+    /// ([`super::map_pull_off::measure`], GW's `pull_off` and `max_load`,
+    /// N), each within the budget of the GW run's own time since `t0` (or
+    /// the floor).
+    ///
+    /// # Errors
+    /// As the two measurements.
+    pub fn measure_map(
+        &mut self,
+        plan: &Plan,
+        closest: f64,
+        pull_off: Option<f64>,
+        max_load: Option<f64>,
+        t0: std::time::Instant,
+    ) -> Result<()> {
+        let gw_seconds = t0.elapsed().as_secs_f64();
+        self.map = super::map_error::measure(plan, closest, gw_seconds)?;
+        self.map_pull_off = super::map_pull_off::measure(plan, pull_off, max_load, gw_seconds)?;
+        Ok(())
+    }
+
     /// Adds the model error of the loads at the listed states (their
     /// separations `separations` (m), the run's loads `loads` (N)) when the
     /// rest was measured: the reference law's load at the same separation.
