@@ -26,6 +26,7 @@
 pub mod atomic;
 pub mod cache;
 pub mod map_error;
+pub mod map_pull_off;
 pub mod measured;
 pub mod memory;
 pub mod model_error;

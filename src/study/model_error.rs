@@ -16,6 +16,7 @@ use crate::study::plan::FullSolver;
 use crate::study::scene::LawName;
 
 use super::map_error::MapModelError;
+use super::map_pull_off::MapPullOff;
 pub use crate::study::plan::REFERENCE_RTOL;
 
 /// A model error larger than this (relative) is a warning.
@@ -46,6 +47,10 @@ pub struct ModelError {
     /// solution of the map ([`super::map_error`]), or why it is not
     /// measured.
     pub map: Option<MapModelError>,
+    /// On a measured map with adhesion: GW's pull-off against the adhesive
+    /// boundary-element solution of the map ([`super::map_pull_off`]), or
+    /// why it is not measured.
+    pub map_pull_off: Option<MapPullOff>,
 }
 
 impl ModelError {
@@ -60,12 +65,22 @@ impl ModelError {
             reference_hysteresis_energy: None,
             listed_loads: Vec::new(),
             map: None,
+            map_pull_off: None,
         }
     }
 
     /// The reference sentence with the map's: what the per-state errors
     /// are measured against, then what the headline outputs' are.
     pub fn full_reference(&self) -> String {
+        let elastic = self.elastic_reference();
+        match self.map_pull_off.as_ref().filter(|p| p.exact.is_some()) {
+            Some(p) => format!("{elastic}. Pull-off on the map: GW against {}", p.reference),
+            None => elastic,
+        }
+    }
+
+    /// [`ModelError::full_reference`] without the map's pull-off.
+    fn elastic_reference(&self) -> String {
         match &self.map {
             Some(m) if !m.states.is_empty() => format!(
                 "{}. Pull-off, max load and hysteresis energy: {}",
@@ -77,6 +92,29 @@ impl ModelError {
             ),
             None => self.reference.clone(),
         }
+    }
+
+    /// On a measured map, GW against the exact boundary-element solutions
+    /// of the map: the elastic states ([`super::map_error::measure`], at the
+    /// closest separation `closest`, m) and, with adhesion, the pull-off
+    /// ([`super::map_pull_off::measure`], GW's `pull_off` and `max_load`,
+    /// N), each within the budget of the GW run's own time since `t0` (or
+    /// the floor).
+    ///
+    /// # Errors
+    /// As the two measurements.
+    pub fn measure_map(
+        &mut self,
+        plan: &Plan,
+        closest: f64,
+        pull_off: Option<f64>,
+        max_load: Option<f64>,
+        t0: std::time::Instant,
+    ) -> Result<()> {
+        let gw_seconds = t0.elapsed().as_secs_f64();
+        self.map = super::map_error::measure(plan, closest, gw_seconds)?;
+        self.map_pull_off = super::map_pull_off::measure(plan, pull_off, max_load, gw_seconds)?;
+        Ok(())
     }
 
     /// Adds the model error of the loads at the listed states (their
@@ -157,6 +195,7 @@ impl ModelError {
             })
         })
         .chain(self.map.iter().flat_map(MapModelError::warnings))
+        .chain(self.map_pull_off.iter().filter_map(MapPullOff::warning))
         .collect()
     }
 }
@@ -301,5 +340,6 @@ fn reference_run(
         reference_hysteresis_energy: ref_energy,
         listed_loads: Vec::new(),
         map: None,
+        map_pull_off: None,
     })
 }

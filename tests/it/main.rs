@@ -52,6 +52,7 @@ mod hysteresis_energy;
 mod law_properties;
 mod limits;
 mod map_model_error;
+mod map_pull_off;
 mod maugis;
 mod maugis_gw;
 mod model_error;

@@ -153,6 +153,28 @@ fn map_model_error(out: &mut String, m: &super::summary::ModelErrorSummary) {
     }
 }
 
+/// GW's pull-off on the map against the adhesive boundary elements', or why
+/// it is not measured.
+fn map_pull_off(out: &mut String, p: &super::summary::PullOffMapSummary) {
+    match (p.gw_n, p.exact_n) {
+        (Some(gw), Some(exact)) => {
+            let _ = writeln!(
+                out,
+                "    pull-off on this map: GW {}, adhesive boundary elements {}, difference {} ({:.2} s; what differs: {})",
+                format::si(gw, "N"),
+                format::si(exact, "N"),
+                p.relative
+                    .map_or("-".into(), |v| format!("{:+.1} %", 100.0 * v)),
+                p.seconds,
+                p.differences
+            );
+        }
+        _ => {
+            let _ = writeln!(out, "    pull-off on this map: {}", p.reference);
+        }
+    }
+}
+
 /// The model error lines: on this surface, per output, and for one summit.
 fn model_error(out: &mut String, summary: &Summary) {
     let pct = |x: Option<f64>| x.map_or("-".into(), |v| format!("{:+.2} %", 100.0 * v));
@@ -180,6 +202,13 @@ fn model_error(out: &mut String, summary: &Summary) {
         .filter(|m| !m.states.is_empty())
     {
         map_model_error(out, m);
+    }
+    if let Some(p) = summary
+        .model_error
+        .as_ref()
+        .and_then(|m| m.pull_off_map.as_ref())
+    {
+        map_pull_off(out, p);
     }
     if let Some(e) = summary.law_model_error {
         let _ = writeln!(

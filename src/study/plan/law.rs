@@ -57,6 +57,44 @@ pub struct LawFacts {
     pub rebuild: Option<LawKind>,
 }
 
+impl LawChoice {
+    /// The adhesive interaction the law models, for people (what a
+    /// comparison with another interaction states as the difference).
+    pub fn interaction(&self) -> &'static str {
+        match self.source {
+            LawName::Analytic(LawKind::Hertz) => "Hertz (no adhesion)",
+            LawName::Analytic(LawKind::Jkr) => {
+                "JKR: zero-range adhesion (the surface energy w inside the contact only, an \
+                 infinite stress at its edge, no attraction outside it)"
+            }
+            LawName::Analytic(LawKind::Maugis) => {
+                "Maugis-Dugdale: a constant tension sigma0 = 1.0264 w/z0 up to the gap \
+                 w/sigma0 = 0.9743 z0, none beyond"
+            }
+            LawName::Analytic(LawKind::Cos) => {
+                "Carpick-Ogletree-Salmeron fit of Maugis-Dugdale (a constant tension up to \
+                 0.9743 z0)"
+            }
+            LawName::Analytic(LawKind::Dmt) => {
+                "DMT: Hertz's profile plus a constant pull 2 pi w R (the adhesion does not deform \
+                 the summit)"
+            }
+            LawName::Analytic(LawKind::Bradley) => {
+                "Bradley: a rigid summit under the Lennard-Jones 9-3 surface force of spacing z0"
+            }
+            LawName::Calibrated | LawName::Auto => {
+                "full-solver law: an elastic sphere under the Lennard-Jones 9-3 surface force of \
+                 spacing z0 (a repulsive wall, no hard contact)"
+            }
+            LawName::Plastic(_) => {
+                "JKR adhesion on an elastic-plastic summit's unloading shape (the boundary \
+                 elements are elastic)"
+            }
+            LawName::Shaped => "JKR adhesion on the law.profile shape",
+        }
+    }
+}
+
 impl LawFacts {
     /// An analytic elastic law of `kind`: rebuildable, measured against the
     /// full solver.

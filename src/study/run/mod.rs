@@ -462,7 +462,7 @@ impl Plan {
             max_load,
             hysteresis_energy,
         )?;
-        model_error.map = super::map_error::measure(self, closest, t0.elapsed().as_secs_f64())?;
+        model_error.measure_map(self, closest, pull_off.map(|p| p.load), max_load, t0)?;
         warnings.extend(model_error.warnings(&self.law.name, self.scene.law.kind));
         if let Some(p) = pull_off.filter(|p| p.at_start) {
             warnings.push(format!(
