@@ -745,13 +745,7 @@ fn print_table(o: &BemOutput) -> String {
         t,
         "(iter, residual, conv: the solver's iterations, final residual and whether it fell below the tolerance; dA/A, du/u: the model's area fraction and mean gap against the exact ones, model/exact - 1)"
     );
-    for (k, s) in o.states.iter().enumerate().filter(|(_, s)| s.full_contact) {
-        let _ = writeln!(
-            t,
-            "state {k}, p = {:.5e} Pa: full contact (every pixel, A/A0 = 1 exactly), elastic energy {:.9e} J/m^2",
-            s.pressure, s.elastic_energy
-        );
-    }
+    full_contact_lines(o, &mut t);
     if let Some(c) = &o.adhesion_criteria {
         t.push_str(&c.criteria.text());
     }
@@ -782,6 +776,17 @@ fn print_table(o: &BemOutput) -> String {
     let _ = writeln!(t, "numerical error: {}", o.numerical_error);
     let _ = writeln!(t, "model error: {}", o.model_error);
     t
+}
+
+/// A line for each state in full contact, with its elastic energy.
+fn full_contact_lines(o: &BemOutput, t: &mut String) {
+    for (k, s) in o.states.iter().enumerate().filter(|(_, s)| s.full_contact) {
+        let _ = writeln!(
+            t,
+            "state {k}, p = {:.5e} Pa: full contact (every pixel, A/A0 = 1 exactly), elastic energy {:.9e} J/m^2",
+            s.pressure, s.elastic_energy
+        );
+    }
 }
 
 /// `A/A0` for the table: five significant digits, and never rounded up
