@@ -89,7 +89,7 @@ pub(crate) fn solve_load(
             return Ok(Solution::from_fields(p, g, f64::INFINITY, it, residual));
         }
         if it == options.max_iterations {
-            let s = Solution::from_fields(p, g, c, it, residual);
+            let s = Solution::from_fields(p, g, f64::INFINITY, it, residual);
             return super::at_cap(s, options, "boundary elements (Polonsky-Keer)");
         }
         let ratio = if delta { big_g / g_old } else { 0.0 };

@@ -7,6 +7,10 @@
 //!   (non-periodic).
 //! - `contact`: load control without adhesion, Polonsky & Keer's (1999)
 //!   constrained conjugate gradients in the pressure.
+//! - `full_contact`: load control on a periodic map at and near full
+//!   contact: the exact full-contact state `p = K^-1 h + P` at once when
+//!   every pixel of it is pressed, else, when few are not, conjugate
+//!   gradients in the gap on the small non-contact set.
 //! - `gap_control`: mean-gap control on a periodic map, with or without the
 //!   exponential adhesion of Rey, Anciaux & Molinari (2017).
 //! - [`clusters`]: connected contact spots and their size distribution;
@@ -35,6 +39,7 @@ pub mod clusters;
 pub mod compare;
 mod contact;
 pub(crate) mod fft;
+mod full_contact;
 mod gap_control;
 pub mod operator;
 mod passes;
@@ -126,6 +131,12 @@ pub struct Solution {
     /// nominal area it is the volume of material displaced (m^3). 0
     /// without a hardness.
     pub plastic_volume_per_area: f64,
+    /// Elastic energy stored per nominal area (J/m^2),
+    /// `U/A0 = (1/2) mean(p u)` with `u = K p` the displacement of the
+    /// returned pressure (periodic: the zero-mean displacement, so in full
+    /// contact `U/A0 = (1/2) mean(h K^-1 h)`, Persson's `U_full/A0` of the
+    /// map, [`crate::stickiness::Roughness::full_contact_energy`]).
+    pub elastic_energy_per_area: f64,
 }
 
 impl Solution {
@@ -157,6 +168,7 @@ impl Solution {
             converged: true,
             plastic_pixels,
             plastic_volume_per_area: depth / n,
+            elastic_energy_per_area: 0.0,
         }
     }
 
@@ -174,7 +186,14 @@ impl Solution {
             converged: true,
             plastic_pixels: 0,
             plastic_volume_per_area: 0.0,
+            elastic_energy_per_area: 0.0,
         }
+    }
+
+    /// Whether every pixel is in contact (then [`Solution::area_fraction`]
+    /// is exactly 1; it is below 1 whenever one pixel is open).
+    pub fn full_contact(&self) -> bool {
+        self.contact_pixels == self.gap.len()
     }
 
     /// Fraction of the pixels in contact.
@@ -439,6 +458,28 @@ impl Problem {
         options: &Options,
         warm: Option<&Solution>,
     ) -> Result<Solution> {
+        self.solve_pressure_fields(pressure, options, warm)
+            .map(|s| self.with_energy(s))
+    }
+
+    /// The elastic energy per nominal area of `s`'s pressure,
+    /// [`Solution::elastic_energy_per_area`].
+    fn with_energy(&self, mut s: Solution) -> Solution {
+        let mut u = vec![0.0; s.pressure.len()];
+        self.op.displacement(&s.pressure, &mut u);
+        let n = u.len() as f64;
+        s.elastic_energy_per_area =
+            0.5 * s.pressure.iter().zip(&u).map(|(p, u)| p * u).sum::<f64>() / n;
+        s
+    }
+
+    /// [`Problem::solve_pressure`] without the energy.
+    fn solve_pressure_fields(
+        &self,
+        pressure: f64,
+        options: &Options,
+        warm: Option<&Solution>,
+    ) -> Result<Solution> {
         positive("pressure", pressure)?;
         if let Some(h) = self.hardness {
             crate::error::Allowed::open_closed(0.0, h).check("pressure", pressure)?;
@@ -449,12 +490,13 @@ impl Problem {
             let mut last: Option<Solution> = warm.cloned();
             let tol = options.tolerance.max(1e-12) * pressure.abs().max(1e-3 * self.p_ref);
             return monotone_root(start, pressure, tol, true, |g| {
-                let s = self.solve_gap(g, options, last.as_ref())?;
+                let s = self.solve_gap_fields(g, options, last.as_ref())?;
                 let v = s.mean_pressure;
                 last = Some(s.clone());
                 Ok((v, s))
             });
         }
+        let warm_gap = warm.map(|w| w.gap.as_slice());
         let warm = warm.map(|w| w.pressure.as_slice());
         match self.hardness {
             Some(hardness) => plastic::solve_load(
@@ -466,6 +508,27 @@ impl Problem {
                 options,
                 warm,
             ),
+            None if self.periodic => {
+                // At or near full contact (module `full_contact`).
+                let p_full = full_contact::full_pressure(&self.op, &self.heights, pressure);
+                if let Some(s) =
+                    full_contact::exact(&self.op, &self.heights, self.h_rms, &p_full, options)
+                {
+                    return Ok(s);
+                }
+                if full_contact::open_fraction(&p_full) < full_contact::NEAR_FULL {
+                    let warm_gap = warm_gap.filter(|w| w.iter().any(|g| *g > 0.0));
+                    return full_contact::solve_load(
+                        &self.op,
+                        (&self.heights, self.h_rms, self.p_ref),
+                        pressure,
+                        &p_full,
+                        options,
+                        warm_gap,
+                    );
+                }
+                contact::solve_load(&self.op, &self.heights, self.h_rms, pressure, options, warm)
+            }
             None => {
                 contact::solve_load(&self.op, &self.heights, self.h_rms, pressure, options, warm)
             }
@@ -477,6 +540,17 @@ impl Problem {
     /// # Errors
     /// [`Error::OutOfRange`] naming `gap`; [`Error::NoConvergence`].
     pub fn solve_gap(
+        &self,
+        gap: f64,
+        options: &Options,
+        warm: Option<&Solution>,
+    ) -> Result<Solution> {
+        self.solve_gap_fields(gap, options, warm)
+            .map(|s| self.with_energy(s))
+    }
+
+    /// [`Problem::solve_gap`] without the energy.
+    fn solve_gap_fields(
         &self,
         gap: f64,
         options: &Options,
@@ -507,7 +581,7 @@ impl Problem {
         let mut last: Option<Solution> = warm.cloned();
         let tol = (10.0 * options.tolerance).max(1e-12) * self.h_rms;
         monotone_root(start, gap, tol, true, |p| {
-            let s = self.solve_pressure(p.min(cap), options, last.as_ref())?;
+            let s = self.solve_pressure_fields(p.min(cap), options, last.as_ref())?;
             let v = s.mean_gap;
             last = Some(s.clone());
             Ok((v, s))

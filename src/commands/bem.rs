@@ -248,8 +248,16 @@ pub struct BemState {
     pub pressure: f64,
     /// Mean gap (m).
     pub mean_gap_m: f64,
-    /// Real-area fraction `A/A0`.
+    /// Real-area fraction `A/A0` (exactly 1 only when every pixel is in
+    /// contact).
     pub area_fraction: f64,
+    /// Whether every pixel is in contact (`area_fraction` exactly 1).
+    pub full_contact: bool,
+    /// Elastic energy stored per nominal area (J/m^2), `(1/2) mean(p u)`
+    /// with `u = K p`; in full contact on a periodic map Persson's
+    /// `U_full/A0 = (E*/4) sum_q |q| |h_q|^2` of the map.
+    #[serde(rename = "elastic_energy_J_per_m2")]
+    pub elastic_energy: f64,
     /// Contact clusters (8-connected pixels in contact).
     pub clusters: usize,
     /// Solver iterations.
@@ -532,6 +540,8 @@ fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> 
                 pressure: s.mean_pressure,
                 mean_gap_m: s.mean_gap,
                 area_fraction: s.area_fraction(),
+                full_contact: s.full_contact(),
+                elastic_energy: s.elastic_energy_per_area,
                 clusters: st.clusters,
                 iterations: s.iterations,
                 residual: s.residual,
@@ -713,10 +723,10 @@ fn print_table(o: &BemOutput) -> String {
     {
         let _ = writeln!(
             t,
-            "{:>12.5e} {:>12.5e} {:>12.5e} {:>8} {:>6} {:>9.2e} {:>4} | {:>12} {:>12} {:>8} {:>8} | {:>12} {:>12} {:>8} {:>8}",
+            "{:>12.5e} {:>12.5e} {:>12} {:>8} {:>6} {:>9.2e} {:>4} | {:>12} {:>12} {:>8} {:>8} | {:>12} {:>12} {:>8} {:>8}",
             s.pressure,
             s.mean_gap_m,
-            s.area_fraction,
+            area_text(s.area_fraction),
             s.clusters,
             s.iterations,
             s.residual,
@@ -735,6 +745,7 @@ fn print_table(o: &BemOutput) -> String {
         t,
         "(iter, residual, conv: the solver's iterations, final residual and whether it fell below the tolerance; dA/A, du/u: the model's area fraction and mean gap against the exact ones, model/exact - 1)"
     );
+    full_contact_lines(o, &mut t);
     if let Some(c) = &o.adhesion_criteria {
         t.push_str(&c.criteria.text());
     }
@@ -765,6 +776,37 @@ fn print_table(o: &BemOutput) -> String {
     let _ = writeln!(t, "numerical error: {}", o.numerical_error);
     let _ = writeln!(t, "model error: {}", o.model_error);
     t
+}
+
+/// A line for each state in full contact, with its elastic energy.
+fn full_contact_lines(o: &BemOutput, t: &mut String) {
+    for (k, s) in o.states.iter().enumerate().filter(|(_, s)| s.full_contact) {
+        let _ = writeln!(
+            t,
+            "state {k}, p = {:.5e} Pa: full contact (every pixel, A/A0 = 1 exactly), elastic energy {:.9e} J/m^2",
+            s.pressure, s.elastic_energy
+        );
+    }
+}
+
+/// `A/A0` for the table: five significant digits, and never rounded up
+/// to 1 (a fraction below 1 shows as many digits as it needs, up to 1 -
+/// 1e-12; above that `< 1`), so `1` means every pixel in contact.
+fn area_text(a: f64) -> String {
+    if a == 1.0 {
+        return "1".to_string();
+    }
+    let short = format!("{a:.5e}");
+    if short.parse::<f64>().map_or(true, |v| v < 1.0) {
+        return short;
+    }
+    // 1 - a in five digits, written as a decimal with enough places.
+    let open = 1.0 - a;
+    let places = (-open.log10()).ceil() as usize + 1;
+    if places > 12 {
+        return "< 1".to_string();
+    }
+    format!("{a:.places$}")
 }
 
 /// The measured model error of the theories on this map: the range of

@@ -15,6 +15,7 @@ mod common;
 
 mod axisym;
 mod bem;
+mod bem_full;
 mod bem_honest;
 mod bem_plastic;
 mod capillary;
