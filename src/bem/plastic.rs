@@ -26,7 +26,7 @@
 
 use super::operator::HalfSpace;
 use super::{Options, Solution};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// A pixel's set.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -193,7 +193,7 @@ fn free_enough(sets: &mut [Set], p: &mut [f64], g: &[f64], k: f64, target: f64, 
 /// (a previous pressure field) or a uniform pressure.
 ///
 /// # Errors
-/// [`Error::NoConvergence`] when `options.max_iterations` applications of
+/// [`Error::NoConvergence`](crate::Error::NoConvergence) when `options.max_iterations` applications of
 /// the operator did not reach the tolerance.
 pub(crate) fn solve_load(
     op: &HalfSpace,
@@ -273,9 +273,10 @@ pub(crate) fn solve_load(
             return Ok(Solution::from_fields(p, g, hardness, used, residual));
         }
     }
-    Err(Error::NoConvergence {
-        what: "boundary elements (elastic-perfectly-plastic, active set)".into(),
-        iterations: used,
-        residual,
-    })
+    // At the cap: the last iterate, flagged or refused as every solver's.
+    super::at_cap(
+        Solution::from_fields(p, g, hardness, used, residual),
+        options,
+        "boundary elements (elastic-perfectly-plastic, active set)",
+    )
 }

@@ -315,3 +315,34 @@ fn cli_hardness_prints_the_plastic_outputs_and_names_bad_values() {
     let (_, help, _) = run(&["bem", "--help"]);
     assert!(help.contains("--hardness"));
 }
+
+/// A plastic solve at its iteration cap is the program's failure (exit 1
+/// with the residual), or with `--allow-unconverged` its last iterate
+/// flagged `converged: false`: as every other solver (it was exit 2,
+/// "outside what the solver reaches").
+#[test]
+fn a_plastic_solve_at_the_cap_is_exit_one_or_flagged() {
+    let mut args = MAP.to_vec();
+    args.extend([
+        "--pressures",
+        "5e7",
+        "--hardness",
+        "1e8",
+        "--max-iterations",
+        "3",
+        "--json",
+    ]);
+    let (code, _, err) = run(&args);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("iteration cap") && err.contains("residual"),
+        "{err}"
+    );
+    args.push("--allow-unconverged");
+    let (code, out, err) = run(&args);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    let st = &v["states"][0];
+    assert_eq!(st["converged"], Value::Bool(false), "{st}");
+    assert!(st["residual"].as_f64().unwrap() > 1e-10, "{st}");
+}
