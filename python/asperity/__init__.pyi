@@ -175,6 +175,12 @@ def persson(
     gamma: float = 1.0,
     adhesion_energy: Optional[float] = None,
     adhesion_range: Optional[float] = None,
+    relative_humidity: Optional[float] = None,
+    surface_tension: float = 0.0728,
+    contact_angle_1: float = 0.0,
+    contact_angle_2: float = 0.0,
+    temperature: float = 293.15,
+    molar_volume: float = 1.8e-5,
 ) -> Dict[str, Any]:
     """`asperity persson --json`: Persson's theory and GW on a self-affine
     spectrum."""

@@ -555,6 +555,14 @@ pub fn punch_fit_py(
 ///     adds ``adhesion_criteria`` (Pastewka–Robbins with its validity
 ///     rho/g0 < 0.1, Persson–Tosatti, the Tabor parameter at R = 1/h'',
 ///     Müser's mu_rho).
+/// relative_humidity : float, optional
+///     In (0, 1): adds ``capillary``, the flooded capillary attraction at
+///     every pressure from Persson's gap distribution (Laplace pressure
+///     where the gap is below the meniscus height) beside per-summit
+///     menisci on GW's summits, and the regime h_m/u_rms.
+/// surface_tension, contact_angle_1, contact_angle_2, temperature, molar_volume : float
+///     The liquid (N/m, degrees, degrees, K, m^3/mol); default water at
+///     293.15 K wetting both surfaces.
 ///
 /// Returns
 /// -------
@@ -563,13 +571,13 @@ pub fn punch_fit_py(
 ///     ``gw_area_fraction``, ``gw_mean_gap_m``), the spectrum's moments,
 ///     ``full_contact_energy_J_per_m2``, ``gw``, ``numerical_error``,
 ///     ``model_error``, ``warnings``, ``adhesion_criteria`` (with an
-///     adhesion range).
+///     adhesion range), ``capillary`` (with a relative humidity).
 ///
 /// Examples
 /// --------
 /// >>> asperity.persson(0.8, 1e5, 4e5, 4e8, 1e9, [1e4, 1e5], h_rms=1e-8)
 #[pyfunction]
-#[pyo3(name = "persson", signature = (hurst, q_long, q_roll, q_short, estar, pressures, h_rms = None, slope_rms = None, gamma = 1.0, adhesion_energy = None, adhesion_range = None))]
+#[pyo3(name = "persson", signature = (hurst, q_long, q_roll, q_short, estar, pressures, h_rms = None, slope_rms = None, gamma = 1.0, adhesion_energy = None, adhesion_range = None, relative_humidity = None, surface_tension = 0.0728, contact_angle_1 = 0.0, contact_angle_2 = 0.0, temperature = 293.15, molar_volume = 1.8e-5))]
 #[allow(clippy::too_many_arguments)]
 pub fn persson_py(
     py: Python<'_>,
@@ -584,8 +592,22 @@ pub fn persson_py(
     gamma: f64,
     adhesion_energy: Option<f64>,
     adhesion_range: Option<f64>,
+    relative_humidity: Option<f64>,
+    surface_tension: f64,
+    contact_angle_1: f64,
+    contact_angle_2: f64,
+    temperature: f64,
+    molar_volume: f64,
 ) -> PyResult<Py<PyAny>> {
     let pressures = arrays::sequence(pressures, "pressures")?;
+    let liquid = relative_humidity.map(|rh| cmd::wet_map::Liquid {
+        relative_humidity: rh,
+        surface_tension,
+        contact_angle_1,
+        contact_angle_2,
+        temperature,
+        molar_volume,
+    });
     let out = guard::long(py, "persson", &words(), || {
         cmd::persson::persson(&cmd::persson::PerssonInput {
             hurst,
@@ -598,6 +620,7 @@ pub fn persson_py(
             gamma,
             adhesion_energy,
             adhesion_range,
+            liquid,
         })
     })?;
     serialised(py, &out, true)

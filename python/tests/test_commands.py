@@ -122,6 +122,21 @@ def test_persson():
     assert_same(asperity.persson(**PERSSON, pressures=np.array([1e5]), slope_rms=0.1), ref)
 
 
+def test_persson_capillary_equals_cli():
+    flags = [x for k, v in PERSSON.items() for x in (f"--{k.replace('_', '-')}", v)]
+    ref = cli_json("persson", *flags, "--h-rms", 1e-8, "--pressures", "1e5,1e6",
+                   "--relative-humidity", 0.9, "--contact-angle-2", 30)
+    got = asperity.persson(**PERSSON, pressures=[1e5, 1e6], h_rms=1e-8, relative_humidity=0.9,
+                           contact_angle_2=30.0)
+    assert_same(got, ref)
+    cap = got["capillary"]
+    for s in cap["states"]:
+        assert close(s["flooded_pressure_Pa"], cap["laplace_pressure_Pa"] * s["wetted_fraction"])
+        assert s["contact_fraction"] < s["wetted_fraction"] < 1
+    with pytest.raises(ValueError, match="relative_humidity"):
+        asperity.persson(**PERSSON, pressures=[1e5], h_rms=1e-8, relative_humidity=1.5)
+
+
 def test_sphere():
     ref = cli_json("sphere", "--mu", 0.5, "--resolution", 0.5)
     assert_same(asperity.sphere(0.5, resolution=0.5), ref)

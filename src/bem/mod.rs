@@ -172,13 +172,14 @@ impl Solution {
         }
     }
 
-    /// From the gap solver: contact where `g = 0`.
+    /// From the gap solver: contact where `g <= 0` (freed pixels may keep
+    /// a gap a rounding below 0: they are in contact too).
     fn from_gap_fields(p: Vec<f64>, g: Vec<f64>, p_mean: f64, it: usize, residual: f64) -> Self {
         let n = g.len() as f64;
         Solution {
             mean_pressure: p_mean,
             mean_gap: g.iter().sum::<f64>() / n,
-            contact_pixels: g.iter().filter(|v| **v == 0.0).count(),
+            contact_pixels: g.iter().filter(|v| **v <= 0.0).count(),
             pressure: p,
             gap: g,
             iterations: it,
@@ -206,9 +207,9 @@ impl Solution {
         self.plastic_pixels as f64 / self.gap.len() as f64
     }
 
-    /// The contact map (`true` where the gap is 0).
+    /// The contact map (`true` where the gap is 0, or a rounding below it).
     pub fn contact(&self) -> Vec<bool> {
-        self.gap.iter().map(|g| *g == 0.0).collect()
+        self.gap.iter().map(|g| *g <= 0.0).collect()
     }
 }
 

@@ -381,7 +381,12 @@ pub fn bem(map: &HeightMap, args: &BemInput) -> CommandResult<BemOutput> {
             args.pixel_size,
             args.pixel_size_y.unwrap_or(args.pixel_size),
         );
-        out.capillary = wet_states(l, &cmp, (map.rows(), map.cols()), pixels)?;
+        // Persson on the map's radial spectrum, as the comparison has it:
+        // its gap distribution beside the exact gap fields.
+        let persson = crate::spectrum::radial::radial_psd_xy(map, pixels, args.periodic)
+            .and_then(|psd| crate::persson::Persson::new(psd, args.estar, args.gamma))
+            .ok();
+        out.capillary = wet_states(l, &cmp, persson.as_ref(), (map.rows(), map.cols()), pixels)?;
         if let Some(w) = &out.capillary {
             out.warnings.extend(super::wet_map::warnings(w));
         }

@@ -42,6 +42,7 @@ pub mod heating;
 pub mod law;
 pub mod measured;
 pub mod persson;
+mod persson_text;
 pub mod punch;
 pub mod rough_sphere;
 pub mod shape;
@@ -50,6 +51,7 @@ pub mod spots;
 pub mod surface;
 mod vocabulary;
 pub mod wet_map;
+pub mod wet_persson;
 
 pub use vocabulary::{param, Vocabulary};
 

@@ -2,6 +2,8 @@
 //! spectrum, with GW on the same spectrum beside it.
 
 use super::criteria::{of_spectrum, CriteriaOutput};
+use super::wet_map::Liquid;
+use super::wet_persson::{persson_wet, PerssonWetOutput};
 use super::{param, CommandResult};
 use crate::error::positive;
 use crate::gw::GwOnMoments;
@@ -9,7 +11,6 @@ use crate::persson::{Persson, QUAD_RTOL};
 use crate::spectrum::{Normalisation, Spectrum};
 use crate::Error;
 use serde::Serialize;
-use std::fmt::Write as _;
 
 /// The input of [`persson`]: a self-affine spectrum, the modulus and the
 /// mean pressures.
@@ -38,6 +39,10 @@ pub struct PerssonInput {
     pub adhesion_energy: Option<f64>,
     /// Range rho (m) of `-w exp(-g/rho)`: adds the stickiness criteria.
     pub adhesion_range: Option<f64>,
+    /// The condensing liquid and humidity: adds the flooded capillary
+    /// attraction from Persson's gap distribution at each pressure
+    /// ([`super::wet_persson`]).
+    pub liquid: Option<Liquid>,
 }
 
 /// The normalisation from the two optional inputs, exactly one of which is
@@ -145,6 +150,10 @@ pub struct PerssonOutput {
     /// With an adhesion energy and range: the stickiness criteria.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub adhesion_criteria: Option<CriteriaOutput>,
+    /// With a liquid: the flooded capillary attraction from Persson's gap
+    /// distribution, per-summit menisci beside it, and the regime.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub capillary: Option<PerssonWetOutput>,
 }
 
 /// Persson's theory and GW on a self-affine spectrum (`asperity persson`).
@@ -157,6 +166,9 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
     positive_values("pressures", &input.pressures)?;
     check_wavevectors(input)?;
     positive(&param("estar"), input.estar)?;
+    if let Some(l) = &input.liquid {
+        l.meniscus()?;
+    }
     let norm = input.normalisation;
     let named = |e: Error| spectrum_error(e, norm);
     let spectrum =
@@ -200,6 +212,13 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
         })
         .transpose()?;
     warnings.extend(non_finite_warnings(&states, &above_one));
+    let capillary = match &input.liquid {
+        Some(l) => persson_wet(l, &model, &gw, &input.pressures)?,
+        None => None,
+    };
+    if let Some(c) = &capillary {
+        warnings.extend(super::wet_persson::warnings(c));
+    }
     let adhesion = (input.adhesion_energy, input.adhesion_range);
     let adhesion_criteria = of_spectrum(&spectrum, input.estar, adhesion, &mut warnings)?;
     let pt = match (pt, input.adhesion_energy) {
@@ -240,6 +259,7 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
         ),
         warnings,
         adhesion_criteria,
+        capillary,
     })
 }
 
@@ -424,73 +444,4 @@ fn spectrum_error(e: Error, norm: Normalisation) -> Error {
     } else {
         e.renamed(&param(&f))
     }
-}
-
-impl PerssonOutput {
-    /// The table `asperity persson` prints.
-    pub fn text(&self) -> String {
-        print_table(self)
-    }
-}
-
-fn print_table(o: &PerssonOutput) -> String {
-    let mut t = String::new();
-    let _ = writeln!(t,
-        "spectrum        h_rms {:.4e} m, slope_rms {:.4e}, m0 {:.4e} m^2, m2 {:.4e}, m4 {:.4e} 1/m^2",
-        o.h_rms_m, o.slope_rms, o.m0, o.m2, o.m4
-    );
-    let _ = writeln!(
-        t,
-        "Persson         gamma {}, u0 {:.4e} m, full-contact energy {:.4e} J/m^2",
-        o.gamma, o.mean_gap_slope_m, o.full_contact_energy
-    );
-    if let Some(pt) = o.persson_tosatti_number {
-        let _ =
-            writeln!(t,
-            "Persson-Tosatti U_full/w = {pt:.4e} (below 1: adhesion can pull into full contact)"
-        );
-    }
-    let _ = writeln!(
-        t,
-        "GW (McCool)     eta {:.4e} 1/m^2, R {:.4e} m, sigma {:.4e} m",
-        o.gw.density_per_m2, o.gw.radius_m, o.gw.sigma_m
-    );
-    let _ = writeln!(
-        t,
-        "{:>14} {:>14} {:>14} {:>14} {:>14} {:>10} {:>10}",
-        "p (Pa)", "A/A0", "u (m)", "GW A/A0", "GW u (m)", "GW/P A", "GW/P u"
-    );
-    let pct = |v: f64| {
-        if v.is_finite() {
-            format!("{:+.1}%", 100.0 * v)
-        } else {
-            "-".to_string()
-        }
-    };
-    for s in &o.states {
-        let _ = writeln!(
-            t,
-            "{:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e} {:>14.6e} {:>10} {:>10}",
-            s.pressure,
-            s.area_fraction,
-            s.mean_gap_m,
-            s.gw_area_fraction,
-            s.gw_mean_gap_m,
-            pct(s.gw_vs_persson_area),
-            pct(s.gw_vs_persson_mean_gap)
-        );
-    }
-    let _ = writeln!(
-        t,
-        "(GW/P A, GW/P u: GW's area fraction and mean gap against Persson's, GW/Persson - 1)"
-    );
-    if let Some(c) = &o.adhesion_criteria {
-        t.push_str(&c.criteria.text());
-    }
-    for w in &o.warnings {
-        let _ = writeln!(t, "warning: {w}");
-    }
-    let _ = writeln!(t, "numerical error: {}", o.numerical_error);
-    let _ = writeln!(t, "model error: {}", o.model_error);
-    t
 }

@@ -10,6 +10,7 @@
 use super::{param, CommandResult};
 use crate::bem::compare::Comparison;
 use crate::capillary::{flooded_force, per_summit_pressure, Meniscus, Regime};
+use crate::persson::Persson;
 use crate::Error;
 use serde::Serialize;
 
@@ -103,6 +104,14 @@ pub struct WetState {
     /// The model error in the transition: `per_summit/flooded - 1` (null
     /// outside it, where one model applies).
     pub model_error: Option<f64>,
+    /// The flooded attraction from Persson's gap distribution on the map's
+    /// radial spectrum at the same mean pressure (Pa), where it has one
+    /// ([`crate::persson::Persson::gap_statistics`]).
+    #[serde(rename = "persson_flooded_pressure_Pa")]
+    pub persson_flooded_pressure: Option<f64>,
+    /// Persson's flooded attraction against the exact gap field's,
+    /// `persson/exact - 1`: the Persson route's model error on this map.
+    pub persson_vs_exact: Option<f64>,
 }
 
 /// What `--relative-humidity` adds to `asperity bem`.
@@ -120,7 +129,9 @@ pub struct WetOutput {
 }
 
 /// The capillary attraction of every state of `cmp` on a `rows x cols`
-/// map of pixels `(dx, dy)` (m); `None` when no meniscus condenses.
+/// map of pixels `(dx, dy)` (m), with Persson's gap distribution on the
+/// map's spectrum (`persson`) beside each; `None` when no meniscus
+/// condenses.
 ///
 /// # Errors
 /// Naming the liquid's input; [`Error::Invalid`] from the gap fields
@@ -128,6 +139,7 @@ pub struct WetOutput {
 pub fn wet_states(
     liquid: &Liquid,
     cmp: &Comparison,
+    persson: Option<&Persson>,
     (rows, cols): (usize, usize),
     (dx, dy): (f64, f64),
 ) -> CommandResult<Option<WetOutput>> {
@@ -151,6 +163,11 @@ pub fn wet_states(
         let model_error = per_summit
             .filter(|_| f.regime == Regime::Transition && flooded > 0.0)
             .map(|p| p / flooded - 1.0);
+        crate::cancel::check()?;
+        let persson_flooded = persson
+            .filter(|_| s.mean_pressure > 0.0)
+            .and_then(|pm| pm.gap_statistics(s.mean_pressure, m.height()).ok())
+            .map(|g| m.laplace_pressure() * g.fraction_below);
         states.push(WetState {
             pressure: s.mean_pressure,
             mean_gap_m: s.mean_gap,
@@ -162,6 +179,10 @@ pub fn wet_states(
             edge_bound: f.perimeter_bound / area,
             per_summit_pressure: per_summit,
             model_error,
+            persson_flooded_pressure: persson_flooded,
+            persson_vs_exact: persson_flooded
+                .filter(|_| flooded > 0.0)
+                .map(|p| p / flooded - 1.0),
         });
     }
     if states.is_empty() {
@@ -178,17 +199,23 @@ pub fn wet_states(
 /// Warnings of the capillary states: the regime, and the Kelvin equation
 /// below its molecular limit.
 pub fn warnings(w: &WetOutput) -> Vec<String> {
+    regime_warnings(w.kelvin_radius_m, w.states.iter().map(|s| s.regime))
+}
+
+/// The warnings of a Kelvin radius `r_k` (m) below a molecule and of each
+/// state's regime outside the transition (shared by `bem` and `persson`).
+pub fn regime_warnings(r_k: f64, regimes: impl Iterator<Item = Regime>) -> Vec<String> {
     let mut out = Vec::new();
-    if w.kelvin_radius_m < crate::capillary::MOLECULAR_SIZE {
+    if r_k < crate::capillary::MOLECULAR_SIZE {
         out.push(format!(
             "capillary: Kelvin radius {:.3e} m below a molecule ({:e} m): the continuum meniscus \
              is outside its validity",
-            w.kelvin_radius_m,
+            r_k,
             crate::capillary::MOLECULAR_SIZE
         ));
     }
-    for (i, s) in w.states.iter().enumerate() {
-        let note = match s.regime {
+    for (i, regime) in regimes.enumerate() {
+        let note = match regime {
             Regime::Flooded => {
                 "flooded (h_m/u_rms > 1): the flooded column applies, per-summit \
                                 menisci have merged"
@@ -204,6 +231,15 @@ pub fn warnings(w: &WetOutput) -> Vec<String> {
     out
 }
 
+/// The regime's name as the tables print it.
+pub fn regime_name(r: Regime) -> &'static str {
+    match r {
+        Regime::PerSummit => "per-summit",
+        Regime::Transition => "transition",
+        Regime::Flooded => "flooded",
+    }
+}
+
 /// The capillary table `asperity bem` prints.
 pub fn text(w: &WetOutput) -> String {
     use std::fmt::Write as _;
@@ -213,7 +249,7 @@ pub fn text(w: &WetOutput) -> String {
     );
     let _ = writeln!(
         t,
-        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9}",
+        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9} {:>14} {:>9}",
         "p (Pa)",
         "u_rms (m)",
         "h_m/u",
@@ -221,7 +257,9 @@ pub fn text(w: &WetOutput) -> String {
         "A_w/A0",
         "flooded (Pa)",
         "summits (Pa)",
-        "summ/fl"
+        "summ/fl",
+        "Persson (Pa)",
+        "P/fl"
     );
     let f = |x: Option<f64>, pct: bool| match x {
         Some(v) if pct => format!("{:+.1}%", 100.0 * v),
@@ -229,14 +267,10 @@ pub fn text(w: &WetOutput) -> String {
         None => "-".into(),
     };
     for s in &w.states {
-        let regime = match s.regime {
-            Regime::PerSummit => "per-summit",
-            Regime::Transition => "transition",
-            Regime::Flooded => "flooded",
-        };
+        let regime = regime_name(s.regime);
         let _ = writeln!(
             t,
-            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9}",
+            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9} {:>14} {:>9}",
             s.pressure,
             s.rms_gap_m,
             s.ratio,
@@ -244,13 +278,17 @@ pub fn text(w: &WetOutput) -> String {
             s.wetted_fraction,
             s.flooded_pressure,
             f(s.per_summit_pressure, false),
-            f(s.model_error, true)
+            f(s.model_error, true),
+            f(s.persson_flooded_pressure, false),
+            f(s.persson_vs_exact, true)
         );
     }
     t.push_str(
         "(flooded: Laplace pressure on the area where the gap is below h_m; summits: menisci \
          beside GW's summits at the same mean pressure; summ/fl: their difference where both \
-         apply, 0.1 <= h_m/u_rms <= 1)\n",
+         apply, 0.1 <= h_m/u_rms <= 1; Persson: the Laplace pressure on Persson's gap \
+         distribution of the map's spectrum below h_m; P/fl: its difference from the exact \
+         gap field's, the Persson route's model error)\n",
     );
     t
 }

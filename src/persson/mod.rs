@@ -22,7 +22,10 @@
 //! in `ln q` elsewhere; `F` is a Gauss–Kronrod integral of its own. The
 //! relative tolerance is [`QUAD_RTOL`].
 
+pub mod gaps;
 pub mod special;
+
+pub use gaps::{GapStatistics, GAP_RTOL};
 
 use crate::error::{positive, Allowed, Error, Result};
 use crate::numeric::quadrature::{integrate, integrate_pieces, QuadOptions};

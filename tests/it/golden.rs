@@ -46,6 +46,7 @@ fn example_scenes_reproduce_their_golden_curves() {
         "measured-heights",
         "mems-gold",
         "montecarlo-gold",
+        "rf-mems-switch-humid",
         "soft-jkr",
     ] {
         let root = env!("CARGO_MANIFEST_DIR");

@@ -451,26 +451,26 @@ pub struct AdhesionSpec {
     /// Surface tension `gamma` of the condensing liquid (N/m), > 0; default
     /// water at 20 C, 0.0728.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "N/m", "default" = 0.0728))]
+    #[schemars(extend("x-unit" = "N/m", "exclusiveMinimum" = 0.0, "default" = 0.0728))]
     pub surface_tension: Option<f64>,
     /// Contact angle of the liquid on the rough body (degrees), in
     /// `[0, 180]`; default 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "deg", "default" = 0.0))]
+    #[schemars(extend("x-unit" = "deg", "default" = 0.0), range(min = 0.0, max = 180.0))]
     pub contact_angle_1: Option<f64>,
     /// Contact angle of the liquid on the flat (degrees), in `[0, 180]`;
     /// default 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "deg", "default" = 0.0))]
+    #[schemars(extend("x-unit" = "deg", "default" = 0.0), range(min = 0.0, max = 180.0))]
     pub contact_angle_2: Option<f64>,
     /// Molar volume `V_m` of the liquid (m^3/mol), > 0; default water,
     /// 1.8e-5.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "m^3/mol", "default" = 1.8e-5))]
+    #[schemars(extend("x-unit" = "m^3/mol", "exclusiveMinimum" = 0.0, "default" = 1.8e-5))]
     pub molar_volume: Option<f64>,
     /// Temperature `T` of the liquid and vapour (K), > 0; default 293.15.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(extend("x-unit" = "K", "default" = 293.15))]
+    #[schemars(extend("x-unit" = "K", "exclusiveMinimum" = 0.0, "default" = 293.15))]
     pub temperature: Option<f64>,
 }
 
