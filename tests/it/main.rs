@@ -17,6 +17,7 @@ mod axisym;
 mod bem;
 mod bem_honest;
 mod bem_plastic;
+mod bem_threads;
 mod capillary;
 mod capillary_maps;
 mod chart_rules;
