@@ -51,20 +51,22 @@ pub(crate) fn solve_load(
         }
         _ => vec![p_mean; n],
     };
-    let mut u = vec![0.0; n];
+    // The gap field first holds the displacement `K p` (no separate field).
     let mut g = vec![0.0; n];
+    // The rescaling of step 5, applied as the next displacement reads `p`.
+    let mut scale = 1.0;
     let mut t = vec![0.0; n];
     let mut r = vec![0.0; n];
     let (mut g_old, mut delta) = (1.0, false);
     let mut residual = f64::INFINITY;
     for it in 0..=options.max_iterations {
         crate::cancel::check()?;
-        op.displacement(&p, &mut u);
+        op.displacement_scaled(&mut p, scale, &mut g);
         // g = K p - h, then shifted by its mean over S.
         let [sum_s, count_s] = reduce(n, |rg| {
             let mut a = [0.0; 2];
             // Branch-free: the contact pattern is random, branches mispredict.
-            for ((gi, hi), pi) in u[rg.clone()].iter().zip(&h[rg.clone()]).zip(&p[rg]) {
+            for ((gi, hi), pi) in g[rg.clone()].iter().zip(&h[rg.clone()]).zip(&p[rg]) {
                 let m = f64::from(u8::from(*pi > 0.0));
                 a[0] += m * (gi - hi);
                 a[1] += m;
@@ -74,9 +76,9 @@ pub(crate) fn solve_load(
         let c = sum_s / count_s.max(1.0);
         let [big_g, pen] = update(&mut g, |rg, gs| {
             let mut a = [0.0; 2];
-            let (us, hs, ps) = (&u[rg.clone()], &h[rg.clone()], &p[rg]);
-            for (((gi, ui), hi), pi) in gs.iter_mut().zip(us).zip(hs).zip(ps) {
-                *gi = ui - hi - c;
+            let (hs, ps) = (&h[rg.clone()], &p[rg]);
+            for ((gi, hi), pi) in gs.iter_mut().zip(hs).zip(ps) {
+                *gi = *gi - hi - c;
                 let m = f64::from(u8::from(*pi > 0.0));
                 let neg = gi.min(0.0);
                 a[0] += m * *gi * *gi;
@@ -138,11 +140,7 @@ pub(crate) fn solve_load(
                 residual,
             });
         }
-        let s = p_mean * nf / total;
-        update::<0, _>(&mut p, |_, ps| {
-            ps.iter_mut().for_each(|v| *v *= s);
-            []
-        });
+        scale = p_mean * nf / total;
     }
     Err(Error::NoConvergence {
         what: "boundary elements (Polonsky-Keer)".into(),

@@ -14,7 +14,7 @@
 //!   with zeros to `2 rows x 2 cols`, where the circular convolution equals
 //!   the linear one on the map.
 
-use super::fft::{signed_index, Fft2};
+use super::fft::{signed_index, Fft2, Input};
 use rayon::prelude::*;
 use realfft::num_complex::Complex;
 use std::f64::consts::PI;
@@ -24,7 +24,6 @@ use std::sync::Mutex;
 struct Buffers {
     spec: Vec<Complex<f64>>,
     work: Vec<Complex<f64>>,
-    padded: Vec<f64>,
 }
 
 /// The compliance (and, periodic, stiffness) of the half-space on a grid.
@@ -150,16 +149,15 @@ impl HalfSpace {
             buffers: Mutex::new(Buffers {
                 spec: vec![Complex::new(0.0, 0.0); len],
                 work: vec![Complex::new(0.0, 0.0); len],
-                padded: if periodic {
-                    Vec::new()
-                } else {
-                    vec![0.0; 4 * rows * cols]
-                },
             }),
         }
     }
 
-    /// Bytes this operator holds (kernels and scratch).
+    /// Bytes this operator holds: the kernels (`8 len` each, `len = fr
+    /// (fc/2 + 1)` on the `fr x fc` transform grid: the map, or twice its
+    /// size padded), the two half spectra of the transform (`16 len`
+    /// each) and the per-thread scratch of the transform (two threads
+    /// counted).
     pub fn bytes(rows: usize, cols: usize, periodic: bool) -> usize {
         let (fr, fc) = if periodic {
             (rows, cols)
@@ -169,8 +167,7 @@ impl HalfSpace {
         let len = fr * (fc / 2 + 1);
         let kernels = if periodic { 2 } else { 1 } * 8 * len;
         let complex = 2 * 16 * len;
-        let padded = if periodic { 0 } else { 8 * fr * fc };
-        kernels + complex + padded
+        kernels + complex + 2 * Fft2::scratch_bytes(fr, fc)
     }
 
     /// Whether the operator is periodic.
@@ -190,7 +187,13 @@ impl HalfSpace {
 
     /// `u = K p` (periodic: zero-mean `u`).
     pub fn displacement(&self, p: &[f64], u: &mut [f64]) {
-        self.convolve(p, u, false);
+        self.convolve(Input::Plain(p), u, false);
+    }
+
+    /// `p *= scale`, then `u = K p`, in one pass over `p` (the same bits as
+    /// the two steps).
+    pub(crate) fn displacement_scaled(&self, p: &mut [f64], scale: f64, u: &mut [f64]) {
+        self.convolve(Input::Scaled(p, scale), u, false);
     }
 
     /// `p = K^-1 u` (periodic only; zero-mean `p`).
@@ -199,10 +202,10 @@ impl HalfSpace {
     /// On a padded operator (an internal misuse).
     pub fn pressure(&self, u: &[f64], p: &mut [f64]) {
         assert!(self.periodic, "stiffness of a padded half-space");
-        self.convolve(u, p, true);
+        self.convolve(Input::Plain(u), p, true);
     }
 
-    fn convolve(&self, x: &[f64], y: &mut [f64], stiff: bool) {
+    fn convolve(&self, x: Input<'_>, y: &mut [f64], stiff: bool) {
         let mut guard = self.buffers.lock().unwrap_or_else(|e| e.into_inner());
         let b = &mut *guard;
         let kernel = if stiff {
@@ -210,27 +213,16 @@ impl HalfSpace {
         } else {
             &self.compliance
         };
-        if self.periodic {
-            self.fft.convolve(x, y, kernel, &mut b.spec, &mut b.work);
-        } else {
-            let (r, c) = (self.rows, self.cols);
-            b.padded.chunks_mut(2 * c).enumerate().for_each(|(i, row)| {
-                if i < r {
-                    row[..c].copy_from_slice(&x[i * c..(i + 1) * c]);
-                    row[c..].fill(0.0);
-                } else {
-                    row.fill(0.0);
-                }
-            });
-            let padded = std::mem::take(&mut b.padded);
-            let mut out = vec![0.0; padded.len()];
-            self.fft
-                .convolve(&padded, &mut out, kernel, &mut b.spec, &mut b.work);
-            b.padded = out;
-            y.chunks_mut(c)
-                .enumerate()
-                .for_each(|(i, row)| row.copy_from_slice(&b.padded[i * 2 * c..i * 2 * c + c]));
-        }
+        // Padded: the map in the top-left corner of the doubled grid, zeros
+        // elsewhere (never stored), and the same corner of the result.
+        self.fft.convolve_corner(
+            x,
+            (self.rows, self.cols),
+            y,
+            kernel,
+            &mut b.spec,
+            &mut b.work,
+        );
     }
 }
 

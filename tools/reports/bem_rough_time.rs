@@ -1,46 +1,66 @@
-//! CPU time of the 256^2 self-affine solve at p = 0.01 E* (the map of
-//! `examples/data/selfaffine-256.npy`), solve only (as Tamaas' timing), one
-//! thread: `RAYON_NUM_THREADS=1 cargo run --release --example bem_rough_time -- 20 1e-8`.
+//! CPU time of a non-adhesive solve at p = 0.01 E* (E* = 1 GPa) on a
+//! periodic map, solve only (as Tamaas' timing in
+//! `benches/peers/tamaas_bem.py`), run with `RAYON_NUM_THREADS=1` for one
+//! thread:
+//! `cargo run --release --example bem_rough_time -- REPS TOL [MAP.npy] [L]`
+//! (default map `examples/data/selfaffine-256.npy`, side `L` = 100 um).
+//! Prints one JSON line: the answer (area fraction, mean gap, iterations)
+//! and the CPU time of every solve (all threads, from the nanosecond
+//! counters of `/proc/self/task/*/schedstat`) with their median.
 use asperity::bem::{Options, Problem};
 use asperity::surface::npy;
 
 fn cpu_s() -> f64 {
-    let s = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
-    let f: Vec<&str> = s
-        .rsplit(')')
-        .next()
-        .unwrap_or("")
-        .split_whitespace()
-        .collect();
-    let t = |i: usize| {
-        f.get(i)
-            .and_then(|v| v.parse::<f64>().ok())
-            .unwrap_or(f64::NAN)
-    };
-    (t(11) + t(12)) / 100.0
+    let mut ns = 0u64;
+    for t in std::fs::read_dir("/proc/self/task")
+        .into_iter()
+        .flatten()
+        .flatten()
+    {
+        let s = std::fs::read_to_string(t.path().join("schedstat")).unwrap_or_default();
+        ns += s
+            .split_whitespace()
+            .next()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(0);
+    }
+    ns as f64 * 1e-9
 }
 
 fn main() {
-    let map = npy::parse(&std::fs::read("examples/data/selfaffine-256.npy").unwrap()).unwrap();
-    let dx = 1e-4 / 256.0;
-    let reps: usize = std::env::args().nth(1).map_or(10, |s| s.parse().unwrap());
-    let tol: f64 = std::env::args().nth(2).map_or(1e-8, |s| s.parse().unwrap());
+    let a: Vec<String> = std::env::args().collect();
+    let reps: usize = a.get(1).map_or(10, |s| s.parse().unwrap());
+    let tol: f64 = a.get(2).map_or(1e-8, |s| s.parse().unwrap());
+    let path = a
+        .get(3)
+        .map_or("examples/data/selfaffine-256.npy", String::as_str);
+    let side: f64 = a.get(4).map_or(1e-4, |s| s.parse().unwrap());
+    let map = npy::parse(&std::fs::read(path).unwrap()).unwrap();
+    let dx = side / map.cols() as f64;
     let opts = Options {
         tolerance: tol,
+        memory_limit: usize::MAX,
         ..Default::default()
     };
     let prob = Problem::new(&map, dx, 1e9, true, &opts).unwrap();
-    let t = cpu_s();
+    let mut cpu = Vec::new();
     let mut last = None;
-    for _ in 0..reps {
+    for _ in 0..reps.max(1) {
+        let t = cpu_s();
         last = Some(prob.solve_pressure(1e7, &opts, None).unwrap());
+        cpu.push(cpu_s() - t);
     }
-    let cpu = (cpu_s() - t) / reps as f64;
     let s = last.expect("reps >= 1");
+    let mut sorted = cpu.clone();
+    sorted.sort_by(f64::total_cmp);
     println!(
-        "tol {tol:e}: A/A0 {:.10} mean gap {:.12e} m, {} iterations, {cpu:.4} s CPU per solve",
+        "{{\"map\": \"{path}\", \"rows\": {}, \"tolerance\": {tol:e}, \"area_fraction\": {:.17e}, \
+         \"mean_gap_m\": {:.17e}, \"iterations\": {}, \"cpu_s_median\": {:.6}, \"cpu_s\": {:?}}}",
+        map.rows(),
         s.area_fraction(),
         s.mean_gap,
-        s.iterations
+        s.iterations,
+        sorted[sorted.len() / 2],
+        cpu
     );
 }
