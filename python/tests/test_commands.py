@@ -164,6 +164,23 @@ def test_bem(tmp_path):
     assert isinstance(got["states"][0]["cluster_sizes_px"], list)
 
 
+def test_bem_hardness_equals_cli_and_names_bad_values():
+    f = REPO / "tests" / "data" / "bem_plastic_map32.npy"
+    z = np.load(f)
+    ref = cli_json("bem", f, "--pixel-size", 1e-6, "--estar", 1e9, "--periodic",
+                   "--pressures", "5e6,5e7", "--hardness", 1e8)
+    got = asperity.bem(z, 1e-6, 1e9, pressures=[5e6, 5e7], periodic=True, hardness=1e8)
+    assert_same(got, ref)
+    # The plastic area fraction is a result: positive at 0.05 E* on this map.
+    assert got["states"][1]["plastic_area_fraction"] > 0
+    for bad in (-1.0, float("inf"), float("nan")):
+        with pytest.raises(ValueError, match="hardness"):
+            asperity.bem(z, 1e-6, 1e9, pressures=[5e6], periodic=True, hardness=bad)
+    # A mean pressure above the hardness cannot be carried: named.
+    with pytest.raises(ValueError, match="pressures"):
+        asperity.bem(z, 1e-6, 1e9, pressures=[2e8], periodic=True, hardness=1e8)
+
+
 def test_bem_convergence_criteria_and_capillary_equal_cli():
     f = REPO / "examples" / "data" / "selfaffine-256.npy"
     z = np.load(f)

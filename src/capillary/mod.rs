@@ -46,6 +46,11 @@ pub const WATER_SURFACE_TENSION: f64 = 0.0728;
 pub const WATER_MOLAR_VOLUME: f64 = 1.8e-5;
 /// Default temperature (K): 20 C.
 pub const ROOM_TEMPERATURE: f64 = 293.15;
+
+/// The largest Kelvin radius (m) a meniscus may have: `1e-4` m. Beyond it
+/// the inputs are not a condensing liquid film (water at 293 K reaches it
+/// near RH 0.999995) and the laws' ranges overflow.
+pub const MAX_KELVIN_RADIUS: f64 = 1e-4;
 /// Below this Kelvin radius (m) the meniscus is a few molecules across and
 /// the continuum Kelvin equation does not hold (a water molecule is
 /// ~0.3 nm; Fisher & Israelachvili 1981 verified it down to ~0.5 nm).
@@ -110,10 +115,39 @@ impl Meniscus {
             temperature,
             relative_humidity,
         );
-        if !(r_k > 0.0 && r_k.is_finite()) {
+        if !(r_k > 0.0 && r_k <= MAX_KELVIN_RADIUS) {
+            // Blame the input furthest (in decades) from water at room
+            // temperature and RH 0.5, whose Kelvin radius is 0.78 nm.
+            let ln_rh = |rh: f64| -rh.ln();
+            let (name, value) = [
+                (
+                    "surface_tension",
+                    surface_tension,
+                    surface_tension / WATER_SURFACE_TENSION,
+                ),
+                (
+                    "molar_volume",
+                    molar_volume,
+                    molar_volume / WATER_MOLAR_VOLUME,
+                ),
+                ("temperature", temperature, ROOM_TEMPERATURE / temperature),
+                (
+                    "relative_humidity",
+                    relative_humidity,
+                    ln_rh(0.5) / ln_rh(relative_humidity),
+                ),
+            ]
+            .into_iter()
+            .max_by(|a, b| a.2.log10().abs().total_cmp(&b.2.log10().abs()))
+            .map(|(n, v, _)| (n, v))
+            .unwrap_or(("relative_humidity", relative_humidity));
             return Err(Error::invalid(
-                "relative_humidity",
-                format!("{relative_humidity} gives a Kelvin radius of {r_k} m"),
+                name,
+                format!(
+                    "{value:e} gives a Kelvin radius of {r_k:e} m, beyond {MAX_KELVIN_RADIUS:e} m \
+                     (the Kelvin equation describes menisci of nanometres to micrometres; \
+                     water at 293 K reaches 1e-4 m near RH 0.999995)"
+                ),
             ));
         }
         Ok(Some(Meniscus {

@@ -38,6 +38,31 @@ fn kelvin_radius_of_water() {
     assert!((r - 0.54e-9).abs() < 0.005e-9, "{r}");
 }
 
+/// A Kelvin radius beyond 1e-4 m is refused, naming the input furthest
+/// from water at RH 0.5 (such inputs ran the laws' ranges to 1e292 m and
+/// a scene past any time limit).
+#[test]
+fn a_kelvin_radius_beyond_a_tenth_of_a_millimetre_names_its_cause() {
+    let cases = [
+        ((1e300, 1.8e-5, 293.15, 0.5), "surface_tension"),
+        ((0.0728, 1e300, 293.15, 0.5), "molar_volume"),
+        ((0.0728, 1.8e-5, 1e-300, 0.5), "temperature"),
+        ((0.0728, 1.8e-5, 293.15, 0.9999999), "relative_humidity"),
+    ];
+    for ((g, v, t, rh), name) in cases {
+        let e = Meniscus::new(g, 0.0, 0.0, v, t, rh).unwrap_err();
+        assert_eq!(e.field(), Some(name), "{e}");
+        assert!(e.to_string().contains("Kelvin radius"), "{e}");
+    }
+    // Just inside: water at RH 0.99999 (r_K 5.4e-5 m) condenses.
+    let m = Meniscus::water(0.99999).unwrap().unwrap();
+    assert!(
+        (m.kelvin_radius() - 5.376e-5).abs() < 0.001e-5,
+        "{}",
+        m.kelvin_radius()
+    );
+}
+
 /// Rigid sphere with the equilibrium meniscus: the closed form against the
 /// wetted radius solved by mpmath, to 1e-12; the pull-off tends to
 /// `2 pi R gamma (cos theta_1 + cos theta_2)` and is within 1e-9 of it at
