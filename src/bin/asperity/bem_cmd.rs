@@ -6,7 +6,6 @@ use crate::CliError;
 use asperity::commands::bem::{bem, BemAdhesion, BemInput, BemTargets};
 use asperity::commands::measured::{plane_rms, unit_warnings};
 use asperity::commands::surface::map_name;
-use asperity::commands::wet_map::Liquid;
 use asperity::commands::Vocabulary;
 use clap::Args;
 use std::path::PathBuf;
@@ -73,51 +72,8 @@ pub struct BemArgs {
     /// converged: false with a warning (otherwise it fails, exit 1).
     #[arg(long)]
     allow_unconverged: bool,
-    /// Relative humidity in (0, 1): adds the flooded capillary attraction of
-    /// every state (Laplace pressure where the gap is below the meniscus
-    /// height) beside per-summit menisci on GW's summits, and the regime.
-    #[arg(long, allow_hyphen_values = true)]
-    relative_humidity: Option<f64>,
-    /// Surface tension of the condensing liquid (N/m); water 0.0728.
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 0.0728,
-        requires = "relative_humidity"
-    )]
-    surface_tension: f64,
-    /// Contact angle of the liquid on the map's body (degrees).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 0.0,
-        requires = "relative_humidity"
-    )]
-    contact_angle_1: f64,
-    /// Contact angle of the liquid on the flat (degrees).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 0.0,
-        requires = "relative_humidity"
-    )]
-    contact_angle_2: f64,
-    /// Temperature of liquid and vapour (K).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 293.15,
-        requires = "relative_humidity"
-    )]
-    temperature: f64,
-    /// Molar volume of the liquid (m^3/mol); water 1.8e-5.
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 1.8e-5,
-        requires = "relative_humidity"
-    )]
-    molar_volume: f64,
+    #[command(flatten)]
+    liquid: crate::liquid_args::LiquidArgs,
     /// Write contact.npy/pressure.npy/gap.npy per state, bem.json and charts here.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -142,14 +98,7 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     input.max_iterations = args.max_iterations;
     input.memory_limit_mib = args.memory_limit_mib;
     input.allow_unconverged = args.allow_unconverged;
-    input.liquid = args.relative_humidity.map(|rh| Liquid {
-        relative_humidity: rh,
-        surface_tension: args.surface_tension,
-        contact_angle_1: args.contact_angle_1,
-        contact_angle_2: args.contact_angle_2,
-        temperature: args.temperature,
-        molar_volume: args.molar_volume,
-    });
+    input.liquid = args.liquid.liquid();
     input.out = args.out.clone();
     // The map's content is named by its file (and the scale).
     let words = Vocabulary::cli().with("heights", map_name(&args.map, args.read.scale));

@@ -12,6 +12,7 @@ mod fn_cmd;
 mod heating_cmd;
 mod interrupt;
 mod law_cmd;
+mod liquid_args;
 mod list;
 mod map_cmd;
 mod map_read;

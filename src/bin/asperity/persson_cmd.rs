@@ -3,7 +3,6 @@
 //! [`asperity::commands::persson`]).
 
 use asperity::commands::persson::{normalisation, persson, PerssonInput};
-use asperity::commands::wet_map::Liquid;
 use clap::Args;
 
 /// Arguments of `asperity persson`.
@@ -50,52 +49,8 @@ pub struct PerssonArgs {
     /// Persson–Tosatti, Tabor at R = 1/h'', Müser's mu_rho).
     #[arg(long, allow_hyphen_values = true, requires = "adhesion_energy")]
     adhesion_range: Option<f64>,
-    /// Relative humidity in (0, 1): adds the flooded capillary attraction at
-    /// every pressure (Laplace pressure where Persson's gap distribution is
-    /// below the meniscus height) beside per-summit menisci on GW's
-    /// summits, and the regime.
-    #[arg(long, allow_hyphen_values = true)]
-    relative_humidity: Option<f64>,
-    /// Surface tension of the condensing liquid (N/m); water 0.0728.
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 0.0728,
-        requires = "relative_humidity"
-    )]
-    surface_tension: f64,
-    /// Contact angle of the liquid on the rough body (degrees).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 0.0,
-        requires = "relative_humidity"
-    )]
-    contact_angle_1: f64,
-    /// Contact angle of the liquid on the flat (degrees).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 0.0,
-        requires = "relative_humidity"
-    )]
-    contact_angle_2: f64,
-    /// Temperature of liquid and vapour (K).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 293.15,
-        requires = "relative_humidity"
-    )]
-    temperature: f64,
-    /// Molar volume of the liquid (m^3/mol); water 1.8e-5.
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        default_value_t = 1.8e-5,
-        requires = "relative_humidity"
-    )]
-    molar_volume: f64,
+    #[command(flatten)]
+    liquid: crate::liquid_args::LiquidArgs,
     /// Print one JSON object instead of a table.
     #[arg(long)]
     json: bool,
@@ -113,14 +68,7 @@ pub fn run(args: &PerssonArgs) -> crate::CliResult {
         gamma: args.gamma,
         adhesion_energy: args.adhesion_energy,
         adhesion_range: args.adhesion_range,
-        liquid: args.relative_humidity.map(|rh| Liquid {
-            relative_humidity: rh,
-            surface_tension: args.surface_tension,
-            contact_angle_1: args.contact_angle_1,
-            contact_angle_2: args.contact_angle_2,
-            temperature: args.temperature,
-            molar_volume: args.molar_volume,
-        }),
+        liquid: args.liquid.liquid(),
     })?;
     crate::print_output(&out, &out.text(), args.json)
 }
