@@ -102,7 +102,7 @@ fn g(x: f64, p: usize) -> String {
 /// regenerating command is this test: on a difference it prints the rows).
 #[test]
 fn the_pull_off_table_of_the_laws_is_what_the_scenes_give() {
-    use crate::common::cli::{example, run, tmp};
+    use crate::common::cli::{example, run_scene_json, tmp};
     let physics = std::fs::read_to_string(root().join("docs/physics.md")).unwrap();
     let header = "| sigma/z0 | calibrated (LJ) P_c [uN] |";
     let at = physics.find(header).expect("the table's header changed");
@@ -130,21 +130,7 @@ fn the_pull_off_table_of_the_laws_is_what_the_scenes_give() {
                 1,
             )
             + &format!("\n[montecarlo]\nseeds = {seeds}\n");
-        let path = dir.join(format!("{law}-{sigma:e}.toml"));
-        std::fs::write(&path, text).unwrap();
-        let out = dir.join(format!("out-{law}-{sigma:e}"));
-        let (code, stdout, err) = run(
-            &[
-                "run",
-                path.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-                "--json",
-            ],
-            &dir,
-        );
-        assert_eq!(code, 0, "{law} at sigma {sigma:e}: {err}");
-        serde_json::from_str(&stdout).unwrap()
+        run_scene_json(&dir, &format!("{law}-{sigma:e}"), &text)
     };
     let z0 = 0.3e-9;
     let mut printed = Vec::new();

@@ -127,21 +127,7 @@ fn the_humidity_table_is_what_the_humid_scene_gives() {
                 )
             }
         };
-        let path = dir.join(format!("{rh}.toml"));
-        std::fs::write(&path, scene).unwrap();
-        let out = dir.join(format!("out-{rh}"));
-        let (code, stdout, err) = run(
-            &[
-                "run",
-                path.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-                "--json",
-            ],
-            &dir,
-        );
-        assert_eq!(code, 0, "{rh}: {err}");
-        let s: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        let s = crate::common::cli::run_scene_json(&dir, rh, &scene);
         let switch = -s["stiction"]["pull_off_N"].as_f64().unwrap() * 1e6;
         let probability = s["stiction"]["sticks_probability"].as_f64().unwrap();
         let gw = -s["pull_off_load_N"].as_f64().unwrap() * 1e6;

@@ -39,6 +39,27 @@ pub fn run(args: &[&str], dir: &Path) -> (i32, String, String) {
     )
 }
 
+/// Runs the scene `text` (written to `dir/NAME.toml`, outputs into
+/// `dir/out-NAME`) with `--json`: its summary; a failed run fails the
+/// test with its stderr.
+pub fn run_scene_json(dir: &Path, name: &str, text: &str) -> serde_json::Value {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, text).unwrap();
+    let out = dir.join(format!("out-{name}"));
+    let (code, stdout, err) = run(
+        &[
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--json",
+        ],
+        dir,
+    );
+    assert_eq!(code, 0, "{name}: {err}");
+    serde_json::from_str(&stdout).unwrap()
+}
+
 /// A JSON file, parsed.
 pub fn json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
