@@ -5,7 +5,7 @@
 //! the budget that skips a map too large, and `accuracy.model_error =
 //! false`.
 
-use crate::common::cli::{example, run, tmp};
+use crate::common::cli::{example, tmp};
 use asperity::bem::{Options, Problem, Solution};
 use asperity::surface::{npy, HeightMap};
 use serde_json::Value;
@@ -15,24 +15,11 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// `example` with the map path made absolute, run with `--json`.
 fn run_scene(text: &str, dir: &Path) -> Value {
     let data = root().join("examples/data");
     let text = text.replace("../data/", &format!("{}/", data.display()));
-    let scene = dir.join("scene.toml");
-    std::fs::write(&scene, text).unwrap();
-    let out = dir.join("out");
-    let (code, stdout, stderr) = run(
-        &[
-            "run",
-            scene.to_str().unwrap(),
-            "--json",
-            "--out",
-            out.to_str().unwrap(),
-        ],
-        dir,
-    );
-    assert_eq!(code, 0, "{stderr}");
-    serde_json::from_str(&stdout).unwrap()
+    crate::common::cli::run_scene_json(dir, "scene", &text)
 }
 
 fn num(v: &Value) -> f64 {
