@@ -17,6 +17,25 @@ use asperity::surface::npy;
 use serde_json::Value;
 use std::process::Command;
 
+/// `asperity bem` on the shipped periodic 256^2 self-affine map (E* =
+/// 1 GPa), from the repository root, with `extra` flags.
+fn bem_on_selfaffine(extra: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_asperity"))
+        .args([
+            "bem",
+            "examples/data/selfaffine-256.npy",
+            "--pixel-size",
+            "3.90625e-7",
+            "--estar",
+            "1e9",
+            "--periodic",
+        ])
+        .args(extra)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
 fn reference() -> Value {
     serde_json::from_str(&std::fs::read_to_string("tests/data/capillary_maps.json").unwrap())
         .unwrap()
@@ -55,25 +74,15 @@ fn per_summit_against_quadrature() {
 fn flooded_on_the_map_by_hand() {
     let dir = std::env::temp_dir().join(format!("asperity-capillary-maps-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args([
-            "bem",
-            "examples/data/selfaffine-256.npy",
-            "--pixel-size",
-            "3.90625e-7",
-            "--estar",
-            "1e9",
-            "--periodic",
-            "--pressures",
-            "1e6,1e7",
-            "--relative-humidity",
-            "0.99",
-            "--json",
-            "--out",
-        ])
-        .arg(&dir)
-        .output()
-        .unwrap();
+    let out = bem_on_selfaffine(&[
+        "--pressures",
+        "1e6,1e7",
+        "--relative-humidity",
+        "0.99",
+        "--json",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
     assert!(
         out.status.success(),
         "{}",
@@ -145,23 +154,9 @@ fn flooded_on_the_map_by_hand() {
     // A liquid that does not wet the gap: no meniscus, no capillary key;
     // a bad humidity names its flag.
     let run = |extra: &[&str]| {
-        let mut a = vec![
-            "bem",
-            "examples/data/selfaffine-256.npy",
-            "--pixel-size",
-            "3.90625e-7",
-            "--estar",
-            "1e9",
-            "--periodic",
-            "--pressures",
-            "1e6",
-            "--json",
-        ];
+        let mut a = vec!["--pressures", "1e6", "--json"];
         a.extend_from_slice(extra);
-        Command::new(env!("CARGO_BIN_EXE_asperity"))
-            .args(&a)
-            .output()
-            .unwrap()
+        bem_on_selfaffine(&a)
     };
     let o = run(&[
         "--relative-humidity",
@@ -187,27 +182,17 @@ fn flooded_on_the_map_by_hand() {
 fn adhesive_gap_control_counts_negative_gaps_as_contact() {
     let dir = std::env::temp_dir().join(format!("asperity-negative-gaps-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    let out = Command::new(env!("CARGO_BIN_EXE_asperity"))
-        .args([
-            "bem",
-            "examples/data/selfaffine-256.npy",
-            "--pixel-size",
-            "3.90625e-7",
-            "--estar",
-            "1e9",
-            "--periodic",
-            "--gaps",
-            "2e-7,1e-7",
-            "--adhesion-energy",
-            "0.05",
-            "--adhesion-range",
-            "2e-9",
-            "--json",
-            "--out",
-        ])
-        .arg(&dir)
-        .output()
-        .unwrap();
+    let out = bem_on_selfaffine(&[
+        "--gaps",
+        "2e-7,1e-7",
+        "--adhesion-energy",
+        "0.05",
+        "--adhesion-range",
+        "2e-9",
+        "--json",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
     assert!(
         out.status.success(),
         "{}",
