@@ -41,6 +41,23 @@ pub const EXACT_TOLERANCE: f64 = 1e-10;
 /// the GW run's own time.
 pub const CPU_FLOOR: f64 = 2.0;
 
+/// The budget `max(gw_seconds, CPU_FLOOR)` (s) and how it was set, for a
+/// "not measured" reason. The GW run's own time is named only when it sets
+/// the budget, so that the same scene gives the same words run after run.
+pub fn budget(gw_seconds: f64) -> (f64, String) {
+    if gw_seconds > CPU_FLOOR {
+        (
+            gw_seconds,
+            format!("the GW run's own CPU time, above the floor of {CPU_FLOOR} s"),
+        )
+    } else {
+        (
+            CPU_FLOOR,
+            format!("the floor of {CPU_FLOOR} s; the GW run's own time was below it"),
+        )
+    }
+}
+
 /// A difference above this (relative) is a warning.
 pub const WARN_ABOVE: f64 = 0.1;
 
@@ -346,7 +363,7 @@ pub fn measure(plan: &Plan, closest: f64, gw_seconds: f64) -> Result<Option<MapM
     let c = &t.characterisation;
     let (rows, cols, periodic) = (c.rows, c.cols, c.periodic);
     let estimate = estimate_seconds(rows, cols, periodic, loads.len());
-    let budget = gw_seconds.max(CPU_FLOOR);
+    let (budget, budget_rule) = budget(gw_seconds);
     let options = Options {
         tolerance: EXACT_TOLERANCE,
         ..Options::default()
@@ -357,8 +374,7 @@ pub fn measure(plan: &Plan, closest: f64, gw_seconds: f64) -> Result<Option<MapM
             format!(
                 "not measured: the exact elastic solution of this {rows} x {cols} map{} at {} \
                  loads would cost an estimated {estimate:.1} s of CPU and {:.0} MiB, above the \
-                 budget of {budget:.1} s (the GW run's own {gw_seconds:.3} s or {CPU_FLOOR} s, \
-                 whichever is larger) or {:.0} MiB; crop or downsample the map to measure it, or \
+                 budget of {budget:.1} s ({budget_rule}) or {:.0} MiB; crop or downsample the map to measure it, or \
                  run `asperity bem` on it",
                 if periodic {
                     ""

@@ -204,21 +204,20 @@ pub fn measure(
     let c = &t.characterisation;
     let (rows, cols, periodic) = (c.rows, c.cols, c.periodic);
     let estimate = estimate_seconds(rows, cols, periodic);
-    let budget = gw_seconds.max(super::map_error::CPU_FLOOR);
+    let (budget, budget_rule) = super::map_error::budget(gw_seconds);
     if estimate > budget {
         return Ok(Some(MapPullOff::unmeasured(
             plan,
             format!(
                 "not measured: the adhesive boundary-element pull-off of this {rows} x {cols} \
                  map{} would cost an estimated {estimate:.1} s of CPU, above the budget of \
-                 {budget:.1} s (the GW run's own {gw_seconds:.3} s or {} s, whichever is larger); \
+                 {budget:.1} s ({budget_rule}); \
                  crop or downsample the map to measure it",
                 if periodic {
                     ""
                 } else {
                     " (mirrored to twice its size)"
                 },
-                super::map_error::CPU_FLOOR
             ),
             estimate,
         )));
