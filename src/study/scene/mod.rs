@@ -126,6 +126,27 @@ mod tests {
     }
 
     #[test]
+    fn a_missing_table_is_named_alone() {
+        // The scene opens with comments; a missing top-level table is
+        // named as itself, not after the first line's text.
+        let start = DEFAULT_SCENE.find("[adhesion]").unwrap();
+        let end = start + DEFAULT_SCENE[start..].find("\n[").unwrap() + 1;
+        let text = format!("{}{}", &DEFAULT_SCENE[..start], &DEFAULT_SCENE[end..]);
+        assert!(text.starts_with('#'));
+        assert_eq!(field_of(&text).0, "adhesion");
+        let bare = text
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .collect::<Vec<_>>()
+            .join("\n");
+        assert!(bare.starts_with("title") || bare.starts_with('['), "{bare}");
+        assert_eq!(field_of(&bare).0, "adhesion");
+        // A missing key inside a table keeps the table's path.
+        let (field, msg) = field_of(&with("e1 = ", "# e1 = "));
+        assert_eq!(field, "materials.e1", "{msg}");
+    }
+
+    #[test]
     fn program_needs_exactly_one_target() {
         let both = with("points = 200", "points = 200\nmax_load = 1e-4");
         assert_eq!(field_of(&both).0, "program");

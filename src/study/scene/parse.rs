@@ -20,7 +20,13 @@ impl Scene {
     pub fn from_toml(text: &str) -> Result<Scene> {
         let scene: Scene = toml::from_str(text).map_err(|e| parse_error(text, &e))?;
         // An absent number reads as NaN (`surface.nominal_area` and its
-        // kind): a NaN the user wrote must not pass for "not given".
+        // kind): a NaN the user wrote must not pass for "not given". TOML
+        // spells it `nan` (`+nan`, `-nan`): a text without those letters
+        // has none, and is not parsed a second time.
+        if !text.contains("nan") {
+            scene.validate()?;
+            return Ok(scene);
+        }
         if let Ok(table) = text.parse::<toml::Table>() {
             if let Some(path) = first_nan(&table, "") {
                 finite(&path, f64::NAN)?;
@@ -304,17 +310,29 @@ fn parse_error(text: &str, e: &toml::de::Error) -> Error {
     };
     let line_no = text[..span.start.min(text.len())].matches('\n').count() + 1;
     let mut field = field_at(text, line_no).unwrap_or_else(|| "scene".to_string());
-    // "missing field `x`" points at the table: name the missing key.
+    // "missing field `x`" points at the table that lacks it (or, for a
+    // top-level key, at the document's start, whatever stands there):
+    // name the table's path and the missing key.
     if let Some(rest) = message.strip_prefix("missing field `") {
         if let Some(key) = rest.split('`').next() {
-            field = if field == "scene" {
-                key.to_string()
-            } else {
-                format!("{field}.{key}")
+            field = match table_at(text, line_no) {
+                Some(table) => format!("{table}.{key}"),
+                None => key.to_string(),
             };
         }
     }
     Error::invalid(field, format!("line {line_no}: {message}"))
+}
+
+/// The table whose header is on line `line_no` (1-based) or the last one
+/// above it; `None` before the first header (the document's own keys).
+fn table_at(text: &str, line_no: usize) -> Option<String> {
+    text.lines()
+        .take(line_no)
+        .map(str::trim)
+        .filter(|l| l.starts_with('[') && l.ends_with(']'))
+        .last()
+        .map(|l| l.trim_matches(|c| c == '[' || c == ']').trim().to_string())
 }
 
 /// The dotted path of the key on line `line_no` (1-based): the last
@@ -336,7 +354,7 @@ fn field_at(text: &str, line_no: usize) -> Option<String> {
         );
     }
     let key = line.split('=').next()?.trim();
-    if key.is_empty() {
+    if key.is_empty() || key.starts_with('#') {
         return table;
     }
     Some(match table {
