@@ -7,6 +7,7 @@ mod feature_figures;
 mod figures;
 pub mod format;
 mod report;
+pub mod sci;
 mod summary;
 mod table;
 mod tables;

@@ -385,8 +385,9 @@ fn states(out: &mut String, plan: &Plan, summary: &Summary) {
                 .collect(),
         ));
     }
+    // Each column's heading and scale (the SI prefix of its largest value).
     let mut head = Vec::new();
-    let mut cells: Vec<Vec<String>> = vec![Vec::new(); states.len()];
+    let mut scales = Vec::new();
     for (name, unit, values) in &columns {
         let finite = || values.iter().flatten().copied().filter(|v| v.is_finite());
         let (scale, prefix) = match unit.as_str() {
@@ -399,23 +400,27 @@ fn states(out: &mut String, plan: &Plan, summary: &Summary) {
         } else {
             format!("{name} {prefix}{unit}")
         });
-        for (row, v) in cells.iter_mut().zip(values) {
-            row.push(match v {
-                None => "-".into(),
-                Some(x) if unit.is_empty() => format::count(*x),
-                Some(x) => format!("{:.3}", x / scale),
-            });
-        }
+        scales.push((scale, unit.is_empty()));
     }
     let width = head.iter().map(|h| h.len()).max().unwrap_or(13).max(13);
-    let line = |v: &[String]| {
-        v.iter()
-            .map(|c| format!("{c:>width$}"))
-            .collect::<Vec<_>>()
-            .join(" ")
-    };
-    let _ = writeln!(out, "    {}", line(&head));
-    for row in &cells {
-        let _ = writeln!(out, "    {}", line(row));
+    let _ = write!(out, "    ");
+    for (i, h) in head.iter().enumerate() {
+        let sep = if i == 0 { "" } else { " " };
+        let _ = write!(out, "{sep}{h:>width$}");
+    }
+    out.push('\n');
+    // The rows written in place (a thousand listed states are a thousand
+    // lines: no cell is its own string but the counts').
+    for row in 0..states.len() {
+        out.push_str("    ");
+        for (i, ((_, _, values), (scale, is_count))) in columns.iter().zip(&scales).enumerate() {
+            let sep = if i == 0 { "" } else { " " };
+            let _ = match values[row] {
+                None => write!(out, "{sep}{:>width$}", "-"),
+                Some(x) if *is_count => write!(out, "{sep}{:>width$}", format::count(x)),
+                Some(x) => write!(out, "{sep}{:>width$.3}", x / scale),
+            };
+        }
+        out.push('\n');
     }
 }

@@ -1,13 +1,14 @@
 //! The run's tables: `curve.csv` and `montecarlo.csv`, one column per
 //! quantity of the plan's [`QuantitySet`](crate::study::quantity::QuantitySet).
 
+use super::sci::{push_sci, sci};
 use crate::study::plan::Plan;
 use crate::study::quantity::Record;
 use crate::study::run::{Results, MIN_SUMMITS_FOR_Z};
 use std::fmt::Write as _;
 
 fn cell(x: Option<f64>) -> String {
-    x.map_or(String::new(), |v| format!("{v:e}"))
+    x.map_or(String::new(), sci)
 }
 
 /// Rows in program order: approach from far to near, then retraction from
@@ -42,9 +43,14 @@ pub fn curve_csv(results: &Results, plan: &Plan) -> String {
     out.push('\n');
     let r = &results.records;
     for (leg, rec, _) in program_order(&r.approach, &r.retract) {
-        let _ = write!(out, "{leg},{:e}", rec.state.separation);
+        out.push_str(leg);
+        out.push(',');
+        push_sci(&mut out, rec.state.separation);
         for v in &rec.values {
-            let _ = write!(out, ",{}", cell(*v));
+            out.push(',');
+            if let Some(v) = v {
+                push_sci(&mut out, *v);
+            }
         }
         out.push('\n');
     }
