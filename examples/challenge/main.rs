@@ -41,6 +41,21 @@ fn cpu_s() -> f64 {
     (t(11) + t(12)) / 100.0
 }
 
+/// Exit 2 with the usage and `what` was wrong.
+fn usage(what: &str) -> ! {
+    eprintln!(
+        "challenge: expected [N] (grid size, 512 default) [--write PATH] [--map PATH]: {what}"
+    );
+    std::process::exit(2)
+}
+
+/// The path after the flag at `args[k]`, or exit 2 naming the flag.
+fn path_after(args: &[String], k: usize) -> String {
+    args.get(k + 1)
+        .cloned()
+        .unwrap_or_else(|| usage(&format!("{} needs a path", args[k])))
+}
+
 /// A solution's numbers: A/A0, mean gap, mean pressure, iterations,
 /// residual, converged, CPU time.
 fn state(s: &Solution, cpu: f64) -> Value {
@@ -56,7 +71,20 @@ fn state(s: &Solution, cpu: f64) -> Value {
     })
 }
 
-fn main() -> asperity::Result<()> {
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("challenge: {e}");
+        // Bad input (a grid size out of range, an unreadable map) exits 2,
+        // a failed solve 1.
+        let input = matches!(
+            e,
+            asperity::Error::OutOfRange { .. } | asperity::Error::Invalid { .. }
+        );
+        std::process::exit(if input { 2 } else { 1 });
+    }
+}
+
+fn run() -> asperity::Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut n = 512;
     let (mut write, mut read) = (None, None);
@@ -64,31 +92,36 @@ fn main() -> asperity::Result<()> {
     while k < args.len() {
         match args[k].as_str() {
             "--write" => {
-                write = args.get(k + 1).cloned();
+                write = Some(path_after(&args, k));
                 k += 1;
             }
             "--map" => {
-                read = args.get(k + 1).cloned();
+                read = Some(path_after(&args, k));
                 k += 1;
             }
-            v => {
-                n = v.parse().unwrap_or_else(|_| {
-                    eprintln!("challenge: expected a grid size (512 or 2048), --write PATH or --map PATH, got '{v}'");
-                    std::process::exit(2)
-                })
-            }
+            v => n = v.parse().unwrap_or_else(|_| usage(&format!("got '{v}'"))),
         }
         k += 1;
     }
-    let c = Challenge::at(n)?;
     let t0 = cpu_s();
-    let map: HeightMap =
-        match &read {
-            Some(path) => npy::parse(&std::fs::read(path).map_err(|e| {
-                asperity::Error::invalid("map", format!("cannot read {path}: {e}"))
-            })?)?,
-            None => c.surface()?,
-        };
+    let map: Option<HeightMap> = match &read {
+        Some(path) => Some(npy::parse(&std::fs::read(path).map_err(|e| {
+            asperity::Error::invalid("map", format!("cannot read {path}: {e}"))
+        })?)?),
+        None => None,
+    };
+    // A map read sets the grid (square, side 0.1 mm).
+    if let Some(m) = &map {
+        if m.rows() != m.cols() {
+            usage(&format!("--map is {} x {}, not square", m.rows(), m.cols()));
+        }
+        n = m.rows();
+    }
+    let c = Challenge::at(n)?;
+    let map = match map {
+        Some(m) => m,
+        None => c.surface()?,
+    };
     let t_surface = cpu_s() - t0;
     if let Some(path) = &write {
         std::fs::write(path, npy::to_bytes(&map))
