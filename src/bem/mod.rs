@@ -13,6 +13,8 @@
 //!   gradients in the gap on the small non-contact set.
 //! - `gap_control`: mean-gap control on a periodic map, with or without the
 //!   exponential adhesion of Rey, Anciaux & Molinari (2017).
+//! - [`challenge`]: the contact-mechanics challenge's spectrum, material,
+//!   interaction and generated surface.
 //! - [`clusters`]: connected contact spots and their size distribution;
 //!   [`resistance`]: their constriction resistance.
 //! - `roughness`: the map's RMS gradient, curvature and full-contact
@@ -35,6 +37,7 @@
 //! bounded by [`Options::memory_limit`] (1 GiB by default: a 2048 x 2048 map
 //! needs about 0.43 GiB periodic, 0.77 GiB padded).
 
+pub mod challenge;
 pub mod clusters;
 pub mod compare;
 mod contact;

@@ -21,6 +21,7 @@ mod bem_plastic;
 mod bem_threads;
 mod capillary;
 mod capillary_maps;
+mod challenge;
 mod chart_rules;
 mod cli_bem;
 mod cli_electrical;

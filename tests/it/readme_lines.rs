@@ -5,7 +5,9 @@
 //! (a new git repository), with this build's `asperity` first on the
 //! `PATH`. Each must exit 0, and `git status` must be clean afterwards:
 //! every output goes to a directory `.gitignore` lists. `cargo run
-//! --release [-- ARGS]` runs as `asperity [ARGS]` (the same program); `cargo
+//! --release [-- ARGS]` runs as `asperity [ARGS]` (the same program);
+//! `cargo run --release --example NAME` is checked for its `[[example]]` in
+//! Cargo.toml (a release build; `tools/readme_lines.sh` runs it); `cargo
 //! test` is this suite; `cargo install` is checked for `--locked` (a
 //! release build takes minutes; `tools/readme_lines.sh` runs it too, and
 //! the Python package's `python -m pip install ./python`, in a fresh venv).
@@ -120,6 +122,22 @@ fn the_readme_has_the_lines_a_newcomer_needs() {
             "{name} missing from the README's scene table"
         );
     }
+    // Every example a line runs is registered in Cargo.toml with its file.
+    let manifest = std::fs::read_to_string(root().join("Cargo.toml")).unwrap();
+    for l in &lines {
+        if let Some(rest) = l.strip_prefix("cargo run --release --example ") {
+            let name = rest.split_whitespace().next().unwrap_or("");
+            let entry = format!("[[example]]\nname = \"{name}\"\npath = \"");
+            let at = manifest
+                .find(&entry)
+                .unwrap_or_else(|| panic!("{l}: no [[example]] named {name} in Cargo.toml"));
+            let path: String = manifest[at + entry.len()..]
+                .chars()
+                .take_while(|c| *c != '"')
+                .collect();
+            assert!(root().join(&path).exists(), "{l}: {path} does not exist");
+        }
+    }
     // Every file a line names under examples/ exists.
     for l in &lines {
         for word in l.split_whitespace() {
@@ -149,6 +167,8 @@ fn every_readme_shell_line_runs_and_leaves_the_tree_clean() {
             continue; // checked above; tools/readme_lines.sh builds it
         } else if line.starts_with("python -m pip install") {
             continue; // a release build of the wheel: tools/readme_lines.sh runs it in a venv
+        } else if line.starts_with("cargo run --release --example") {
+            continue; // a release build of an example: checked above, tools/readme_lines.sh runs it
         } else if let Some(rest) = line.strip_prefix("cargo run --release") {
             format!("asperity {}", rest.trim_start().trim_start_matches("--"))
         } else {
