@@ -222,11 +222,11 @@ pub fn kronrod21_sums_columns(
     for (k, &fc) in col(10).iter().enumerate() {
         resasc[k] = WGK[10] * (fc - 0.5 * resk[k]).abs();
     }
-    for j in 0..10 {
+    for (j, &w) in WGK.iter().enumerate().take(10) {
         let (f1, f2) = (col(j), col(20 - j));
         for k in 0..n {
             let mean = 0.5 * resk[k];
-            resasc[k] += WGK[j] * ((f1[k] - mean).abs() + (f2[k] - mean).abs());
+            resasc[k] += w * ((f1[k] - mean).abs() + (f2[k] - mean).abs());
         }
     }
     for k in 0..n {
