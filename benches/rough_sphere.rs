@@ -61,7 +61,7 @@ fn bench_rough_sphere(c: &mut Criterion) {
 /// The plastic adhesive bump, `examples/scenes/switch-bump-plastic.toml`
 /// as shipped (one load, 10 points per leg, pull-off, resistance): the
 /// whole run, whose retraction table dominates (docs/performance.md,
-/// "Round three: curves and the bump"). About 10 s a run: 10 samples.
+/// "Round three: curves and the bump"). About 8 s a run: 10 samples.
 fn bench_plastic_bump(c: &mut Criterion) {
     use asperity::study::{Plan, PlanMode, Scene};
     let text = include_str!("../examples/scenes/switch-bump-plastic.toml");

@@ -66,6 +66,11 @@ impl HeightDistribution for Gaussian {
         (f64::NEG_INFINITY, f64::INFINITY)
     }
 
+    /// `true`: `phi(s) = exp(-s^2/2)/sqrt(2 pi)` itself.
+    fn is_standard_normal(&self) -> bool {
+        true
+    }
+
     fn moment_above(&self, n: f64, h: f64) -> f64 {
         if n.is_nan() || h.is_nan() || n < 0.0 {
             return f64::NAN;

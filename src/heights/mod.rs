@@ -147,6 +147,15 @@ pub trait HeightDistribution: Send + Sync + fmt::Debug {
     fn closed_form_moment(&self, _n: f64) -> bool {
         false
     }
+
+    /// Whether this is the standard normal density, whose shifts have the
+    /// product form `phi(s + d) = phi(s) exp(-s d) exp(-d^2/2)`: integrators
+    /// of many shifted copies of the density then step from one shift to
+    /// the next with one `exp` per node and distinct step
+    /// (`roughsphere/shifted_density.rs`). Default: `false`.
+    fn is_standard_normal(&self) -> bool {
+        false
+    }
 }
 
 mod empirical;

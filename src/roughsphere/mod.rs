@@ -59,6 +59,7 @@ mod problem;
 mod report;
 mod retract_table;
 mod shared_heights;
+mod shifted_density;
 mod solve;
 mod table;
 pub mod units;

@@ -20,10 +20,11 @@
 //! |f_k|` or an absolute floor, as [`GwModel`]'s quadrature does for one
 //! state; the panel with the worst component is bisected first.
 
+use super::shifted_density::Shifts;
 use crate::error::{Error, Result};
 use crate::gw::GwModel;
 use crate::law::{Branch, LawCursor};
-use crate::numeric::quadrature::{kronrod21_nodes, kronrod21_sums_one};
+use crate::numeric::quadrature::{kronrod21_nodes, kronrod21_sums_columns};
 
 /// Density at a support edge below which the edge is no breakpoint (the
 /// jump there is below any double the integral keeps).
@@ -101,8 +102,10 @@ impl<'a> SharedHeights<'a> {
             return Ok(vec![0.0; n]);
         }
         let points = self.pieces(t, h_mins, (z_lo, z_hi), (sup_lo, sup_hi));
+        let shifts = Shifts::new(dist, h_mins);
         let mut cursor = LawCursor::default();
         let (mut heights, mut density) = (vec![0.0; 21 * n], vec![0.0; 21 * n]);
+        let mut integrand = vec![0.0; 21 * n];
         let rule = |a: f64, b: f64| -> Panel {
             let z = kronrod21_nodes(a, b);
             let delta = z.map(|z| sigma * (z - t));
@@ -120,32 +123,30 @@ impl<'a> SharedHeights<'a> {
             if load.iter().all(|&l| l == 0.0) {
                 return p;
             }
-            // Every component's density at the 21 nodes in one call (one
-            // long vector loop instead of one short one per component).
-            for (k, &h) in h_mins.iter().enumerate() {
-                for j in 0..21 {
-                    heights[21 * k + j] = z[j] + h;
-                }
-            }
-            dist.pdf_batch(&heights, &mut density);
+            // Every component's density at the 21 nodes (one long vector
+            // loop, or for Gaussian heights the product form's steps).
+            shifts.fill(&z, &mut heights, &mut density);
+            // The integrand by node, the components in a row (zero outside
+            // the density's support), and the K21 sums of all components
+            // in loops over them.
             for k in 0..n {
-                let h = h_mins[k];
-                if b + h < sup_lo || a + h > sup_hi {
-                    // no height of this panel in the density's support
-                    continue;
-                }
-                let f: [f64; 21] = std::array::from_fn(|j| {
+                for j in 0..21 {
                     let s = heights[21 * k + j];
                     let inside = s >= sup_lo && s <= sup_hi;
-                    if inside {
+                    integrand[n * j + k] = if inside {
                         load[j] * density[21 * k + j]
                     } else {
                         0.0
-                    }
-                });
-                let (v, e, m) = kronrod21_sums_one(&f, 0.5 * (b - a));
-                (p.value[k], p.error[k], p.magnitude[k]) = (v, e, m);
+                    };
+                }
             }
+            kronrod21_sums_columns(
+                &integrand,
+                0.5 * (b - a),
+                &mut p.value,
+                &mut p.error,
+                &mut p.magnitude,
+            );
             p
         };
         self.adapt(rule, &points, n, t)

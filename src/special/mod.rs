@@ -11,6 +11,7 @@
 //! - [`elliptic`]: complete elliptic integrals `K(m)`, `E(m)`;
 //! - [`struve`]: Struve functions `H0`, `H1` of real argument.
 
+pub(crate) mod cbrt;
 pub mod elliptic;
 pub mod gamma;
 pub mod gaussian_fn;

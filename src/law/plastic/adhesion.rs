@@ -108,7 +108,7 @@ impl AdhesivePlastic {
         // R^(1/3) (interference) and R^(2/3) (radius), the load as R (one
         // cube root instead of MaugisScales::new's two).
         let ratio = u.radius / self.loading.asperity().radius;
-        let c = ratio.cbrt();
+        let c = crate::special::cbrt::cbrt(ratio);
         let s = MaugisScales {
             radius: self.elastic.radius * c * c,
             load: self.elastic.load * ratio,
