@@ -137,7 +137,12 @@ pub(crate) fn solve_gap_capped(
     let n = h.len();
     let nf = n as f64;
     let mut g: Vec<f64> = match warm {
-        Some(w) if w.iter().sum::<f64>() > 0.0 && g_mean > 0.0 && w.iter().all(|v| *v >= 0.0) => {
+        // Scaled to the mean (without a hardness always, as before it had
+        // one: the retraction paths depend on the start).
+        Some(w)
+            if w.iter().sum::<f64>() > 0.0
+                && (hardness.is_none() || (g_mean > 0.0 && w.iter().all(|v| *v >= 0.0))) =>
+        {
             let s = g_mean * nf / w.iter().sum::<f64>();
             w.iter().map(|v| v * s).collect()
         }
