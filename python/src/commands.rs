@@ -741,8 +741,8 @@ pub fn rough_sphere_py(
 ///     Hardness H (Pa, > 0): the contact pressure is capped at H
 ///     (elastic-perfectly-plastic); each state then has
 ///     ``plastic_area_fraction``, ``plastic_volume_m3`` and
-///     ``plastic_volume_per_area_m``. Mean pressures up to H; not with an
-///     adhesion.
+///     ``plastic_volume_per_area_m``. Mean pressures up to H; with an
+///     adhesion (periodic maps) the compressive pressure capped at H.
 /// gamma : float
 ///     Yang–Persson factor for Persson's mean gap, in [0, 1].
 /// resistivity : float, optional

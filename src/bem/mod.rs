@@ -194,6 +194,41 @@ impl Solution {
         }
     }
 
+    /// From the gap solver with a hardness `hard`: `g` the signed gap
+    /// (`g < 0` plastic, its pressure exactly `hard`); the returned gap is
+    /// clipped at 0; `p_mean` the solver's mean pressure (the multiplier).
+    fn from_capped_gap_fields(
+        mut p: Vec<f64>,
+        g: &[f64],
+        (hard, p_mean): (f64, f64),
+        it: usize,
+        residual: f64,
+    ) -> Self {
+        let n = g.len() as f64;
+        let (mut plastic_pixels, mut depth) = (0, 0.0);
+        for (pi, gi) in p.iter_mut().zip(g) {
+            if *gi < 0.0 {
+                *pi = hard;
+                plastic_pixels += 1;
+                depth -= gi;
+            }
+        }
+        let gap: Vec<f64> = g.iter().map(|v| v.max(0.0)).collect();
+        Solution {
+            mean_pressure: p_mean,
+            mean_gap: gap.iter().sum::<f64>() / n,
+            contact_pixels: g.iter().filter(|v| **v <= 0.0).count(),
+            pressure: p,
+            gap,
+            iterations: it,
+            residual,
+            converged: true,
+            plastic_pixels,
+            plastic_volume_per_area: depth / n,
+            elastic_energy_per_area: 0.0,
+        }
+    }
+
     /// Whether every pixel is in contact (then [`Solution::area_fraction`]
     /// is exactly 1; it is below 1 whenever one pixel is open).
     pub fn full_contact(&self) -> bool {
@@ -361,14 +396,12 @@ impl Problem {
     /// # Errors
     /// [`Error::OutOfRange`] naming `adhesion_energy` or `adhesion_range`;
     /// [`Error::Invalid`] named `periodic` on a padded map (the gap solver
-    /// needs the periodic stiffness), named `hardness` on a problem with a
-    /// hardness (the adhesive solver has no pressure cap).
+    /// needs the periodic stiffness). With a hardness
+    /// ([`Problem::with_hardness`]) the compressive pressure is capped at
+    /// `H` as well (the gap solver's plastic extension, `docs/physics.md`).
     pub fn with_adhesion(mut self, energy: f64, range: f64) -> Result<Self> {
         positive("adhesion_energy", energy)?;
         positive("adhesion_range", range)?;
-        if self.hardness.is_some() {
-            return Err(no_plastic_adhesion());
-        }
         if !self.periodic {
             return Err(Error::invalid(
                 "periodic",
@@ -389,15 +422,15 @@ impl Problem {
     /// Glavatskih 2007, Tribol. Int. 40, 574; `docs/physics.md`). A mean
     /// pressure above `H` has no solution.
     ///
+    /// With adhesion ([`Problem::with_adhesion`], periodic maps) the
+    /// exponential interaction acts where the gap is open and the
+    /// compressive contact pressure is capped at `H`: the gap solver with
+    /// the interaction extended below `g = 0` by `phi(0) - H g`.
+    ///
     /// # Errors
-    /// [`Error::OutOfRange`] naming `hardness` (finite, > 0);
-    /// [`Error::Invalid`] named `hardness` on a problem with adhesion (the
-    /// adhesive solver has no pressure cap).
+    /// [`Error::OutOfRange`] naming `hardness` (finite, > 0).
     pub fn with_hardness(mut self, hardness: f64) -> Result<Self> {
         positive("hardness", hardness)?;
-        if self.adhesion.is_some() {
-            return Err(no_plastic_adhesion());
-        }
         self.hardness = Some(hardness);
         Ok(self)
     }
@@ -564,6 +597,9 @@ impl Problem {
         if let Some(s) = self.separated(gap, options) {
             return Ok(s);
         }
+        if let (true, Some(_), Some(_)) = (self.periodic, self.adhesion, self.hardness) {
+            return self.solve_adhesive_plastic_gap(gap, options, warm);
+        }
         if self.periodic && self.hardness.is_none() {
             return gap_control::solve_gap(
                 &self.op,
@@ -589,6 +625,47 @@ impl Problem {
             let v = s.mean_gap;
             last = Some(s.clone());
             Ok((v, s))
+        })
+    }
+
+    /// Adhesion with a hardness at mean (clipped) gap `gap`: the gap
+    /// solver imposes the mean `m` of the signed gap (the approach), and the
+    /// mean separation is `m + V_pl/A0` (the displaced volume per area), so
+    /// the state is found at `m = gap` first and, if it has plastic pixels,
+    /// by [`monotone_root`] on `x = gap - m > 0` (the separation decreases
+    /// with `x`) from `x` = that state's displaced volume per area; every
+    /// solve warm-starts from the previous signed gap.
+    fn solve_adhesive_plastic_gap(
+        &self,
+        gap: f64,
+        options: &Options,
+        warm: Option<&Solution>,
+    ) -> Result<Solution> {
+        let mut last: Option<Vec<f64>> = warm
+            .map(|w| w.gap.clone())
+            .filter(|w| w.iter().any(|v| *v != 0.0));
+        let mut solve = |m: f64| -> Result<Solution> {
+            let (s, g) = gap_control::solve_gap_capped(
+                &self.op,
+                &self.heights,
+                self.p_ref,
+                m,
+                (self.adhesion, self.hardness),
+                options,
+                last.as_deref(),
+            )?;
+            last = Some(g);
+            Ok(s)
+        };
+        let s = solve(gap)?;
+        let tol = (10.0 * options.tolerance).max(1e-12) * self.h_rms;
+        if (s.mean_gap - gap).abs() <= tol {
+            return Ok(s);
+        }
+        let x0 = s.mean_gap - gap;
+        monotone_root(x0, gap, tol, true, |x| {
+            let s = solve(gap - x)?;
+            Ok((s.mean_gap, s))
         })
     }
 
@@ -635,14 +712,6 @@ impl Problem {
     pub fn clusters(&self, s: &Solution) -> Vec<Cluster> {
         clusters::clusters(&s.contact(), self.rows, self.cols, self.periodic)
     }
-}
-
-/// The refusal of adhesion with a hardness.
-fn no_plastic_adhesion() -> Error {
-    Error::invalid(
-        "hardness",
-        "the adhesive solver (gap variables) has no pressure cap: give a hardness or an adhesion, not both",
-    )
 }
 
 /// Finds `x > 0` with `f(x) = target` for `f` monotone (decreasing when

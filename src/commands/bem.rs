@@ -100,7 +100,8 @@ pub struct BemInput {
     pub adhesion: Option<BemAdhesion>,
     /// Hardness `H` (Pa, finite, > 0): the contact pressure capped at `H`
     /// (elastic–perfectly-plastic, [`crate::bem::Problem::with_hardness`]);
-    /// mean pressures at most `H`; not with an adhesion.
+    /// mean pressures at most `H`; with an adhesion (periodic maps) the
+    /// adhesive solver with the pressure capped at `H`.
     pub hardness: Option<f64>,
     /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap
     /// (default 1).
@@ -185,22 +186,12 @@ impl BemInput {
         Ok(())
     }
 
-    /// The hardness: finite and > 0, without adhesion, and no mean
-    /// pressure above it.
+    /// The hardness: finite and > 0, and no mean pressure above it.
     fn validate_hardness(&self) -> CommandResult<()> {
         let Some(h) = self.hardness else {
             return Ok(());
         };
         positive(&param("hardness"), h)?;
-        if self.adhesion.is_some() {
-            return Err(Error::invalid(
-                param("hardness"),
-                format!(
-                    "not with {}: the adhesive solver has no pressure cap; give one or the other",
-                    param("adhesion_energy")
-                ),
-            ));
-        }
         if let BemTargets::Pressures(p) = &self.targets {
             for (i, &v) in p.iter().enumerate() {
                 if v > h {

@@ -1,6 +1,11 @@
 //! GW's model error on a measured map: the run's summits against the exact
 //! elastic half-space solution of the same map by FFT boundary elements
-//! ([`crate::bem::Problem`]), at the same loads.
+//! ([`crate::bem::Problem`]), at the same loads. With an elastic-plastic law
+//! and the yielding body's hardness `H` the exact solution is the
+//! elastic–perfectly-plastic half-space, the pressure capped at `H`
+//! ([`crate::bem::Problem::with_hardness`]); GW stays Hertz's (the elastic
+//! part), so the differences then include the plasticity, as the reference
+//! sentence says.
 //!
 //! GW here is the run's own summit model (the measured summits summed
 //! exactly, or Gaussian GW on the map's moments, `surface.summits`), with
@@ -389,9 +394,13 @@ pub fn measure(plan: &Plan, closest: f64, gw_seconds: f64) -> Result<Option<MapM
         )));
     }
     let t0 = Instant::now();
+    // Elastic–perfectly-plastic: no state carries a mean pressure above H.
+    let cap = exact_hardness(plan).map_or(f64::INFINITY, |h| h * gw.nominal_area);
+    let all = loads.len();
+    let loads: Vec<f64> = loads.into_iter().filter(|&l| l <= cap).collect();
     match exact_states(plan, &gw, &loads, &options) {
         Ok(states) => Ok(Some(MapModelError {
-            reference: reference(plan),
+            reference: reference(plan, all - loads.len()),
             states,
             estimate_s: estimate,
             seconds: t0.elapsed().as_secs_f64(),
@@ -404,13 +413,50 @@ pub fn measure(plan: &Plan, closest: f64, gw_seconds: f64) -> Result<Option<MapM
     }
 }
 
-/// The reference sentence of a measured comparison.
-fn reference(plan: &Plan) -> String {
+/// The hardness `H` (Pa) capping the exact solution's pressure: the
+/// yielding body's (`materials.hardness`, or its default from the yield
+/// strength) when the scene's law is elastic-plastic; `None` (the elastic
+/// half-space) for an elastic law or without plastic data.
+fn exact_hardness(plan: &Plan) -> Option<f64> {
+    plan.decisions.iter().find_map(|d| match d {
+        super::plan::Decision::Plasticity {
+            hardness,
+            plastic_law: true,
+            ..
+        } => Some(*hardness),
+        _ => None,
+    })
+}
+
+/// The reference sentence of a measured comparison; `dropped` loads above
+/// the hardness times the nominal area (no elastic–perfectly-plastic state
+/// carries them) are named.
+fn reference(plan: &Plan, dropped: usize) -> String {
     let adhesive = plan.contact.adhesion.work() > 0.0;
+    let solid = match exact_hardness(plan) {
+        Some(h) => format!(
+            "exact elastic–perfectly-plastic half-space, hardness H = {h:e} Pa (the contact \
+             pressure capped at H{})",
+            if dropped > 0 {
+                format!(
+                    "; {dropped} load(s) above H times the nominal area have no such state and \
+                     are left out"
+                )
+            } else {
+                String::new()
+            }
+        ),
+        None => "exact elastic half-space".to_string(),
+    };
+    let gw = if exact_hardness(plan).is_some() {
+        ", elastic: the differences include the plasticity the exact states have"
+    } else {
+        ""
+    };
     format!(
-        "exact elastic half-space, FFT boundary elements, tolerance {EXACT_TOLERANCE:e}, on the \
-         same map{}: GW is the run's summits with Hertz's law{} (area and mean_gap at the same \
-         load, load at the same mean gap, per state)",
+        "{solid}, FFT boundary elements, tolerance {EXACT_TOLERANCE:e}, on the \
+         same map{}: GW is the run's summits with Hertz's law{gw}{} (area and mean_gap at the \
+         same load, load at the same mean gap, per state)",
         match &plan.topography {
             Some(t) if t.characterisation.periodic => " (periodic)",
             _ => " (padded to twice its size)",
@@ -443,6 +489,10 @@ fn exact_states(
         c.periodic,
         options,
     )?;
+    let problem = match exact_hardness(plan) {
+        Some(h) => problem.with_hardness(h)?,
+        None => problem,
+    };
     let a_n = gw.nominal_area;
     let mut warm: Option<Solution> = None;
     let mut out = Vec::with_capacity(loads.len());

@@ -202,27 +202,35 @@ fn against_the_independent_active_set_solution() {
     }
 }
 
+/// A bad hardness is named with its range; hardness and adhesion combine
+/// in either order (`tests/it/bem_plastic_adhesion.rs`), and a padded map
+/// with adhesion is refused naming `periodic`, hardness or not.
 #[test]
-fn hardness_and_adhesion_refuse_each_other_and_bad_hardness_is_named() {
+fn bad_hardness_is_named_and_adhesion_combines_with_it() {
     let (map, dx) = self_affine(16, 0.08, 1);
     let opts = Options::default();
-    let prob = || Problem::new(&map, dx, 1e9, true, &opts).unwrap();
+    let prob = |periodic| Problem::new(&map, dx, 1e9, periodic, &opts).unwrap();
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        let e = prob().with_hardness(bad).unwrap_err().to_string();
+        let e = prob(true).with_hardness(bad).unwrap_err().to_string();
         assert!(e.contains("hardness") && e.contains("(0, inf)"), "{e}");
     }
-    let e = prob()
+    let a = prob(true)
         .with_hardness(1e8)
         .unwrap()
-        .with_adhesion(0.05, 1e-9)
-        .unwrap_err();
-    assert!(e.to_string().contains("hardness"), "{e}");
-    let e = prob()
-        .with_adhesion(0.05, 1e-9)
+        .with_adhesion(0.2, 5e-8)
+        .unwrap();
+    let b = prob(true)
+        .with_adhesion(0.2, 5e-8)
         .unwrap()
         .with_hardness(1e8)
+        .unwrap();
+    assert_eq!(a.hardness(), b.hardness());
+    let e = prob(false)
+        .with_hardness(1e8)
+        .unwrap()
+        .with_adhesion(0.2, 5e-8)
         .unwrap_err();
-    assert!(e.to_string().contains("hardness"), "{e}");
+    assert!(e.to_string().contains("periodic"), "{e}");
 }
 
 fn run(args: &[&str]) -> (i32, String, String) {
@@ -284,25 +292,12 @@ fn cli_hardness_prints_the_plastic_outputs_and_names_bad_values() {
     let (code, out, _) = run(&args);
     assert_eq!(code, 0);
     assert!(!out.contains("plastic") && !out.contains("hardness"));
-    let bad: [(&[&str], &str); 4] = [
+    let bad: [(&[&str], &str); 3] = [
         (&["--pressures", "5e6", "--hardness", "-1"], "--hardness"),
         (&["--pressures", "5e6", "--hardness", "inf"], "--hardness"),
         (
             &["--pressures", "5e6,2e8", "--hardness", "1e8"],
             "--pressures",
-        ),
-        (
-            &[
-                "--pressures",
-                "5e6",
-                "--hardness",
-                "1e8",
-                "--adhesion-energy",
-                "0.05",
-                "--adhesion-range",
-                "1e-9",
-            ],
-            "--hardness",
         ),
     ];
     for (extra, name) in bad {

@@ -18,6 +18,8 @@ mod bem;
 mod bem_full;
 mod bem_honest;
 mod bem_plastic;
+mod bem_plastic_adhesion;
+mod bem_plastic_cm;
 mod bem_threads;
 mod capillary;
 mod capillary_maps;

@@ -134,3 +134,65 @@ fn a_map_too_large_says_so_with_the_estimate() {
     assert!(estimate > 2.0, "{estimate}");
     assert!(m.get("area").is_none(), "{m}");
 }
+
+/// With an elastic-plastic law and the yielding body's hardness the exact
+/// solution is the elastic–perfectly-plastic half-space with that `H`
+/// (`Problem::with_hardness`), and the reference names it: the example's
+/// map with Kogut–Etsion summits (GW on the map's moments) and
+/// `materials.hardness = 2e9` (above
+/// every mean pressure of the program, below the elastic peaks, so pixels
+/// yield), its exact states equal to the library's at the same pressures.
+#[test]
+fn a_plastic_law_is_compared_against_the_plastic_half_space() {
+    let d = tmp("plastic");
+    let text = example("measured-topography.toml")
+        .replace(
+            "nu2 = 0.42\n",
+            "nu2 = 0.42\nyield_strength = 0.5e9\nhardness = 2e9\n",
+        )
+        .replace("kind = \"jkr\"", "kind = \"kogut-etsion\"")
+        // Kogut–Etsion has no radius scaling: Gaussian GW on the moments.
+        .replace("summits = \"measured\"", "summits = \"moments\"")
+        .replace("compare = true", "compare = false");
+    let v = run_scene(&text, &d);
+    let m = &v["model_error"];
+    let reference = m["reference"].as_str().unwrap();
+    assert!(
+        reference.starts_with("exact elastic–perfectly-plastic half-space, hardness H = 2e9 Pa"),
+        "{m}"
+    );
+    assert!(reference.contains("include the plasticity"), "{reference}");
+    let states = m["states"].as_array().unwrap();
+    assert!(!states.is_empty(), "{m}");
+    let bytes = std::fs::read(root().join("examples/data/measured-topography.npy")).unwrap();
+    let map: HeightMap = npy::parse(&bytes).unwrap();
+    let estar = num(&v["contact_modulus"]);
+    let options = Options {
+        tolerance: 1e-10,
+        ..Options::default()
+    };
+    let problem = Problem::new(&map, 50e-9, estar, false, &options)
+        .unwrap()
+        .with_hardness(2e9)
+        .unwrap();
+    let elastic = Problem::new(&map, 50e-9, estar, false, &options).unwrap();
+    let mut warm: Option<Solution> = None;
+    let mut yielded = false;
+    for (k, s) in states.iter().enumerate() {
+        let p = num(&s["pressure_Pa"]);
+        let exact = problem.solve_pressure(p, &options, warm.as_ref()).unwrap();
+        assert_eq!(
+            num(&s["exact_area_fraction"]),
+            exact.area_fraction(),
+            "state {k}"
+        );
+        assert!((num(&s["exact_mean_gap_m"]) - exact.mean_gap).abs() <= 1e-12 * exact.mean_gap);
+        if exact.plastic_pixels > 0 {
+            yielded = true;
+            let e = elastic.solve_pressure(p, &options, None).unwrap();
+            assert_ne!(e.area_fraction(), exact.area_fraction(), "state {k}");
+        }
+        warm = Some(exact);
+    }
+    assert!(yielded, "no state has a plastic pixel: {m}");
+}

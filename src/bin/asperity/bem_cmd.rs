@@ -48,8 +48,9 @@ pub struct BemArgs {
     adhesion_range: Option<f64>,
     /// Hardness H (Pa, > 0): the contact pressure is capped at H
     /// (elastic-perfectly-plastic); prints the plastic area fraction and the
-    /// plastically displaced volume. Mean pressures up to H; not with
-    /// adhesion.
+    /// plastically displaced volume. Mean pressures up to H; with
+    /// --adhesion-energy/--adhesion-range (periodic maps) the adhesive
+    /// contact with the compressive pressure capped at H.
     #[arg(long, allow_hyphen_values = true)]
     hardness: Option<f64>,
     /// Yang–Persson factor gamma in [0, 1] for Persson's mean gap.
