@@ -71,18 +71,17 @@ fn non_finite_cell(csv: &str) -> Option<(String, String, String)> {
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next()?.split(',').collect();
     for line in lines {
-        // Only a cell with a letter other than the exponent's `e` can read
-        // as a non-finite number (`inf`, `NaN`, `infinity`): the other lines
-        // need no parse. The first cell is the leg's name.
-        let rest = line.split_once(',').map_or("", |(_, r)| r);
-        if !rest
-            .bytes()
-            .any(|b| b.is_ascii_alphabetic() && !b.eq_ignore_ascii_case(&b'e'))
-        {
-            continue;
-        }
         let cells: Vec<&str> = line.split(',').collect();
         for (i, c) in cells.iter().enumerate() {
+            // Only a cell with a letter other than the exponent's `e` can
+            // read as a non-finite number (`inf`, `NaN`, `infinity`): the
+            // numbers need no parse.
+            if !c
+                .bytes()
+                .any(|b| b.is_ascii_alphabetic() && !b.eq_ignore_ascii_case(&b'e'))
+            {
+                continue;
+            }
             if c.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
                 let col = header.get(i).copied().unwrap_or("?");
                 let at = cells.iter().take(2).copied().collect::<Vec<_>>().join(" ");
