@@ -14,12 +14,7 @@ use std::hint::black_box;
 /// User + system CPU time of this process (s), from /proc/self/stat
 /// (clock ticks of 10 ms; `None` off Linux).
 fn cpu_seconds() -> Option<f64> {
-    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
-    // fields after the command name in parentheses
-    let rest = &stat[stat.rfind(')')? + 2..];
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let ticks: f64 = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
-    Some(ticks / 100.0)
+    asperity::study::cpu_time::process_cpu_seconds()
 }
 
 fn bench_rough_sphere(c: &mut Criterion) {

@@ -25,6 +25,7 @@
 
 pub mod atomic;
 pub mod cache;
+pub mod cpu_time;
 pub mod map_error;
 pub mod map_pull_off;
 pub mod measured;

@@ -32,20 +32,7 @@ use std::time::Instant;
 /// CPU time (s) of every thread of the process, from the nanosecond
 /// counters of `/proc/self/task/*/schedstat`.
 fn cpu_s() -> f64 {
-    let mut ns = 0u64;
-    for t in std::fs::read_dir("/proc/self/task")
-        .into_iter()
-        .flatten()
-        .flatten()
-    {
-        let s = std::fs::read_to_string(t.path().join("schedstat")).unwrap_or_default();
-        ns += s
-            .split_whitespace()
-            .next()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(0);
-    }
-    ns as f64 * 1e-9
+    asperity::study::cpu_time::process_cpu_seconds().unwrap_or(f64::NAN)
 }
 
 /// Median (CPU, wall) seconds of `reps` calls of `f`.

@@ -36,19 +36,7 @@ pub fn selfaffine_map() -> (HeightMap, f64) {
 }
 
 fn cpu_s() -> f64 {
-    let s = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
-    let f: Vec<&str> = s
-        .rsplit(')')
-        .next()
-        .unwrap_or("")
-        .split_whitespace()
-        .collect();
-    let t = |i: usize| {
-        f.get(i)
-            .and_then(|v| v.parse::<f64>().ok())
-            .unwrap_or(f64::NAN)
-    };
-    (t(11) + t(12)) / 100.0
+    asperity::study::cpu_time::process_cpu_seconds().unwrap_or(f64::NAN)
 }
 
 /// A sphere of radius 1 in a cell of side 1 on `n x n` pixels (centred on a

@@ -11,20 +11,7 @@ use asperity::bem::{Options, Problem};
 use asperity::surface::npy;
 
 fn cpu_s() -> f64 {
-    let mut ns = 0u64;
-    for t in std::fs::read_dir("/proc/self/task")
-        .into_iter()
-        .flatten()
-        .flatten()
-    {
-        let s = std::fs::read_to_string(t.path().join("schedstat")).unwrap_or_default();
-        ns += s
-            .split_whitespace()
-            .next()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(0);
-    }
-    ns as f64 * 1e-9
+    asperity::study::cpu_time::process_cpu_seconds().unwrap_or(f64::NAN)
 }
 
 fn main() {

@@ -28,11 +28,7 @@ use std::sync::Arc;
 
 /// utime + stime of this process (s), from /proc/self/stat.
 fn cpu_seconds() -> f64 {
-    let s = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
-    let after = s.rsplit_once(')').map_or("", |x| x.1);
-    let f: Vec<&str> = after.split_whitespace().collect();
-    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
-    (ticks(11) + ticks(12)) / 100.0
+    asperity::study::cpu_time::process_cpu_seconds().unwrap_or(f64::NAN)
 }
 
 fn list(v: impl Iterator<Item = f64>) -> String {

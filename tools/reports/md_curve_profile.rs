@@ -14,19 +14,7 @@ use std::sync::Arc;
 
 /// Process CPU time (s), all threads, from `/proc/self/stat` (Linux).
 fn cpu_seconds() -> f64 {
-    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
-        return f64::NAN;
-    };
-    // Fields after the parenthesised command: utime and stime are the 12th
-    // and 13th, in clock ticks (100 per second on Linux).
-    let rest = stat.rsplit(')').next().unwrap_or("");
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let tick = |i: usize| {
-        f.get(i)
-            .and_then(|x| x.parse::<f64>().ok())
-            .unwrap_or(f64::NAN)
-    };
-    (tick(11) + tick(12)) / 100.0
+    asperity::study::cpu_time::process_cpu_seconds().unwrap_or(f64::NAN)
 }
 
 fn main() {

@@ -5,6 +5,7 @@ use super::edit::set_field;
 use super::spec::{Shard, SweepPoint, SweepSpec};
 use super::store::{ResultsFile, SweepMeta};
 use crate::error::{Error, Result};
+use crate::study::cpu_time::process_cpu_seconds;
 use crate::study::{Plan, PlanMode, Quantity, Scene, Summary, Table};
 use rayon::prelude::*;
 use serde::Deserialize;
@@ -35,18 +36,6 @@ pub struct SweepOptions {
 /// sweep is refused with its estimate unless the limit is raised
 /// (`--max-cpu-seconds`, `max_cpu_seconds=`), or sharded.
 pub const DEFAULT_MAX_CPU_SECONDS: f64 = 86_400.0;
-
-/// The CPU time (s) this process has used (user + system, from
-/// `/proc/self/stat`; `None` where it cannot be read).
-fn process_cpu_seconds() -> Option<f64> {
-    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
-    // Fields after the command name (which may hold spaces) in parentheses.
-    let rest = &stat[stat.rfind(')')? + 2..];
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let ticks = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
-    // The kernel reports USER_HZ = 100 ticks per second on Linux.
-    Some(ticks / 100.0)
-}
 
 /// The estimate of a sweep's remaining CPU time from its first point's
 /// (`seconds`, the larger of its wall and CPU time), checked against
