@@ -9,11 +9,21 @@ that instruction rather than skip.
 import json
 import math
 import os
+import signal
 import subprocess
 from pathlib import Path
 
 import numpy as np
 import pytest
+
+# A job started in the background by a non-interactive shell has SIGINT
+# ignored, and its children inherit that: a child Python then installs no
+# KeyboardInterrupt handler and the Ctrl-C tests (and the README's Ctrl-C
+# walk-through) could not be interrupted. Take SIGINT back for this process;
+# a handled signal is reset to the default in a child at exec, so the
+# children's Python installs its own handler again.
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 REPO = Path(__file__).resolve().parents[2]
 
