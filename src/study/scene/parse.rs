@@ -23,13 +23,11 @@ impl Scene {
         // kind): a NaN the user wrote must not pass for "not given". TOML
         // spells it `nan` (`+nan`, `-nan`): a text without those letters
         // has none, and is not parsed a second time.
-        if !text.contains("nan") {
-            scene.validate()?;
-            return Ok(scene);
-        }
-        if let Ok(table) = text.parse::<toml::Table>() {
-            if let Some(path) = first_nan(&table, "") {
-                finite(&path, f64::NAN)?;
+        if text.contains("nan") {
+            if let Ok(table) = text.parse::<toml::Table>() {
+                if let Some(path) = first_nan(&table, "") {
+                    finite(&path, f64::NAN)?;
+                }
             }
         }
         scene.validate()?;
