@@ -15,7 +15,6 @@
 use super::{Shape, SphereFacts, SpherePoint, SphereProblem, SOLVER_VERSION};
 use crate::error::{Error, Result};
 use crate::law::tabulated::{BranchTable, CurveTable, Tabulated};
-use crate::law::InstabilityBar;
 use crate::material::LAMBDA_PER_TABOR;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
@@ -23,8 +22,9 @@ use std::sync::Arc;
 /// Bump when a change alters calibration tables (what is traced, how the
 /// table is built or read): cached calibrations are keyed by it as well as
 /// by [`SOLVER_VERSION`]. 2: tables reach `Pbar >= 100`, the far field's
-/// elastic enhancement decays, no far-field cut.
-pub const CALIBRATION_VERSION: u32 = 2;
+/// elastic enhancement decays, no far-field cut. 3: the stored critical
+/// points are the traced points themselves ([`SpherePoint`]).
+pub const CALIBRATION_VERSION: u32 = 3;
 
 /// Smallest load `P/(pi w R)` a calibration traces to, whatever
 /// `max_load_bar` its options ask (a larger one is honoured): rough-surface
@@ -77,24 +77,6 @@ fn branch(points: &[SpherePoint]) -> BranchTable {
     b
 }
 
-fn table_point(c: &super::Critical) -> InstabilityBar {
-    c.bar()
-}
-
-fn as_point(c: &super::Critical) -> SpherePoint {
-    SpherePoint {
-        central_gap: c.central_gap,
-        approach: 0.0,
-        load_bar: c.load_bar,
-        radius: 0.0,
-        interference_bar: c.interference_bar,
-        radius_bar: c.radius_bar,
-        d_approach: 0.0,
-        d_load: 0.0,
-        arc: c.arc,
-    }
-}
-
 impl Calibration {
     /// Traces `problem` (to a load of at least [`TABLE_MIN_LOAD_BAR`]) and
     /// tabulates both branches.
@@ -128,8 +110,8 @@ impl Calibration {
                     .filter(|p| p.central_gap > ji.central_gap)
                     .copied()
                     .collect();
-                det.push(as_point(&ji));
-                let mut att = vec![as_point(&jo)];
+                det.push(ji);
+                let mut att = vec![jo];
                 att.extend(
                     curve
                         .iter()
@@ -158,8 +140,8 @@ impl Calibration {
             attached,
             attach_bar: facts.jump_in.map(|j| j.interference_bar),
             detach_bar: facts.jump_out.map(|j| j.interference_bar),
-            pull_off: table_point(&facts.pull_off),
-            jump_out: facts.jump_out.as_ref().map(table_point),
+            pull_off: facts.pull_off.bar(),
+            jump_out: facts.jump_out.as_ref().map(SpherePoint::bar),
             zero_load_radius_bar: facts.zero_load_radius_bar,
             far_field_scale: mu * super::trace::MAUGIS_INTERFERENCE,
         };

@@ -210,23 +210,9 @@ pub struct SpherePoint {
     pub arc: f64,
 }
 
-/// A critical point in Maugis units.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Critical {
-    /// Load `P/(pi w R)`.
-    pub load_bar: f64,
-    /// Interference `Dbar`.
-    pub interference_bar: f64,
-    /// Contact radius `A`.
-    pub radius_bar: f64,
-    /// Central gap `H(0)/z0`.
-    pub central_gap: f64,
-    /// Arc length from the start of the trace (orders points along the curve).
-    pub arc: f64,
-}
-
-impl Critical {
-    /// The point in Maugis units, without the solver's own coordinates.
+impl SpherePoint {
+    /// The point as an instability in Maugis units (load, interference,
+    /// contact radius), without the solver's own coordinates.
     pub fn bar(&self) -> crate::law::InstabilityBar {
         crate::law::InstabilityBar {
             load_bar: self.load_bar,
@@ -239,13 +225,14 @@ impl Critical {
 /// The derived facts of one solver curve.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SphereFacts {
-    /// Pull-off under load control: the minimum load.
-    pub pull_off: Critical,
+    /// Pull-off under load control: the minimum load (the traced point
+    /// there, refined to where `dP/dt` changes sign).
+    pub pull_off: SpherePoint,
     /// Jump-out under displacement control (local minimum of the approach
     /// along the curve); `None` when the curve has no S (small mu).
-    pub jump_out: Option<Critical>,
+    pub jump_out: Option<SpherePoint>,
     /// Jump-in on approach (local maximum of the approach); `None` without S.
-    pub jump_in: Option<Critical>,
+    pub jump_in: Option<SpherePoint>,
     /// Contact radius `A` at zero load on the contact branch.
     pub zero_load_radius_bar: Option<f64>,
     /// Mesh nodes at the pull-off.
@@ -481,16 +468,7 @@ impl SphereProblem {
             let last = &s.last().unwrap().sol;
             last.load > 0.05 && last.radius > 0.0 && last.dt_load > 0.0
         })?;
-        let crit = |s: &State| {
-            let p = point(self.mu, s);
-            Critical {
-                load_bar: p.load_bar,
-                interference_bar: p.interference_bar,
-                radius_bar: p.radius_bar,
-                central_gap: p.central_gap,
-                arc: p.arc,
-            }
-        };
+        let crit = |s: &State| point(self.mu, s);
         // Pull-off: dP/dt from < 0 to >= 0 along the curve; keep the lowest.
         let mut pull: Option<State> = None;
         for w in st.windows(2) {
@@ -541,7 +519,7 @@ impl SphereProblem {
     ///
     /// # Errors
     /// As [`facts`](Self::facts).
-    pub fn pull_off(&self) -> Result<Critical> {
+    pub fn pull_off(&self) -> Result<SpherePoint> {
         Ok(self.facts()?.pull_off)
     }
 
