@@ -2,49 +2,14 @@
 //! SVG charts of load against separation, real area against load and
 //! contact count against load.
 
-use super::{curve_csv, Summary};
+use super::format::si_prefix_area;
+use super::{curve_csv, si_prefix, Summary};
 use crate::error::{Error, Result};
 use crate::loading::State;
 use crate::study::plan::Plan;
 use crate::study::plot::{Chart, Histogram, Series};
 use crate::study::run::Results;
 use std::path::{Path, PathBuf};
-
-/// A display unit for a set of values: the SI prefix that puts the largest
-/// magnitude in `[1, 1000)`, e.g. `(1e-6, "u")`.
-pub fn si_prefix(values: impl Iterator<Item = f64>) -> (f64, &'static str) {
-    let max = values
-        .filter(|v| v.is_finite())
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    const PREFIXES: [(f64, &str); 10] = [
-        (1e-18, "a"),
-        (1e-15, "f"),
-        (1e-12, "p"),
-        (1e-9, "n"),
-        (1e-6, "u"),
-        (1e-3, "m"),
-        (1.0, ""),
-        (1e3, "k"),
-        (1e6, "M"),
-        (1e9, "G"),
-    ];
-    if max == 0.0 {
-        return (1.0, "");
-    }
-    PREFIXES
-        .iter()
-        .rev()
-        .find(|(s, _)| max >= *s)
-        .copied()
-        .unwrap_or(PREFIXES[0])
-}
-
-/// A display unit for areas: the length prefix that puts the largest
-/// `sqrt(area)` in `[1, 1000)`, squared, e.g. `(1e-12, "u")` for um^2.
-pub fn si_prefix_area(values: impl Iterator<Item = f64>) -> (f64, &'static str) {
-    let (s, p) = si_prefix(values.map(|v| v.abs().sqrt()));
-    (s * s, p)
-}
 
 /// Every file [`write_outputs`] may write: the ones a run does not write
 /// this time are removed from the directory, so no output of an earlier run
@@ -456,16 +421,5 @@ mod tests {
             Some(("load_N".into(), "approach 2e-9".into(), "inf".into()))
         );
         assert!(non_finite_cell("a,b\nNaN,1\n").is_some());
-    }
-
-    #[test]
-    fn prefixes_put_the_largest_value_in_one_to_a_thousand() {
-        assert_eq!(si_prefix([2.5e-6, -1e-7].into_iter()), (1e-6, "u"));
-        assert_eq!(si_prefix([999e-9].into_iter()), (1e-9, "n"));
-        assert_eq!(si_prefix([0.0].into_iter()), (1.0, ""));
-        assert_eq!(si_prefix([f64::NAN, 3.0].into_iter()), (1.0, ""));
-        let (s, p) = si_prefix_area([2.2e-11].into_iter());
-        assert_eq!(p, "u");
-        assert!((s - 1e-12).abs() < 1e-27);
     }
 }

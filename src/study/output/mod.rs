@@ -3,6 +3,7 @@
 //! report lines of the states' quantities follow the plan's
 //! [`QuantitySet`](crate::study::quantity::QuantitySet).
 
+mod aliases;
 mod feature_figures;
 mod figures;
 pub mod format;
@@ -13,12 +14,14 @@ mod table;
 mod tables;
 mod topography;
 
+pub use aliases::Aliases;
 pub use feature_figures::{feature_charts, FeatureChart};
-pub use figures::{charts, check_outputs, si_prefix, si_prefix_area, write_outputs, OUTPUT_FILES};
+pub use figures::{charts, check_outputs, write_outputs, OUTPUT_FILES};
+pub use format::{si_prefix, si_prefix_area};
 pub use report::text_report;
 pub use summary::{
-    Aliases, HeatingSummary, McSummary, PlasticitySummary, SampleSpotsSummary, StictionSummary,
-    Summary, DEPRECATED_KEYS,
+    HeatingSummary, McSummary, PlasticitySummary, SampleSpotsSummary, StictionSummary, Summary,
+    DEPRECATED_KEYS,
 };
 pub use table::{Column, Table, INTEGER_COLUMNS, TEXT_COLUMNS};
 pub use tables::{curve_csv, montecarlo_csv};

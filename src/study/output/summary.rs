@@ -3,6 +3,7 @@
 //! [`QuantitySet`](crate::study::quantity::QuantitySet); the rest are the
 //! run's scalar results and the optional features' objects.
 
+use super::aliases::Aliases;
 use super::topography::{self, TopographySummary};
 use crate::study::plan::Plan;
 use crate::study::quantity::{Headlines, StateRow};
@@ -150,35 +151,6 @@ pub const DEPRECATED_KEYS: [(&str, &str); 15] = [
         "montecarlo.pull_off_seed_std_N",
     ),
 ];
-
-/// Deprecated aliases: old keys with the values of their renamed keys,
-/// serialised as entries of the enclosing object.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Aliases(pub Vec<(String, serde_json::Value)>);
-
-impl Serialize for Aliases {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut m = s.serialize_map(Some(self.0.len()))?;
-        for (k, v) in &self.0 {
-            m.serialize_entry(k, v)?;
-        }
-        m.end()
-    }
-}
-
-impl Aliases {
-    pub(crate) fn of<'a>(
-        entries: impl IntoIterator<Item = (&'a str, serde_json::Value)>,
-    ) -> Aliases {
-        Aliases(
-            entries
-                .into_iter()
-                .map(|(k, v)| (k.to_string(), v))
-                .collect(),
-        )
-    }
-}
 
 /// The model error of the headline outputs (relative: `(law -
 /// reference)/|reference|`; `null` where not measured).

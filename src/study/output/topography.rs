@@ -1,8 +1,8 @@
 //! The summary's `topography` object and the charts of a measured map.
 
+use super::aliases::Aliases;
 use crate::error::Result;
 use crate::study::measured::Headline;
-use crate::study::output::summary::Aliases;
 use crate::study::plan::Plan;
 use crate::study::plot::surface::{write_summit_heights, write_summit_map};
 use crate::study::quantity::Headlines;
