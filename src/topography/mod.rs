@@ -27,6 +27,7 @@ mod fill;
 mod frt;
 mod gwy;
 mod ibw;
+mod inflate;
 mod mapped;
 mod md5;
 mod nc;

@@ -11,7 +11,7 @@
 //! um, x fastest (exactly that many bytes). NaN heights are missing. The
 //! channels are named `Layer k`; the default is layer 0.
 
-use super::x3p::{leaves, member_values};
+use super::x3p::{heights, leaves};
 use super::{pick, pixel, Bad, Channel, Format, Measured};
 
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
@@ -63,7 +63,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             "member '{link}' holds {size} bytes; {ny} x {nx} float32 values need {want}"
         )));
     }
-    let z = member_values(&mut zip, link, ny, nx, |b| {
+    let z = heights(bytes, &mut zip, link, ny, nx, |b| {
         let v = f64::from(f32::from_le_bytes(b)) * 1e-6;
         if v.is_finite() {
             v

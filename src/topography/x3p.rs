@@ -130,7 +130,9 @@ fn mask_invalid<R: Read + std::io::Seek>(
 
 /// The `rows x cols` values of `N` bytes each in member `name`, decoded by
 /// `f` while the member inflates, 64 KiB at a time: a deflated member never
-/// exists whole in memory beside the heights (one copy, not two).
+/// exists whole in memory beside the heights (one copy, not two). For the
+/// members [`super::inflate::whole_member`] does not take (encrypted,
+/// another method, a declared size other than the values').
 pub(super) fn member_values<R: Read + std::io::Seek, const N: usize>(
     zip: &mut zip::ZipArchive<R>,
     name: &str,
@@ -178,6 +180,25 @@ pub(super) fn member_values<R: Read + std::io::Seek, const N: usize>(
         )));
     }
     Ok(z)
+}
+
+/// The `rows x cols` values of `N` bytes each in member `name` of the
+/// archive `bytes` (opened as `zip`), decoded by `f`: read whole into the
+/// heights' buffer when the member is stored or deflated with its exact
+/// size declared ([`super::inflate::whole_member`]), else streamed
+/// ([`member_values`]).
+pub(super) fn heights<const N: usize>(
+    bytes: &[u8],
+    zip: &mut zip::ZipArchive<std::io::Cursor<&[u8]>>,
+    name: &str,
+    rows: usize,
+    cols: usize,
+    f: impl Fn([u8; N]) -> f64 + Sync,
+) -> Result<Vec<f64>, Bad> {
+    match super::inflate::whole_member(bytes, zip, name, rows, cols, &f)? {
+        Some(z) => Ok(z),
+        None => member_values(zip, name, rows, cols, f),
+    }
 }
 
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
@@ -242,16 +263,18 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     };
     let (rows, cols) = (ny, nx);
     let mut z: Vec<f64> = match t {
-        "I" => member_values(&mut zip, link, rows, cols, |b| {
+        "I" => heights(bytes, &mut zip, link, rows, cols, |b| {
             scale(f64::from(i16::from_le_bytes(b)))
         })?,
-        "L" => member_values(&mut zip, link, rows, cols, |b| {
+        "L" => heights(bytes, &mut zip, link, rows, cols, |b| {
             scale(f64::from(i32::from_le_bytes(b)))
         })?,
-        "F" => member_values(&mut zip, link, rows, cols, |b| {
+        "F" => heights(bytes, &mut zip, link, rows, cols, |b| {
             scale(f64::from(f32::from_le_bytes(b)))
         })?,
-        _ => member_values(&mut zip, link, rows, cols, |b| scale(f64::from_le_bytes(b)))?,
+        _ => heights(bytes, &mut zip, link, rows, cols, |b| {
+            scale(f64::from_le_bytes(b))
+        })?,
     };
     if let Some(valid) = x.get("Record3/DataLink/ValidPointsLink") {
         mask_invalid(&mut zip, valid, &mut z)?;
@@ -324,7 +347,7 @@ pub fn to_x3p(
     let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
     let opts = zip::write::SimpleFileOptions::default()
         // Stored: reading is then a copy (about the cost of a .npy), where
-        // inflating float64 heights, which barely compress, costs 3x
+        // inflating float64 heights, which barely compress, costs 5x
         // (docs/performance.md, "Reading measured maps").
         .compression_method(zip::CompressionMethod::Stored)
         .large_file(data.len() >= u32::MAX as usize);

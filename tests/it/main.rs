@@ -102,6 +102,7 @@ mod surface_scene;
 mod surface_synthetic;
 mod text_output;
 mod theory_differences;
+mod topography_deflated;
 mod topography_errors;
 mod topography_reference;
 mod wet_scenes;
