@@ -207,9 +207,17 @@ pub(crate) fn solve_load(
     let n = h.len();
     let nf = n as f64;
     let target = p_mean * nf;
+    let mut used = 0;
     let mut p: Vec<f64> = match warm {
         Some(w) if w.iter().sum::<f64>() > 0.0 => {
             w.iter().map(|v| v.clamp(0.0, hardness)).collect()
+        }
+        // Cold and periodic below the hardness: the first outer step with
+        // every pixel free, `p = K^-1 h + P` at once (one application of
+        // the stiffness, an FFT pair as `K` is: counted as one).
+        _ if op.periodic() && p_mean < hardness => {
+            used = 1;
+            super::full_contact::full_pressure(op, h, p_mean)
         }
         _ => vec![p_mean; n],
     };
@@ -223,13 +231,16 @@ pub(crate) fn solve_load(
         op.displacement(&e, &mut u);
         1.0 / u[0]
     };
-    let mut used = 0;
     let mut residual = f64::INFINITY;
     // Outer steps are bounded by the operator applications they cost.
     while used < options.max_iterations {
         crate::cancel::check()?;
+        // The natural residual of the conditions at the current `(p, g)`,
+        // in gap units: `|p - clamp(p - k g, 0, H)|/k`.
+        let mut natural = 0.0;
         for ((s, pi), gi) in sets.iter_mut().zip(p.iter_mut()).zip(&g) {
             let y = *pi - k * gi;
+            natural += ((*pi - y.clamp(0.0, hardness)) / k).powi(2);
             *s = if y <= 0.0 {
                 *pi = 0.0;
                 Set::Open
@@ -241,6 +252,11 @@ pub(crate) fn solve_load(
             };
         }
         free_enough(&mut sets, &mut p, &g, k, target, hardness);
+        // Inexact inner solves (Eisenstat & Walker 1996's forcing term
+        // `eta = min(0.1, r) r`, `r` the natural residual): loose while the
+        // sets still move, a tenth of the tolerance at the end.
+        let natural = (natural / nf).sqrt() / h_rms;
+        let inner = (natural.min(0.1) * natural).max(0.1 * options.tolerance);
         let budget = options.max_iterations - used;
         used += free_set_cg(
             op,
@@ -248,7 +264,7 @@ pub(crate) fn solve_load(
             &sets,
             &mut p,
             target,
-            (0.1 * options.tolerance, h_rms),
+            (inner, h_rms),
             budget,
             &mut scratch,
         )?;
