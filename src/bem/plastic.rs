@@ -201,8 +201,17 @@ fn free_enough(sets: &mut [Set], p: &mut [f64], g: &[f64], k: f64, target: f64, 
     }
 }
 
+/// The inner solve's residual target for the natural residual `r` of the
+/// current `(p, g)` (relative to `h_rms`): Eisenstat & Walker's (1996)
+/// forcing term `min(0.1, r) r`, loose while the sets still move, and not
+/// below a tenth of the tolerance `tol` (the last solves).
+fn forcing(r: f64, tol: f64) -> f64 {
+    (r.min(0.1) * r).max(0.1 * tol)
+}
+
 /// Solves for mean pressure `0 < p_mean <= hardness` starting from `warm`
-/// (a previous pressure field) or a uniform pressure.
+/// (a previous pressure field), cold on a periodic map below the hardness
+/// from the full-contact pressure `K^-1 h + P`, else a uniform pressure.
 ///
 /// # Errors
 /// [`Error::NoConvergence`](crate::Error::NoConvergence) when `options.max_iterations` applications of
@@ -264,11 +273,7 @@ pub(crate) fn solve_load(
             };
         }
         free_enough(&mut sets, &mut p, &g, k, target, hardness);
-        // Inexact inner solves (Eisenstat & Walker 1996's forcing term
-        // `eta = min(0.1, r) r`, `r` the natural residual): loose while the
-        // sets still move, a tenth of the tolerance at the end.
-        let natural = (natural / nf).sqrt() / h_rms;
-        let inner = (natural.min(0.1) * natural).max(0.1 * options.tolerance);
+        let inner = forcing((natural / nf).sqrt() / h_rms, options.tolerance);
         let budget = options.max_iterations - used;
         used += free_set_cg(
             op,
