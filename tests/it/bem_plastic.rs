@@ -141,6 +141,35 @@ fn the_hard_plastic_case_converges_up_to_the_fully_plastic_load() {
     assert!(prob.solve_pressure(0.3 * e, &opts, None).is_err());
 }
 
+/// The same kind of map at 512^2, where the solver with every inner solve
+/// to a tenth of the tolerance from `p = P` needed 528-641 iterations
+/// (`docs/performance.md`): the load that costs most here (measured at
+/// 0.01-0.099 E*: 169-217, the most at 0.07 E*; about 4 s a load in the
+/// test build, so one load) converges to 1e-8 within 500.
+#[test]
+fn the_hard_plastic_case_at_512_converges_within_500_iterations() {
+    let (map, dx) = self_affine(512, 0.08, 7);
+    let e = 1e9;
+    let opts = Options {
+        tolerance: 1e-8,
+        max_iterations: 500,
+        ..Options::default()
+    };
+    let prob = Problem::new(&map, dx, e, true, &opts)
+        .unwrap()
+        .with_hardness(0.1 * e)
+        .unwrap();
+    let s = prob
+        .solve_pressure(0.07 * e, &opts, None)
+        .unwrap_or_else(|err| panic!("P = 0.07 E*: {err}"));
+    assert!(
+        s.residual < 1e-8 && s.iterations <= 500,
+        "{} iterations, residual {}",
+        s.iterations,
+        s.residual
+    );
+}
+
 fn reference() -> Value {
     let text = std::fs::read_to_string(data("bem_plastic_reference.json")).unwrap();
     serde_json::from_str(&text).unwrap()
