@@ -526,12 +526,31 @@ impl Problem {
             let start = warm.map_or(self.h_rms, |w| w.mean_gap.max(1e-6 * self.h_rms));
             let mut last: Option<Solution> = warm.cloned();
             let tol = options.tolerance.max(1e-12) * pressure.abs().max(1e-3 * self.p_ref);
-            return monotone_root(start, pressure, tol, true, |g| {
+            let s = monotone_root(start, pressure, tol, true, |g| {
                 let s = self.solve_gap_fields(g, options, last.as_ref())?;
                 let v = s.mean_pressure;
                 last = Some(s.clone());
                 Ok((v, s))
-            });
+            })?;
+            // Strong short-range adhesion makes the mean pressure jump with
+            // the mean gap (a region snaps into contact): the root search
+            // then ends at the jump, on a state of another pressure. (A
+            // steep but continuous curve misses by its slope times the
+            // search's 1e-14 in ln g: far below 1e-8.)
+            if (s.mean_pressure - pressure).abs() > tol.max(1e-8 * pressure.abs()) {
+                return Err(Error::invalid(
+                    "pressure",
+                    format!(
+                        "no state with a mean pressure of {pressure:e} Pa on the mean-gap \
+                         path: near a mean gap of {:e} m the mean pressure jumps across it \
+                         (the closest state found has {:e} Pa): adhesion makes part of the \
+                         surface snap into contact there; ask for the state by its mean gap, \
+                         or for a pressure outside the jump",
+                        s.mean_gap, s.mean_pressure
+                    ),
+                ));
+            }
+            return Ok(s);
         }
         let warm_gap = warm.map(|w| w.gap.as_slice());
         let warm = warm.map(|w| w.pressure.as_slice());

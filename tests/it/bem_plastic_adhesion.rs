@@ -228,3 +228,66 @@ fn cli_hardness_with_adhesion() {
     let want = case["plastic_volume_per_area_m"].as_f64().unwrap();
     assert!((per / want - 1.0).abs() < 1e-6, "{per} {want}");
 }
+
+/// Strong short-range adhesion (w = 0.05 J/m^2, rho = 1 nm on 1 um
+/// pixels) makes the mean pressure jump with the mean gap: 5 MPa lies in
+/// a jump, so no state on the mean-gap path has it. The run said 1.30 MPa
+/// (tolerance 1e-8) or 5.07 MPa as if they were 5 MPa; now it is refused
+/// naming the pressure, the jump's gap and the state it reached, and a
+/// pressure below the first jump (1 MPa) still runs. (On this map with
+/// 1 um pixels each pixel snaps on its own: 2, 10, 20 and 30 MPa all lie in
+/// jumps.)
+#[test]
+fn a_pressure_inside_an_adhesive_jump_is_refused_not_misreported() {
+    let map = npy::parse(&std::fs::read(data("bem_plastic_map32.npy")).unwrap()).unwrap();
+    let p = Problem::new(&map, DX, E, true, &opts())
+        .unwrap()
+        .with_adhesion(0.05, 1e-9)
+        .unwrap()
+        .with_hardness(H)
+        .unwrap();
+    let o = Options {
+        tolerance: 1e-8,
+        ..Options::default()
+    };
+    let err = p.solve_pressure(5e6, &o, None).unwrap_err();
+    assert_eq!(err.field(), Some("pressure"), "{err}");
+    let text = err.to_string();
+    assert!(
+        text.contains("jumps across it") && text.contains("mean gap"),
+        "{text}"
+    );
+    let mut args = vec![
+        "bem",
+        "tests/data/bem_plastic_map32.npy",
+        "--pixel-size",
+        "1e-6",
+        "--estar",
+        "1e9",
+        "--periodic",
+        "--hardness",
+        "1e8",
+        "--adhesion-energy",
+        "0.05",
+        "--adhesion-range",
+        "1e-9",
+        "--tolerance",
+        "1e-8",
+        "--pressures",
+        "5e6",
+    ];
+    let (code, _, err) = run(&args);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("--pressures") && err.contains("5e6 Pa"),
+        "{err}"
+    );
+    // Below the first jump the state exists and has the asked mean pressure.
+    args.pop();
+    args.extend(["1e6", "--json"]);
+    let (code, out, err) = run(&args);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    let got = v["states"][0]["pressure_Pa"].as_f64().unwrap();
+    assert!((got / 1e6 - 1.0).abs() < 1e-8, "{got}");
+}
