@@ -41,6 +41,7 @@ mod cli_sphere;
 mod cli_surface;
 mod cli_sweep;
 mod cos_vs_maugis;
+mod doc_reference_tables;
 mod docs;
 mod docs_figures;
 mod docs_tables;
