@@ -64,6 +64,7 @@ mod maugis_gw;
 mod model_error;
 mod never_wrong;
 mod observables;
+mod performance_tables;
 mod persson;
 mod persson_gaps;
 mod plastic;
