@@ -368,8 +368,8 @@ impl RoughSphere {
 /// interference without adhesion (fully plastic, `2 pi R delta` against
 /// `pi R delta`, Abbott's flattening in Kogut & Etsion 2002), so beyond
 /// `2 hertz` the excess is the law's adhesion (on the Kogut–Etsion bump of
-/// `examples/scenes/switch-bump-plastic.toml`, measured on the flat at the
-/// central gap: Hertz 0.25, Kogut–Etsion without adhesion 0.49, with JKR
+/// `examples/scenes/switch-bump-plastic.toml` at its former load of 20 uN,
+/// measured on the flat at the central gap: Hertz 0.25, Kogut–Etsion without adhesion 0.49, with JKR
 /// adhesion on the flattened tops 1.13); below it, the depth of the
 /// contact itself.
 fn excess_area_cause(frac: f64, hertz: f64) -> String {
@@ -415,7 +415,7 @@ fn bump_resistance(
 mod tests {
     use super::excess_area_cause;
 
-    /// The plastic bump's centre (Hertz 0.2532 at the central gap
+    /// The plastic bump's centre at 20 uN (Hertz 0.2532 at the central gap
     /// -1.5882 sigma, from `tests/data/bump_centre_area.py`; the measured
     /// Kogut–Etsion fraction with adhesion 1.13) names adhesion; a fraction
     /// within twice Hertz names the depth.

@@ -8,6 +8,8 @@ use std::path::PathBuf;
 mod model_error_maps;
 #[path = "../../tools/reports/rough_sphere_regimes.rs"]
 mod rough_sphere_regimes;
+#[path = "../../tools/reports/surface_bias.rs"]
+mod surface_bias;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -71,6 +73,44 @@ fn the_rough_sphere_regime_map_is_what_its_example_prints() {
         "docs/physics.md's regime map differs from what the example prints now:\n{}",
         printed.join("\n")
     );
+}
+
+/// docs/surface.md's grid bias on synthetic Gaussian surfaces:
+/// `cargo run --release --example surface_bias` (about 1.5 min for the
+/// eight rows). The test reruns the rows of the two shortest correlation
+/// lengths (8 maps of 1024^2 each, a few seconds), which the text quotes
+/// ("density -9 %, curvature -11 % at l = 2"), and checks that the other
+/// rows are those lengths, on the example's grids.
+#[test]
+fn the_grid_bias_table_is_what_its_example_prints() {
+    let surface = std::fs::read_to_string(root().join("docs/surface.md")).unwrap();
+    assert!(
+        surface.contains("`cargo run --release --example surface_bias`"),
+        "the table's command changed"
+    );
+    let at = surface
+        .find(surface_bias::HEADER)
+        .expect("the table's header changed");
+    let quoted: Vec<&str> = surface[at..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .collect();
+    assert_eq!(quoted.len(), surface_bias::LENGTHS.len());
+    for (row, l) in quoted.iter().zip(surface_bias::LENGTHS) {
+        let n = ((256.0 * l) as usize).clamp(1024, 4096);
+        assert!(
+            row.starts_with(&format!("| {l} | {n}² | ")),
+            "docs/surface.md: the row of l = {l}: {row}"
+        );
+    }
+    for (k, l) in surface_bias::LENGTHS[..2].iter().enumerate() {
+        let printed = surface_bias::row(*l).unwrap();
+        assert_eq!(
+            quoted[k], printed,
+            "docs/surface.md's grid-bias row l = {l} differs from what the example prints now"
+        );
+    }
 }
 
 /// `x` as Python's `%.{p}g` prints it (the table's digits).

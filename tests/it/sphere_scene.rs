@@ -219,9 +219,25 @@ fn plastic_switch_bump_example_pulls_off_and_reports_stiction() {
     assert_eq!(code, 0, "{err}");
     let s: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(s["law"], "kogut-etsion", "{}", s["law"]);
-    // tensile and finite, and smaller than the force pressed with (20 uN)
+    // tensile and finite, and smaller than the force pressed with (12 uN)
     let pull = s["pull_off_load"].as_f64().unwrap();
-    assert!(pull < 0.0 && pull > -20e-6, "{pull:e}");
+    assert!(pull < 0.0 && pull > -12e-6, "{pull:e}");
+    // at 12 uN the centre holds 0.92 of the nominal area: a real area, below
+    // the apparent area pi a95^2, and no above-1 warning (at 20 uN it was
+    // 1.13: `never_wrong.rs`)
+    assert!(
+        !s["warnings"].to_string().contains("above 1"),
+        "{}",
+        s["warnings"]
+    );
+    let area = s["rough_sphere"]["real_area"]["value"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("no real area: {}", s["rough_sphere"]));
+    let r95 = s["rough_sphere"]["radius_95"]["value"].as_f64().unwrap();
+    assert!(
+        area > 0.0 && area < std::f64::consts::PI * r95 * r95,
+        "{area:e}, a95 {r95:e}"
+    );
     let st = &s["stiction"];
     assert_eq!(st["pull_off_N"].as_f64().unwrap(), pull);
     let spring = st["restoring_force_N"].as_f64().unwrap();
@@ -248,6 +264,10 @@ fn plastic_switch_bump_example_pulls_off_and_reports_stiction() {
     .unwrap();
     let law = asperity::law::plastic::AdhesivePlastic::new(ke.as_loading(), 0.5).unwrap();
     let sphere = direct(Arc::new(law), 5e-6, 5e14, 50e-9, 2e-9);
+    // The listed state is solved for its load: its separation comes from a
+    // root-find to the scene's rtol (1e-6), so the library's load at that
+    // separation agrees to rtol, not to the last digits (3e-8 relative at
+    // 12 uN; 1e-9 happened to hold at the former 20 uN).
     for (sep, load) in states(&s) {
         let want = sphere
             .state(sep, History::Approach, &Observables::LOAD)
@@ -255,7 +275,7 @@ fn plastic_switch_bump_example_pulls_off_and_reports_stiction() {
             .load()
             .unwrap();
         assert!(
-            (load - want).abs() <= 1e-9 * want.abs(),
+            (load - want).abs() <= 1e-6 * want.abs(),
             "s = {sep:e}: {load:e} vs {want:e}"
         );
     }

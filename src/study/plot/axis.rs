@@ -147,7 +147,9 @@ impl Axis {
 
     /// A logarithmic axis over `[lo, hi]` (both > 0): ticks at powers of
     /// ten (every second or third one over many decades), minor ticks at
-    /// `2..9 x 10^k`.
+    /// `2..9 x 10^k`; over less than two decades 1-2-5 or `1..9 x 10^k`
+    /// ticks, and within one of those steps linear 1-2-5 multiples, so that
+    /// every axis has at least three labels.
     pub fn log(lo: f64, hi: f64) -> Axis {
         let (e0, e1) = (lo.log10().ceil() as i32, hi.log10().floor() as i32);
         let every = (((e1 - e0) / 9) + 1).max(1);
@@ -173,7 +175,14 @@ impl Axis {
             .flat_map(|e| (1..10).map(move |m| m as f64 * 10f64.powi(e)))
             .filter(|v| *v >= lo && *v <= hi)
             .collect();
-        let notation = Notation::for_ticks(&ticks, 0.0);
+        // Within one step of the 1..9 mantissas (2.1e-7 .. 3.9e-7): linear
+        // 1-2-5 multiples, still at least three labels.
+        let mut step = 0.0;
+        if ticks.len() < 3 {
+            step = nice_step(hi - lo, 4.0);
+            ticks = multiples(lo, hi, step);
+        }
+        let notation = Notation::for_ticks(&ticks, step);
         Axis {
             lo,
             hi,
@@ -385,9 +394,13 @@ mod tests {
         let labels: Vec<String> = b.ticks().iter().map(|t| b.label(*t)).collect();
         assert_eq!(
             labels,
-            ["3e-7"],
-            "fewer than three when the axis spans less"
+            ["2.5e-7", "3.0e-7", "3.5e-7"],
+            "linear multiples when the axis spans less than 1..9 x 10^k gives three"
         );
+        // the plastic switch bump's resistance at 12 uN: 0.093 .. 0.15 Ohm
+        let d = Axis::log(0.093, 0.152);
+        let labels: Vec<String> = d.ticks().iter().map(|t| d.label(*t)).collect();
+        assert_eq!(labels, ["0.1", "0.11", "0.12", "0.13", "0.14", "0.15"]);
         let c = Axis::log(1.5e-6, 9e-6);
         let labels: Vec<String> = c.ticks().iter().map(|t| c.label(*t)).collect();
         assert_eq!(
