@@ -109,11 +109,11 @@ fn the_fully_plastic_limits() {
     }
 }
 
-/// The slope-0.08 self-affine map with `H = 0.1 E*` at 128^2: every load
-/// up to the fully plastic one converges to 1e-8 within 500 iterations.
-#[test]
-fn the_hard_plastic_case_converges_up_to_the_fully_plastic_load() {
-    let (map, dx) = self_affine(128, 0.08, 7);
+/// ContactMechanics issue 68's case on an `n`^2 map: the slope-0.08
+/// self-affine map, `E* = 1 GPa`, `H = 0.1 E*`, tolerance 1e-8 within 500
+/// applications of `K`.
+fn hard_case(n: usize) -> (Problem, Options, f64) {
+    let (map, dx) = self_affine(n, 0.08, 7);
     let e = 1e9;
     let opts = Options {
         tolerance: 1e-8,
@@ -124,6 +124,14 @@ fn the_hard_plastic_case_converges_up_to_the_fully_plastic_load() {
         .unwrap()
         .with_hardness(0.1 * e)
         .unwrap();
+    (prob, opts, e)
+}
+
+/// The slope-0.08 self-affine map with `H = 0.1 E*` at 128^2: every load
+/// up to the fully plastic one converges to 1e-8 within 500 iterations.
+#[test]
+fn the_hard_plastic_case_converges_up_to_the_fully_plastic_load() {
+    let (prob, opts, e) = hard_case(128);
     let mut last = (0.0, 0.0);
     for f in [
         0.01, 0.03, 0.05, 0.07, 0.08, 0.09, 0.095, 0.099, 0.0999, 0.1,
@@ -148,17 +156,7 @@ fn the_hard_plastic_case_converges_up_to_the_fully_plastic_load() {
 /// test build, so one load) converges to 1e-8 within 500.
 #[test]
 fn the_hard_plastic_case_at_512_converges_within_500_iterations() {
-    let (map, dx) = self_affine(512, 0.08, 7);
-    let e = 1e9;
-    let opts = Options {
-        tolerance: 1e-8,
-        max_iterations: 500,
-        ..Options::default()
-    };
-    let prob = Problem::new(&map, dx, e, true, &opts)
-        .unwrap()
-        .with_hardness(0.1 * e)
-        .unwrap();
+    let (prob, opts, e) = hard_case(512);
     let s = prob
         .solve_pressure(0.07 * e, &opts, None)
         .unwrap_or_else(|err| panic!("P = 0.07 E*: {err}"));

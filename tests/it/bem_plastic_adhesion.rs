@@ -184,6 +184,20 @@ fn run(args: &[&str]) -> (i32, String, String) {
     )
 }
 
+/// `asperity bem` on the 32^2 map (1 um pixels, E* = 1 GPa) with `more`.
+fn bem_map32<'a>(more: &[&'a str]) -> Vec<&'a str> {
+    let mut args = vec![
+        "bem",
+        "tests/data/bem_plastic_map32.npy",
+        "--pixel-size",
+        "1e-6",
+        "--estar",
+        "1e9",
+    ];
+    args.extend_from_slice(more);
+    args
+}
+
 /// `asperity bem --hardness --adhesion-energy --adhesion-range` on a
 /// periodic map: the reference's adhesive state at 0.03 E*; padded, refused
 /// naming `--periodic` (exit 2).
@@ -192,13 +206,7 @@ fn cli_hardness_with_adhesion() {
     let (r, _) = reference();
     let case = &r["cases"][2];
     assert_eq!(case["pressure_Pa"].as_f64(), Some(3e7));
-    let mut args = vec![
-        "bem",
-        "tests/data/bem_plastic_map32.npy",
-        "--pixel-size",
-        "1e-6",
-        "--estar",
-        "1e9",
+    let mut args = bem_map32(&[
         "--pressures",
         "3e7",
         "--hardness",
@@ -210,7 +218,7 @@ fn cli_hardness_with_adhesion() {
         "--tolerance",
         "1e-12",
         "--json",
-    ];
+    ]);
     let (code, _, err) = run(&args);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--periodic"), "{err}");
@@ -257,13 +265,7 @@ fn a_pressure_inside_an_adhesive_jump_is_refused_not_misreported() {
         text.contains("jumps across it") && text.contains("mean gap"),
         "{text}"
     );
-    let mut args = vec![
-        "bem",
-        "tests/data/bem_plastic_map32.npy",
-        "--pixel-size",
-        "1e-6",
-        "--estar",
-        "1e9",
+    let mut args = bem_map32(&[
         "--periodic",
         "--hardness",
         "1e8",
@@ -275,7 +277,7 @@ fn a_pressure_inside_an_adhesive_jump_is_refused_not_misreported() {
         "1e-8",
         "--pressures",
         "5e6",
-    ];
+    ]);
     let (code, _, err) = run(&args);
     assert_eq!(code, 2, "{err}");
     assert!(
