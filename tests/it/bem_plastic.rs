@@ -109,7 +109,7 @@ fn the_fully_plastic_limits() {
     }
 }
 
-/// ContactMechanics issue 68's case on an `n`^2 map: the slope-0.08
+/// The hard case ContactMechanics' users reported, on an `n`^2 map: the slope-0.08
 /// self-affine map, `E* = 1 GPa`, `H = 0.1 E*`, tolerance 1e-8 within 500
 /// applications of `K`.
 fn hard_case(n: usize) -> (Problem, Options, f64) {

@@ -267,3 +267,58 @@ fn the_2048_table_is_consistent_with_its_problem() {
         );
     }
 }
+
+/// examples/challenge/README.md's 2048^2 comparison with ContactMechanics:
+/// its peer column is `tests/data/challenge_peers_2048.json` to the digits
+/// shown, the pixel counts agree with the table above, and asperity's mean
+/// gap (a 45 s solve, not rerun here) is within 1e-6 of the peer's, as at
+/// 512^2.
+#[test]
+fn the_2048_peer_comparison_is_its_stored_output() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let readme = std::fs::read_to_string(format!("{root}/examples/challenge/README.md")).unwrap();
+    let peer: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(format!("{root}/tests/data/challenge_peers_2048.json")).unwrap(),
+    )
+    .unwrap();
+    let dry = &peer["non_adhesive"];
+    assert_eq!(peer["n"], 2048);
+    assert_eq!(dry["converged"], true);
+    let header =
+        "| non-adhesive, 2048^2 | asperity | ContactMechanics 1.8.3 | relative difference |";
+    let at = readme
+        .find(header)
+        .expect("the 2048^2 peer table's header changed");
+    let rows: Vec<Vec<&str>> = readme[at..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.trim()
+                .trim_matches('|')
+                .split('|')
+                .map(str::trim)
+                .collect()
+        })
+        .collect();
+    let row = |name: &str| rows.iter().find(|r| r[0] == name).unwrap().clone();
+    let pixels = row("contact pixels");
+    assert_eq!(pixels[2], dry["contact_pixels"].to_string(), "{pixels:?}");
+    assert_eq!(pixels[1], pixels[2]);
+    assert!(
+        readme.contains(&format!("({} pixels)", "91,955")),
+        "the 2048^2 table's non-adhesive pixel count"
+    );
+    let gap = row("mean gap (m)");
+    let peer_gap = dry["mean_gap_m"].as_f64().unwrap();
+    assert_eq!(gap[2].parse::<f64>().unwrap(), peer_gap, "{gap:?}");
+    let ours: f64 = gap[1].parse().unwrap();
+    let rel = ours / peer_gap - 1.0;
+    assert!(rel.abs() < 1e-6, "{rel}");
+    assert_eq!(gap[3], format!("{rel:.1e}"), "{gap:?}");
+    assert_eq!(
+        row("iterations")[2],
+        dry["iterations"].to_string(),
+        "the peer's iterations"
+    );
+}
