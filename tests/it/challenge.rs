@@ -16,6 +16,7 @@
 //! of pixels (6,506 of 262,144): 1e-6 of it is less than one pixel, so the
 //! counts must be equal.
 
+use crate::common::markdown_table;
 use asperity::bem::challenge::{self, Challenge};
 use asperity::bem::{Options, Problem};
 use asperity::surface::npy;
@@ -231,21 +232,7 @@ fn the_2048_table_is_consistent_with_its_problem() {
     ))
     .unwrap();
     let header = "| | non-adhesive (250 kPa) | adhesive (at the non-adhesive mean gap) |";
-    let at = readme
-        .find(header)
-        .expect("the 2048^2 table's header changed");
-    let rows: Vec<Vec<&str>> = readme[at..]
-        .lines()
-        .skip(2)
-        .take_while(|l| l.starts_with('|'))
-        .map(|l| {
-            l.trim()
-                .trim_matches('|')
-                .split('|')
-                .map(str::trim)
-                .collect()
-        })
-        .collect();
+    let rows = markdown_table(&readme, header);
     let row = |name: &str| rows.iter().find(|r| r[0] == name).unwrap().clone();
     let c = Challenge::at(2048).unwrap();
     let p = row("mean pressure (Pa)");
@@ -286,21 +273,7 @@ fn the_2048_peer_comparison_is_its_stored_output() {
     assert_eq!(dry["converged"], true);
     let header =
         "| non-adhesive, 2048^2 | asperity | ContactMechanics 1.8.3 | relative difference |";
-    let at = readme
-        .find(header)
-        .expect("the 2048^2 peer table's header changed");
-    let rows: Vec<Vec<&str>> = readme[at..]
-        .lines()
-        .skip(2)
-        .take_while(|l| l.starts_with('|'))
-        .map(|l| {
-            l.trim()
-                .trim_matches('|')
-                .split('|')
-                .map(str::trim)
-                .collect()
-        })
-        .collect();
+    let rows = markdown_table(&readme, header);
     let row = |name: &str| rows.iter().find(|r| r[0] == name).unwrap().clone();
     let pixels = row("contact pixels");
     assert_eq!(pixels[2], dry["contact_pixels"].to_string(), "{pixels:?}");

@@ -7,6 +7,7 @@
 //! timing tables' provenance.
 
 use crate::common::cli::run;
+use crate::common::markdown_table as table;
 use asperity::topography::Format;
 use std::path::PathBuf;
 
@@ -16,28 +17,6 @@ fn root() -> PathBuf {
 
 fn read(rel: &str) -> String {
     std::fs::read_to_string(root().join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
-}
-
-/// The body rows of the Markdown table whose header row starts with
-/// `header`, each split into trimmed cells (the outer pipes dropped).
-fn table(md: &str, header: &str) -> Vec<Vec<String>> {
-    let at = md
-        .find(header)
-        .unwrap_or_else(|| panic!("no table with header {header:?}"));
-    let rows: Vec<Vec<String>> = md[at..]
-        .lines()
-        .skip(2)
-        .take_while(|l| l.starts_with('|'))
-        .map(|l| {
-            l.trim()
-                .trim_matches('|')
-                .split('|')
-                .map(|c| c.trim().to_string())
-                .collect()
-        })
-        .collect();
-    assert!(!rows.is_empty(), "the table {header:?} has no rows");
-    rows
 }
 
 /// The `` `...` `` spans of a cell.

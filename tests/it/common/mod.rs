@@ -73,3 +73,25 @@ pub fn proptest_config(cases: u32) -> ProptestConfig {
     }
     config
 }
+
+/// The body rows of the Markdown table whose header row starts with
+/// `header`, each split into trimmed cells (the outer pipes dropped).
+pub fn markdown_table(md: &str, header: &str) -> Vec<Vec<String>> {
+    let at = md
+        .find(header)
+        .unwrap_or_else(|| panic!("no table with header {header:?}"));
+    let rows: Vec<Vec<String>> = md[at..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.trim()
+                .trim_matches('|')
+                .split('|')
+                .map(|c| c.trim().to_string())
+                .collect()
+        })
+        .collect();
+    assert!(!rows.is_empty(), "the table {header:?} has no rows");
+    rows
+}
