@@ -49,7 +49,7 @@ pub(super) fn finish(plan: &Plan, sphere: &RoughSphere, r: &mut Results) -> Resu
         closest
             .warnings
             .iter()
-            .map(|w| format!("rough sphere at the closest approach: {w}")),
+            .map(|w| crate::study::Warning::RoughSphere(w.clone())),
     );
     r.regimes = plan.regimes_at(closest.central_separation);
     if let Some(law) = plan.elastic_law()? {
