@@ -346,7 +346,7 @@ impl Plan {
         if let Some(sp) = &self.sphere {
             // The same surface model under an elastic sphere: every total
             // is over the bump, separations are remote.
-            let sphere = sp.on(model)?;
+            let sphere = sphere::with_spots(self, sp.on(model)?);
             let run = self
                 .run_on(&sphere, run_law, t0, progress)
                 .and_then(|mut results| {
@@ -603,8 +603,8 @@ impl Plan {
             }
         }
         if self.sphere.is_none() {
-            // (a rough sphere's resistances, and so its temperatures, are
-            // set per state by `study::sphere::finish`, which runs after)
+            // (a rough sphere's follows its own warnings, after
+            // `sphere::finish`)
             r.warnings.extend(self.heating_warning(&r, &listed)?);
         }
         if self.sphere.is_none() {
