@@ -320,6 +320,8 @@ impl Warning {
 }
 
 impl fmt::Display for Warning {
+    // Over 100 lines, kept whole: one match over the kinds of warning, each
+    // arm its sentence as the study layer wrote it before it was typed.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Warning::Validity(finding) => write!(f, "{finding}"),
