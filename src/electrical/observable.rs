@@ -7,7 +7,7 @@
 //! `sum G_i^2` ([`SpotSums`]); the count of spots is the `count` total.
 
 use super::heating::Heating;
-use super::interaction::{ContactResistance, Interaction, SpotSums};
+use super::interaction::{ContactResistance, Interaction, SpotSums, C_SQ};
 use super::spot::SpotResistance;
 use crate::error::Result;
 use crate::law::ContactState;
@@ -75,16 +75,6 @@ impl ResistanceObservables {
         }
     }
 
-    /// The same observables (the same slots of a computation's totals)
-    /// with Greenwood's interaction in a square of side `side` (m): a
-    /// rough sphere's bump gives each state its own equivalent square.
-    pub fn with_side(&self, side: f64) -> Self {
-        ResistanceObservables {
-            side,
-            ..self.clone()
-        }
-    }
-
     /// The side (m) of the square apparent area of the interaction.
     pub fn side(&self) -> f64 {
         self.side
@@ -103,7 +93,12 @@ impl ResistanceObservables {
 
     /// The contact resistance from totals computed with
     /// [`ResistanceObservables::add_to`]'s observables (`None` when they
-    /// are missing); `inf` without contact.
+    /// are missing); `inf` without contact. Greenwood's interaction is
+    /// over the square of side [`ResistanceObservables::side`], or, where
+    /// the totals carry the spots' conductance-weighted mean inverse
+    /// distance `I` (a rough sphere's bump,
+    /// [`Totals::inverse_distance`]), over the square with the same mean
+    /// inverse distance, of side `c_sq / I` (`inf` for `I <= 0`).
     pub fn resistance(
         &self,
         observables: &Observables,
@@ -116,12 +111,24 @@ impl ResistanceObservables {
             conductance: g,
             conductance_sq: g2,
         };
+        let side = match totals.inverse_distance() {
+            Some(i) if i > 0.0 => C_SQ / i,
+            Some(_) => f64::INFINITY,
+            None => self.side,
+        };
         Some(ContactResistance::from_sums(
             &sums,
             &self.spot,
             self.interaction,
-            self.side,
+            side,
         ))
+    }
+
+    /// The spot conductance `G_i` (S), the observable whose totals'
+    /// spread over a rough sphere's bump gives
+    /// [`Totals::inverse_distance`].
+    pub fn conductance(&self) -> &Observable {
+        &self.conductance
     }
 
     /// The per-spot resistance law.

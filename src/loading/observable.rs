@@ -362,6 +362,7 @@ pub struct Totals {
     values: [f64; SLOTS],
     errors: [f64; SLOTS],
     present: [bool; SLOTS],
+    inverse_distance: Option<f64>,
 }
 
 impl Totals {
@@ -372,7 +373,29 @@ impl Totals {
             values,
             errors,
             present,
+            inverse_distance: None,
         }
+    }
+
+    /// These totals with the spots' conductance-weighted mean inverse
+    /// distance `I = int int g(x) g(y)/|x - y| dA dA / G^2` (1/m, `g` the
+    /// spot conductance per area, `G` its total), for a model that knows
+    /// where its spots lie: a rough sphere's bump
+    /// ([`crate::roughsphere`], by Boussinesq through its compliance).
+    /// Greenwood's interaction then uses the square whose mean inverse
+    /// distance is the same, of side `c_sq / I`
+    /// ([`crate::electrical::ResistanceObservables::resistance`]).
+    pub fn with_inverse_distance(mut self, inverse_distance: f64) -> Totals {
+        self.inverse_distance = Some(inverse_distance);
+        self
+    }
+
+    /// The spots' conductance-weighted mean inverse distance (1/m), when
+    /// the model placed its spots ([`Totals::with_inverse_distance`]);
+    /// `None` where they are spread uniformly over the nominal area (a
+    /// flat's integral or population).
+    pub fn inverse_distance(&self) -> Option<f64> {
+        self.inverse_distance
     }
 
     /// The value in `slot`, if computed.
@@ -409,6 +432,8 @@ impl Totals {
             values: self.values.map(|x| x * factor),
             errors: self.errors.map(|x| x * factor),
             present: self.present,
+            // a mean over the spots: the same at any scale of the totals
+            inverse_distance: self.inverse_distance,
         }
     }
 }

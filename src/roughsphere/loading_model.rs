@@ -31,19 +31,27 @@ impl RoughSphere {
         values[0] = load.value * u.load();
         errors[0] = load.error * u.load();
         let rest = observables.area || observables.count || !observables.extras().is_empty();
+        // the spots' spread over the bump, when their conductance is totalled
+        let conductance = self.spots.as_ref().and_then(|g| observables.slot(g));
+        let mut inverse_distance = None;
         if rest {
-            let (t, _) = self.core.totals(&s, observables, None)?;
+            let (t, inverse) = self.core.totals(&s, observables, conductance)?;
             for k in 1..SLOTS {
                 if let Some(e) = t[k] {
                     values[k] = e.value * u.area();
                     errors[k] = e.error * u.area();
                 }
             }
+            inverse_distance = inverse.map(|i| i.value / u.length());
         }
         let evaluations = s.levels.iter().map(|l| l.mesh.len()).sum();
+        let totals = Totals::new(values, errors, observables.mask());
         Ok(State {
             separation,
-            totals: Totals::new(values, errors, observables.mask()),
+            totals: match inverse_distance {
+                Some(i) => totals.with_inverse_distance(i),
+                None => totals,
+            },
             method: MethodUsed::Quadrature,
             evaluations,
         })
@@ -56,7 +64,12 @@ impl LoadingModel for RoughSphere {
     /// the integral of the local pressure over the apparent area, the other
     /// observables integrals of the local GW totals; errors are the mesh
     /// extrapolation's estimates. `method` is [`MethodUsed::Quadrature`]
-    /// (an integral over the apparent area with estimated error).
+    /// (an integral over the apparent area with estimated error). With
+    /// [`RoughSphere::with_spot_conductance`] and that conductance among
+    /// `observables`, the totals carry the spots' conductance-weighted
+    /// mean inverse distance over the bump
+    /// ([`Totals::inverse_distance`]), extrapolated over the mesh levels
+    /// like the totals.
     ///
     /// # Errors
     /// [`crate::Error::OutOfRange`] naming `separation` or

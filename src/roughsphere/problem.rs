@@ -18,6 +18,7 @@ use super::solve::{Core, Estimate, Retraction, Shape, Solved, SolverOptions};
 use super::units::GreenwoodTrippUnits;
 use crate::error::{positive, Error, Result};
 use crate::gw::GwModel;
+use crate::loading::Observable;
 use std::sync::{Arc, Mutex};
 
 /// Approach states kept for continuation.
@@ -51,6 +52,9 @@ pub struct RoughSphere {
     units: GreenwoodTrippUnits,
     profile: SphereProfile,
     pub(crate) core: Core,
+    /// The spot conductance whose spread over the bump its states carry
+    /// ([`RoughSphere::with_spot_conductance`]).
+    pub(crate) spots: Option<Observable>,
     cache: Mutex<Cache>,
 }
 
@@ -61,6 +65,7 @@ impl Clone for RoughSphere {
             units: self.units,
             profile: self.profile,
             core: self.core.clone(),
+            spots: self.spots.clone(),
             cache: Mutex::new(Cache::default()),
         }
     }
@@ -104,8 +109,20 @@ impl RoughSphere {
                 shape,
                 options,
             },
+            spots: None,
             cache: Mutex::new(Cache::default()),
         })
+    }
+
+    /// This sphere whose states, when their observables include the spot
+    /// conductance `conductance` (S, [`crate::electrical::ResistanceObservables::conductance`]),
+    /// carry the spots' conductance-weighted mean inverse distance over
+    /// the bump ([`Totals::inverse_distance`](crate::loading::Totals::inverse_distance),
+    /// 1/m): from it a state's resistance takes Greenwood's interaction over
+    /// the bump's own apparent area rather than a nominal one.
+    pub fn with_spot_conductance(mut self, conductance: Observable) -> Self {
+        self.spots = Some(conductance);
+        self
     }
 
     /// The Greenwood–Tripp units of this sphere and surface.

@@ -34,6 +34,7 @@ use crate::law::{ContactState, Hertz, LawKernels};
 use crate::loading::{History, LoadingModel, Observable, Observables, PerAsperity};
 use crate::montecarlo::{MeasuredSummits, SummitLaw};
 use crate::numeric::roots::brent;
+use crate::study::Warning;
 use crate::surface::NayakPrediction;
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -146,9 +147,9 @@ impl MapModelError {
     /// that differ from the exact solution by more than [`WARN_ABOVE`] at
     /// some state: the largest difference, its state, and how many states
     /// are beyond.
-    pub fn warnings(&self) -> Vec<String> {
+    pub fn warnings(&self) -> Vec<Warning> {
         type Pick = fn(&MapState) -> Option<f64>;
-        let outputs: [(&str, &str, Pick); 3] = [
+        let outputs: [(&'static str, &'static str, Pick); 3] = [
             ("real contact area", "model_error.area", |s| s.area),
             ("load at the same mean gap", "model_error.load", |s| {
                 s.load_at_gap
@@ -158,7 +159,7 @@ impl MapModelError {
         let n = self.states.len();
         outputs
             .into_iter()
-            .filter_map(|(name, key, pick)| {
+            .filter_map(|(quantity, key, pick)| {
                 let beyond: Vec<(usize, f64)> = self
                     .states
                     .iter()
@@ -169,17 +170,16 @@ impl MapModelError {
                 let &(i, e) = beyond
                     .iter()
                     .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))?;
-                let s = &self.states[i];
-                Some(format!(
-                    "model error: GW's {name} on this map differs from the exact elastic \
-                     solution by {:+.1} % at p = {:.4e} Pa (state {} of {n}; beyond {:.0} % at {} \
-                     of {n} states, {key})",
-                    100.0 * e,
-                    s.pressure,
-                    i + 1,
-                    100.0 * WARN_ABOVE,
-                    beyond.len()
-                ))
+                Some(Warning::MapModelError {
+                    quantity,
+                    key,
+                    difference: e,
+                    pressure: self.states[i].pressure,
+                    state: i,
+                    states: n,
+                    limit: WARN_ABOVE,
+                    beyond: beyond.len(),
+                })
             })
             .collect()
     }

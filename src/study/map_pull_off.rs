@@ -126,15 +126,12 @@ impl MapPullOff {
 
     /// The warning when GW's pull-off differs from the exact one by more
     /// than [`super::map_error::WARN_ABOVE`].
-    pub fn warning(&self) -> Option<String> {
+    pub fn warning(&self) -> Option<crate::study::Warning> {
         let (e, gw, exact) = (self.relative?, self.gw?, self.exact?);
-        (e.abs() > super::map_error::WARN_ABOVE).then(|| {
-            format!(
-                "model error: GW's pull-off on this map differs from the adhesive boundary-element \
-                 solution of the same map by {:+.1} % (GW {gw:.4e} N, exact {exact:.4e} N; \
-                 model_error.pull_off; what differs: model_error.pull_off_map.differences)",
-                100.0 * e
-            )
+        (e.abs() > super::map_error::WARN_ABOVE).then_some(crate::study::Warning::MapPullOff {
+            difference: e,
+            gw,
+            exact,
         })
     }
 }

@@ -41,6 +41,7 @@ pub mod scene;
 
 pub mod sweep;
 pub mod text;
+pub mod warning;
 
 pub use output::{
     charts, check_outputs, curve_csv, montecarlo_csv, text_report, write_outputs, Column,
@@ -50,3 +51,4 @@ pub use plan::{Plan, PlanMode};
 pub use quantity::{Quantity, QuantitySet, Record, StateRow};
 pub use run::{McResults, Results};
 pub use scene::{Scene, DEFAULT_SCENE, DEFAULT_STUDY};
+pub use warning::Warning;

@@ -14,6 +14,7 @@ use crate::gw::Accuracy;
 use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
 use crate::study::plan::FullSolver;
 use crate::study::scene::LawName;
+use crate::study::warning::{ModelErrorOutput, Warning};
 
 use super::map_error::MapModelError;
 use super::map_pull_off::MapPullOff;
@@ -152,46 +153,47 @@ impl ModelError {
     }
 
     /// The listed state with the largest load error, as a warning row.
-    fn listed_warning(&self) -> Option<(&'static str, Option<f64>, Option<f64>, &'static str)> {
+    fn listed_warning(&self) -> Option<(ModelErrorOutput, Option<f64>, Option<f64>)> {
         let worst = self
             .listed_loads
             .iter()
             .flatten()
             .copied()
             .max_by(|a, b| a.abs().total_cmp(&b.abs()))?;
-        Some(("load at a listed state", Some(worst), None, "N"))
+        Some((ModelErrorOutput::ListedLoad, Some(worst), None))
     }
 
     /// Warnings for the outputs whose model error exceeds
     /// [`MODEL_ERROR_WARN`], advising the full-solver law by the
     /// `law.kind` values that give it, other than the scene's own `given`.
-    pub fn warnings(&self, law: &str, given: LawName) -> Vec<String> {
-        let advice = if given == LawName::Auto {
-            "law.kind = \"calibrated\" uses the full-solver law"
-        } else {
-            "law.kind = \"calibrated\" (or \"auto\") uses the full-solver law"
-        };
+    pub fn warnings(&self, law: &str, given: LawName) -> Vec<Warning> {
         [
-            ("pull-off", self.pull_off, self.reference_pull_off, "N"),
-            ("max load", self.max_load, self.reference_max_load, "N"),
             (
-                "hysteresis energy",
+                ModelErrorOutput::PullOff,
+                self.pull_off,
+                self.reference_pull_off,
+            ),
+            (
+                ModelErrorOutput::MaxLoad,
+                self.max_load,
+                self.reference_max_load,
+            ),
+            (
+                ModelErrorOutput::HysteresisEnergy,
                 self.hysteresis_energy,
                 self.reference_hysteresis_energy,
-                "J",
             ),
         ]
         .into_iter()
         .chain(self.listed_warning())
-        .filter_map(|(name, e, r, unit)| {
+        .filter_map(|(output, e, reference)| {
             let e = e?;
-            (e.abs() > MODEL_ERROR_WARN).then(|| {
-                let reference = r.map_or(String::new(), |r| format!(" ({r:.4e} {unit})"));
-                format!(
-                    "model error: the {name} of law {law} differs by {:.1} % from the full \
-                     Lennard-Jones solver's law on this surface{reference}; {advice}",
-                    100.0 * e,
-                )
+            (e.abs() > MODEL_ERROR_WARN).then(|| Warning::ModelError {
+                output,
+                law: law.to_string(),
+                error: e,
+                reference,
+                auto: given == LawName::Auto,
             })
         })
         .chain(self.map.iter().flat_map(MapModelError::warnings))

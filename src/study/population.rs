@@ -14,6 +14,7 @@ use crate::montecarlo::pull_off::{
 };
 use crate::montecarlo::{MonteCarlo, RadiusSpec, SummitLaw};
 use crate::numeric::mix::{derive_seed, Stream};
+use crate::study::Warning;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -225,31 +226,23 @@ pub fn run(
 
 /// A warning when the populations' pull-off and the integral's differ
 /// beyond the scene's tolerance and the populations' standard error.
-pub fn warning(r: &PopulationResults, rtol: f64) -> Option<String> {
+pub fn warning(r: &PopulationResults, rtol: f64) -> Option<Warning> {
     let s = r.statistics.as_ref()?;
     let integral = r.integral.unwrap_or(0.0);
     let (mean, se) = (s.mean(), s.mean_standard_error());
     if agrees_with_integral(mean, se, integral, rtol) {
         return None;
     }
-    let integral_text = match r.integral {
-        Some(p) => format!("the integral gives {p:.3e} N, the minimum of the mean load curve"),
-        None => "the integral's mean load is never tensile on retraction".into(),
-    };
-    let carriers = match r.carriers {
-        Some(c) => format!("only {c:.3} summits carry the tension at the integral's pull-off"),
-        None => "no summit carries a tensile mean load".into(),
-    };
-    Some(format!(
-        "pull-off: {integral_text}; one switch of {} summits pulls off at {mean:.3e} N on average \
-         (standard error {se:.1e} N; 5 %-95 %: {:.3e} .. {:.3e} N over {} populations): \
-         {carriers}, so each switch's pull-off is that of its own highest summits, not of the \
-         mean surface",
-        r.plan.summits,
-        s.quantile(0.05),
-        s.quantile(0.95),
-        s.len(),
-    ))
+    Some(Warning::PopulationDisagrees {
+        integral: r.integral,
+        carriers: r.carriers,
+        summits: r.plan.summits,
+        mean,
+        standard_error: se,
+        p05: s.quantile(0.05),
+        p95: s.quantile(0.95),
+        populations: s.len(),
+    })
 }
 
 /// The fewest populations whose widest pair of order statistics (minimum
@@ -287,31 +280,27 @@ pub fn interval_note(s: &PullOffStatistics) -> Option<String> {
 /// `1 - confidence` quantile (`confidence`: `switch.confidence`) to lie
 /// inside the sample (with fewer than `1/(1 - confidence)` populations
 /// it is interpolated between the two most tensile pull-offs).
-pub fn confidence_warning(r: &PopulationResults, confidence: Option<f64>) -> Vec<String> {
+pub fn confidence_warning(r: &PopulationResults, confidence: Option<f64>) -> Vec<Warning> {
     let Some(s) = r.statistics.as_ref() else {
         return Vec::new();
     };
     let n = s.len();
     let mut out = Vec::new();
     if interval_note(s).is_some() {
-        out.push(format!(
-            "pull-off population: {n} populations are too few for a {:.0} % interval of the 5 % \
-             and 95 % quantiles (p05_interval_N, p95_interval_N are null; {} are needed, \
-             montecarlo.seeds)",
-            100.0 * INTERVAL_CONFIDENCE,
-            populations_needed(0.05, INTERVAL_CONFIDENCE)
-        ));
+        out.push(Warning::PopulationIntervals {
+            populations: n,
+            confidence: INTERVAL_CONFIDENCE,
+            needed: populations_needed(0.05, INTERVAL_CONFIDENCE),
+        });
     }
     if let Some(c) = confidence {
         let needed = (1.0 / (1.0 - c)).ceil();
         if (n as f64) < needed {
-            out.push(format!(
-                "pull-off population: switch.confidence = {c} asks for the pull-off only {:.3} % \
-                 of switches exceed, but {n} populations cannot resolve it (at least {needed:.0} \
-                 are needed): its quantile is interpolated between the two most tensile pull-offs \
-                 drawn, not resolved",
-                100.0 * (1.0 - c)
-            ));
+            out.push(Warning::PopulationConfidence {
+                confidence: c,
+                populations: n,
+                needed,
+            });
         }
     }
     out

@@ -352,7 +352,8 @@ fn run_scene(toml: &str) -> asperity::Result<(String, Vec<String>)> {
     let scene = Scene::from_toml(toml)?;
     let plan = Plan::new(&scene, PlanMode::Planned)?;
     let results = plan.run()?;
-    Ok((curve_csv(&results, &plan), plan.warnings.clone()))
+    let warnings = plan.warnings.iter().map(ToString::to_string).collect();
+    Ok((curve_csv(&results, &plan), warnings))
 }
 
 const DRY: &str = r#"

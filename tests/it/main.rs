@@ -107,4 +107,5 @@ mod theory_differences;
 mod topography_deflated;
 mod topography_errors;
 mod topography_reference;
+mod warnings;
 mod wet_scenes;

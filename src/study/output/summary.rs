@@ -8,6 +8,7 @@ use super::topography::{self, TopographySummary};
 use crate::study::plan::Plan;
 use crate::study::quantity::{Headlines, StateRow};
 use crate::study::run::{McResults, Results, MIN_SUMMITS_FOR_Z};
+use crate::study::Warning;
 use serde::Serialize;
 
 /// The JSON summary of a run (SI units; `null` where not computed).
@@ -92,8 +93,11 @@ pub struct Summary {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub states: Option<Vec<StateRow>>,
     /// Where the scene or its results lie outside a model's validity, one
-    /// sentence each (empty when none).
-    pub warnings: Vec<String>,
+    /// sentence each (empty when none): the plan's, then the run's,
+    /// written as their sentences ([`Warning`]'s `Display`).
+    pub warnings: Vec<Warning>,
+    /// The code of each warning ([`Warning::code`]), in the same order.
+    pub warning_codes: Vec<&'static str>,
     /// The measured map (`[surface] topography`): its characterisation, the
     /// model used and, when asked, the other model's headline numbers.
     /// Absent without a map.
@@ -638,6 +642,7 @@ impl Summary {
                 .chain(&results.warnings)
                 .cloned()
                 .collect(),
+            warning_codes: Warning::codes(plan.warnings.iter().chain(&results.warnings)),
             topography: topography::summary(plan, results),
             rough_sphere: results.sphere.clone(),
             deprecated: Aliases::default(),

@@ -15,6 +15,7 @@ use crate::loading::Observables;
 use crate::material::plastic::Plasticity;
 use crate::material::AsperityContact;
 use crate::study::quantity::QuantitySet;
+use crate::study::Warning;
 
 use crate::study::scene::{
     build_contact, build_distribution, build_surface, MonteCarloSpec, Resolved, Scene,
@@ -67,7 +68,11 @@ impl Plan {
         let mut warnings =
             plasticity_decision(plasticity, &surface, &contact, &law, &mut decisions)?;
         warnings.extend(wet_warnings);
-        warnings.extend(calibration.and_then(|c| c.note.clone()));
+        warnings.extend(
+            calibration
+                .and_then(|c| c.note.clone())
+                .map(Warning::CalibrationCache),
+        );
         warnings.extend(resolved.iter().flat_map(|r| r.warnings.iter().cloned()));
         let model = model.with_accuracy(accuracy);
         let (target, start, listed) = program(scene, mode, &budget, &model, &mut decisions)?;
@@ -143,7 +148,7 @@ fn plasticity_decision(
     contact: &AsperityContact,
     law: &LawChoice,
     decisions: &mut Vec<Decision>,
-) -> Result<Vec<String>> {
+) -> Result<Vec<Warning>> {
     let Some(p) = plasticity else {
         return Ok(Vec::new());
     };
@@ -160,6 +165,7 @@ fn plasticity_decision(
         Vec::new()
     } else {
         crate::law::plastic::elastic_law_warning(&law.name, psi)
+            .map(|text| Warning::ElasticLawYields { psi, text })
             .into_iter()
             .collect()
     })

@@ -160,7 +160,7 @@ pub struct Plan {
     /// Where the scene lies outside a model's validity, found while
     /// planning (the run adds its own, [`crate::study::Results::warnings`]);
     /// the summary lists both.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<crate::study::Warning>,
     /// The measured map, when the scene has `[surface] topography`.
     pub topography: Option<TopographyPlan>,
     /// The rough sphere, when the scene has `[sphere]`: every total is
@@ -175,7 +175,14 @@ fn with_map_warnings(e: Error, inputs: &Inputs) -> Error {
     match e {
         Error::Invalid { name, reason } if !warnings.is_empty() => Error::Invalid {
             name,
-            reason: format!("{reason}; note: {}", warnings.join("; ")),
+            reason: format!(
+                "{reason}; note: {}",
+                warnings
+                    .iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            ),
         },
         other => other,
     }

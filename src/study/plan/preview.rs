@@ -37,7 +37,7 @@ impl Preview {
     }
 
     /// The plan's warnings (none while a map is pending).
-    pub fn warnings(&self) -> &[String] {
+    pub fn warnings(&self) -> &[crate::study::Warning] {
         self.plan().map_or(&[], |p| &p.warnings)
     }
 

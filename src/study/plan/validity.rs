@@ -8,6 +8,7 @@ use crate::gw::validity::Finding;
 use crate::gw::GwModel;
 use crate::loading::{Curve, LoadingModel};
 use crate::study::plan::{Plan, Target};
+use crate::study::Warning;
 
 /// The scene field that sets the closest separation, as the user wrote it.
 fn program_field(plan: &Plan) -> &'static str {
@@ -16,7 +17,7 @@ fn program_field(plan: &Plan) -> &'static str {
 
 /// A finding as a warning, or as an error naming the input that drove it
 /// when it makes the result impossible.
-fn judge(plan: &Plan, f: Finding, closest: f64, warnings: &mut Vec<String>) -> Result<()> {
+fn judge(plan: &Plan, f: Finding, closest: f64, warnings: &mut Vec<Warning>) -> Result<()> {
     let s = &plan.surface;
     match f {
         Finding::DeeperThanRadius {
@@ -66,7 +67,7 @@ fn judge(plan: &Plan, f: Finding, closest: f64, warnings: &mut Vec<String>) -> R
             ))
         }
         other => {
-            warnings.push(other.to_string());
+            warnings.push(Warning::Validity(other));
             Ok(())
         }
     }
@@ -150,7 +151,7 @@ fn model(plan: &Plan) -> Result<GwModel> {
 /// # Errors
 /// [`Error::Invalid`] naming the field when the program would press the
 /// highest summit deeper than its radius.
-pub fn plan_warnings(plan: &Plan) -> Result<Vec<String>> {
+pub fn plan_warnings(plan: &Plan) -> Result<Vec<Warning>> {
     let mut warnings = Vec::new();
     let closest = match plan.target {
         Target::Separation(d) => d,
@@ -184,7 +185,7 @@ pub fn run_warnings(
     plan: &Plan,
     curve: &Curve,
     hysteresis_energy: &mut Option<f64>,
-) -> Result<Vec<String>> {
+) -> Result<Vec<Warning>> {
     let mut warnings = Vec::new();
     let bad = curve
         .approach
@@ -254,10 +255,10 @@ pub fn run_warnings(
             });
         }
         if e < 0.0 {
-            warnings.push(format!(
-                "hysteresis energy: {e:.3e} J is zero within its tolerance {tol:.3e} J; \
-                 reported as 0"
-            ));
+            warnings.push(Warning::HysteresisZero {
+                energy: e,
+                tolerance: tol,
+            });
             *hysteresis_energy = Some(0.0);
         }
     }
@@ -285,12 +286,17 @@ mod tests {
             Scene::from_toml(&DEFAULT_SCENE.replacen("points = 200", "points = 20", 1)).unwrap();
         let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
         let results = plan.run().unwrap();
-        let quiet = |w: &[String]| w.iter().all(|s| s.starts_with("pull-off:"));
+        let quiet = |w: &[Warning]| w.iter().all(|s| s.to_string().starts_with("pull-off:"));
         assert!(quiet(&results.warnings), "{:?}", results.warnings);
         let mut e = Some(-1e-30);
         let w = run_warnings(&plan, &results.curve, &mut e).unwrap();
         assert_eq!(e, Some(0.0));
-        assert!(w.iter().any(|s| s.contains("zero within")), "{w:?}");
+        assert!(
+            w.iter()
+                .any(|s| s.code() == "hysteresis-energy-zero"
+                    && s.to_string().contains("zero within")),
+            "{w:?}"
+        );
         let mut e = Some(-1.0);
         let err = run_warnings(&plan, &results.curve, &mut e).unwrap_err();
         assert!(
@@ -310,7 +316,9 @@ mod tests {
         let plan = Plan::new(&scene, PlanMode::Planned).unwrap();
         assert!((plan.surface.eta_r_sigma() - 0.15).abs() < 1e-12);
         assert!(
-            plan.warnings.iter().any(|w| w.contains("eta R sigma")),
+            plan.warnings
+                .iter()
+                .any(|w| w.code() == "eta-r-sigma" && w.to_string().contains("eta R sigma")),
             "{:?}",
             plan.warnings
         );

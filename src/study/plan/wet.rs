@@ -15,6 +15,7 @@ use crate::error::Result;
 use crate::law::LawKernels;
 use crate::material::AsperityContact;
 use crate::study::scene::Scene;
+use crate::study::Warning;
 use std::sync::Arc;
 
 /// The wet law for `scene` from the dry `law`, with the validity warnings.
@@ -26,7 +27,7 @@ pub(super) fn apply(
     mode: PlanMode,
     budget: &Budget,
     decisions: &mut Vec<Decision>,
-) -> Result<(LawChoice, Vec<String>)> {
+) -> Result<(LawChoice, Vec<Warning>)> {
     let Some(m) = scene.adhesion.meniscus()? else {
         return Ok((law, Vec::new()));
     };
@@ -90,33 +91,23 @@ pub fn warnings(
     error: Option<f64>,
     rtol: f64,
     exact: bool,
-) -> Vec<String> {
+) -> Vec<Warning> {
     let mut w = Vec::new();
     let rk = m.kelvin_radius();
     if rk < MOLECULAR_SIZE {
-        w.push(format!(
-            "adhesion.relative_humidity: the Kelvin radius {rk:.3e} m is below a molecular size \
-             (0.2 nm): the continuum Kelvin equation does not hold, the menisci are adsorbed \
-             layers a molecule thick"
-        ));
+        w.push(Warning::MeniscusMolecular { kelvin_radius: rk });
     }
     if rk > radius || m.height() > sigma {
-        w.push(format!(
-            "adhesion.relative_humidity: the menisci merge (Kelvin radius {rk:.3e} m, meniscus \
-             height {:.3e} m, against the summit radius {radius:.3e} m and the summit-height \
-             standard deviation {sigma:.3e} m): per-summit menisci no longer hold and the \
-             interface floods (the flooded model, Laplace pressure on the area where the gap \
-             is below the meniscus height, applies instead)",
-            m.height()
-        ));
+        w.push(Warning::MenisciMerge {
+            kelvin_radius: rk,
+            height: m.height(),
+            radius,
+            sigma,
+        });
     }
     if let (false, Some(e)) = (exact, error) {
         if e > rtol {
-            w.push(format!(
-                "adhesion.relative_humidity: the menisci are in their rigid (Derjaguin) form \
-                 beside this law, off by {e:.2e} in the pull-off against the elastic meniscus \
-                 (above rtol = {rtol:e})"
-            ));
+            w.push(Warning::MeniscusRigid { error: e, rtol });
         }
     }
     w

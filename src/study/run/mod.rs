@@ -18,6 +18,7 @@ use crate::material::plastic::{RegimeLimits, Variant};
 use crate::montecarlo::{Comparison, MonteCarlo, Population, SummitLaw};
 use crate::numeric::mix::{derive_seed, Stream};
 use crate::study::quantity::{QuantitySet, Record};
+use crate::study::warning::{ModelErrorOutput, Warning};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -65,7 +66,7 @@ pub struct Results {
     pub elastic_approach: Option<Vec<State>>,
     /// Where the results lie outside a model's validity (each a sentence
     /// naming the quantity, its value and the bound).
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     /// The measured map's part (the other model's headline numbers when
     /// asked), when the scene has `[surface] topography`.
     pub topography: Option<super::measured::TopographyResults>,
@@ -88,10 +89,9 @@ pub struct Results {
 /// `results` of an `auto` law that missed `rtol` on the surface, kept
 /// because the full-solver law's run failed with `e`.
 fn auto_failed(mut results: Results, e: &crate::Error) -> Results {
-    results.warnings.push(format!(
-        "law.kind = \"auto\": the full-solver law, which the model error above asks for, failed \
-         on this scene ({e}); the results are the analytic law's"
-    ));
+    results.warnings.push(Warning::AutoLawFailed {
+        error: e.to_string(),
+    });
     results
 }
 
@@ -346,7 +346,7 @@ impl Plan {
         if let Some(sp) = &self.sphere {
             // The same surface model under an elastic sphere: every total
             // is over the bump, separations are remote.
-            let sphere = sp.on(model)?;
+            let sphere = sphere::with_spots(self, sp.on(model)?);
             let run = self
                 .run_on(&sphere, run_law, t0, progress)
                 .and_then(|mut results| {
@@ -453,7 +453,7 @@ impl Plan {
             .sum();
         let mut warnings =
             super::plan::validity::run_warnings(self, &curve, &mut hysteresis_energy)?;
-        warnings.extend(crate::numeric::simd::ignored_request());
+        warnings.extend(crate::numeric::simd::ignored_request().map(Warning::SimdNotFollowed));
         let max_load = curve.approach.first().and_then(|s| s.load());
         let mut model_error = super::model_error::measure(
             self,
@@ -465,13 +465,10 @@ impl Plan {
         model_error.measure_map(self, closest, pull_off.map(|p| p.load), max_load, t0)?;
         warnings.extend(model_error.warnings(&self.law.name, self.scene.law.kind));
         if let Some(p) = pull_off.filter(|p| p.at_start) {
-            warnings.push(format!(
-                "pull-off: the retraction ends at program.start_separation = {:e} m with the load \
-                 still at its most tensile ({:.3e} N): the contact has not pulled off within the \
-                 program, and the true pull-off lies further out (start further out, or leave \
-                 start_separation unset for the law's reach)",
-                p.separation, p.load
-            ));
+            warnings.push(Warning::PullOffAtStart {
+                separation: p.separation,
+                load: p.load,
+            });
         }
         if let Some(r) = &pull_off_population {
             // How many populations the budget allowed is a note of the
@@ -488,11 +485,10 @@ impl Plan {
         };
         if let Some(s) = montecarlo.as_ref().and_then(|m| m.spots.as_ref()) {
             if s.merged > 0 {
-                warnings.push(format!(
-                    "montecarlo spots: {} spots overlapped others at their random positions and \
-                     were merged into spots of their joint area ({} spots remain)",
-                    s.merged, s.spots
-                ));
+                warnings.push(Warning::SpotsMerged {
+                    merged: s.merged,
+                    spots: s.spots,
+                });
             }
         }
         Ok(Results {
@@ -523,7 +519,7 @@ impl Plan {
     /// states): the hottest of them, with their number beyond softening.
     /// The curve's far states (a fraction of one spot carrying the whole
     /// current) are left to their columns: no temperature once molten.
-    fn heating_warning(&self, r: &Results, listed: &QuantitySet) -> Result<Option<String>> {
+    fn heating_warning(&self, r: &Results, listed: &QuantitySet) -> Result<Option<Warning>> {
         let Some((current, heating)) = self.heating else {
             return Ok(None);
         };
@@ -546,14 +542,12 @@ impl Plan {
         let Some(&(u, d)) = reported.iter().max_by(|a, b| a.0.total_cmp(&b.0)) else {
             return Ok(None);
         };
-        Ok(heating.warning(u)?.map(|w| {
-            format!(
-                "electrical.current = {current:e} A at d = {d:.4e} m: {w} ({beyond} of the {} \
-                 reported states, the closest approach and the listed ones, are beyond \
-                 softening; electrical.softening_temperature and melting_temperature set the \
-                 metal, gold's by default)",
-                reported.len()
-            )
+        Ok(heating.warning(u)?.map(|spot| Warning::SpotHeating {
+            current,
+            separation: d,
+            spot,
+            beyond,
+            reported: reported.len(),
         }))
     }
 
@@ -595,13 +589,22 @@ impl Plan {
             let separations: Vec<f64> = steps.iter().map(|&(d, _)| d).collect();
             m.measure_listed(self, &separations, &loads);
             let before = m.warnings(&self.law.name, self.scene.law.kind);
-            if let Some(w) = before.into_iter().find(|w| w.contains("listed state")) {
+            let listed_state = |w: &Warning| {
+                matches!(
+                    w,
+                    Warning::ModelError {
+                        output: ModelErrorOutput::ListedLoad,
+                        ..
+                    }
+                )
+            };
+            if let Some(w) = before.into_iter().find(listed_state) {
                 r.warnings.push(w);
             }
         }
         if self.sphere.is_none() {
-            // (a rough sphere's resistances, and so its temperatures, are
-            // set per state by `study::sphere::finish`, which runs after)
+            // (a rough sphere's follows its own warnings, after
+            // `sphere::finish`)
             r.warnings.extend(self.heating_warning(&r, &listed)?);
         }
         if self.sphere.is_none() {
@@ -644,9 +647,8 @@ impl Plan {
                     .filter(|c| c.interaction_skipped && c.contacts > 0.0)
                     .count();
                 if skipped > 0 {
-                    r.warnings.push(format!(
-                        "electrical.interaction = \"greenwood\": left out at {skipped} states where fewer than 2 contacts are expected (the mean field needs several spots)"
-                    ));
+                    r.warnings
+                        .push(Warning::GreenwoodSkipped { states: skipped });
                 }
             }
         }

@@ -4,21 +4,22 @@
 //! - The state at the closest approach ([`SphereState`]: the radius holding
 //!   95 % of the load against Hertz's, the approach, the central
 //!   deflection, the mesh) with its model warnings.
-//! - Greenwood's interaction per state over the bump's apparent area: the
-//!   square of side `c_sq / I` (`I` the spots' conductance-weighted mean
-//!   inverse distance, [`crate::roughsphere::BumpResistance`]) replaces
-//!   the nominal area's square in the resistance, the contact voltage and
-//!   the temperature of every state.
+//! - Greenwood's interaction per state over the bump's apparent area is
+//!   not set here: each state of the sphere carries the spots'
+//!   conductance-weighted mean inverse distance `I`
+//!   ([`crate::loading::Totals::inverse_distance`], [`with_spots`]), and
+//!   the resistance, the contact voltage and the temperature are derived
+//!   from its totals like a flat's, over the square of side `c_sq / I`
+//!   instead of the nominal area's.
 //! - The regime fractions at the centre of the bump (its closest local
 //!   gap), and the elastic law's approach states on the same sphere.
 
 use super::Results;
-use crate::electrical::{Interaction, ResistanceObservables};
+use crate::electrical::Interaction;
 use crate::error::Result;
 use crate::loading::History;
 use crate::roughsphere::{BumpElectrics, RoughSphere, SphereQuery, SphereState};
 use crate::study::plan::Plan;
-use crate::study::quantity::Record;
 
 /// The bump's state at remote separation `separation` after `history`,
 /// with area, count and (with `[electrical]`) the resistance.
@@ -39,6 +40,19 @@ fn state(
     sphere.sphere_state(separation, history, &query)
 }
 
+/// `sphere` for `plan`'s run: with Greenwood's interaction, its states
+/// carry the spread of the spots' conductance over the bump
+/// ([`RoughSphere::with_spot_conductance`]), from which the records'
+/// resistance takes the bump's own square.
+pub(super) fn with_spots(plan: &Plan, sphere: RoughSphere) -> RoughSphere {
+    match &plan.resistance {
+        Some(res) if res.interaction() == Interaction::Greenwood => {
+            sphere.with_spot_conductance(res.conductance().clone())
+        }
+        _ => sphere,
+    }
+}
+
 /// Completes `r`, a run of `plan` on `sphere`.
 ///
 /// # Errors
@@ -49,7 +63,7 @@ pub(super) fn finish(plan: &Plan, sphere: &RoughSphere, r: &mut Results) -> Resu
         closest
             .warnings
             .iter()
-            .map(|w| format!("rough sphere at the closest approach: {w}")),
+            .map(|w| crate::study::Warning::RoughSphere(w.clone())),
     );
     r.regimes = plan.regimes_at(closest.central_separation);
     if let Some(law) = plan.elastic_law()? {
@@ -60,79 +74,8 @@ pub(super) fn finish(plan: &Plan, sphere: &RoughSphere, r: &mut Results) -> Resu
             .on(plan.model_with(law)?)?;
         r.elastic_approach = Some(super::elastic_approach(&elastic, &r.curve)?);
     }
-    if let Some(res) = &plan.resistance {
-        if res.interaction() == Interaction::Greenwood {
-            bump_interaction(plan, sphere, res, r)?;
-        }
-    }
     r.sphere = Some(closest);
     Ok(())
-}
-
-/// Every record's resistance, voltage and temperature with the bump's own
-/// interaction square at that state.
-fn bump_interaction(
-    plan: &Plan,
-    sphere: &RoughSphere,
-    res: &ResistanceObservables,
-    r: &mut Results,
-) -> Result<()> {
-    let closest = r.curve.program.closest;
-    let retract = if plan.compute_retraction {
-        History::Retract { closest }
-    } else {
-        History::Approach
-    };
-    let legs: [(&mut Vec<Record>, History); 3] = [
-        (&mut r.records.approach, History::Approach),
-        (&mut r.records.retract, retract),
-        (&mut r.listed, History::Approach),
-    ];
-    for (records, history) in legs {
-        for rec in records.iter_mut() {
-            let h = match history {
-                // a retraction state at the closest separation is the
-                // deepest approach state
-                History::Retract { closest } if rec.state.separation <= closest => {
-                    History::Approach
-                }
-                h => h,
-            };
-            let side = state(plan, sphere, rec.state.separation, h)?
-                .resistance
-                .map_or(f64::NAN, |b| b.equivalent_square_side);
-            set_resistance(plan, &res.with_side(side), rec);
-        }
-    }
-    Ok(())
-}
-
-/// The record's resistance, contact voltage and peak temperature from its
-/// totals with `res`.
-fn set_resistance(plan: &Plan, res: &ResistanceObservables, rec: &mut Record) {
-    let q = &plan.quantities;
-    let ohm = res
-        .resistance(q.observables(), &rec.state.totals)
-        .map(|c| c.resistance)
-        .filter(|x| x.is_finite());
-    let mut set = |name: &str, v: Option<f64>| {
-        if let Some((i, _)) = q.find(name) {
-            rec.values[i] = v;
-        }
-    };
-    set("resistance", ohm);
-    if let Some((current, heating)) = plan.heating {
-        set(
-            "contact_voltage",
-            ohm.map(|x| current * x).filter(|x| x.is_finite()),
-        );
-        set(
-            "max_temperature",
-            // None once the spot melts (Holm's relation ends there).
-            ohm.and_then(|x| heating.peak_temperature((current * x).abs()).ok().flatten())
-                .filter(|x| x.is_finite()),
-        );
-    }
 }
 
 /// How many decades from typical an input must lie for a failed sphere

@@ -27,6 +27,7 @@
 use super::schema::{Scene, SurfaceSpec};
 use crate::error::{positive, Error, Result};
 use crate::named::Named;
+use crate::study::Warning;
 use crate::surface::{Characterisation, HeightMap, Topography};
 use crate::topography::units::HeightUnit;
 use crate::topography::{self, Channel, Format};
@@ -274,7 +275,7 @@ pub struct Resolved {
     pub map: crate::surface::HeightMap,
     /// Warnings about the map: a `pixel_size` that disagrees with the
     /// file's, units that are probably wrong.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
 }
 
 /// Reads and characterises the scene's map (its path relative to
@@ -292,12 +293,16 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
     };
     let file = base_dir.join(&spec.path);
     let read = read_measured(&file, &spec)?;
-    let ((dx, dy), mut warnings) = topography::pixel_sizes(
+    let ((dx, dy), pixel_warnings) = topography::pixel_sizes(
         read.file_pixels,
         spec.pixel_size,
         "surface.pixel_size",
         read.format,
     )?;
+    let mut warnings: Vec<Warning> = pixel_warnings
+        .into_iter()
+        .map(Warning::MapPixelSize)
+        .collect();
     let periodic = spec.periodic || read.periodic;
     let topo = Topography::with_pixels(read.map, dx, dy).map_err(|e| match e.field() {
         Some("heights") => e.renamed("surface.height_scale"),
@@ -306,15 +311,19 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
     let c = topo
         .characterise(periodic)
         .map_err(|e| Error::invalid(FIELD, format!("{}: {e}", file.display())))?;
-    warnings.extend(topography::unit_warnings(
-        c.moments.rms_height(),
-        (dx, dy),
-        &format!(
-            "surface.height_unit = \"{}\"",
-            HeightUnit::names().join("\" | \"")
-        ),
-        "surface.height_scale",
-    ));
+    warnings.extend(
+        topography::unit_warnings(
+            c.moments.rms_height(),
+            (dx, dy),
+            &format!(
+                "surface.height_unit = \"{}\"",
+                HeightUnit::names().join("\" | \"")
+            ),
+            "surface.height_scale",
+        )
+        .into_iter()
+        .map(Warning::MapUnits),
+    );
     if c.stats.count < 2 {
         return Err(Error::invalid(
             FIELD,
