@@ -187,20 +187,7 @@ impl AxisymMd {
         0.5 * lambda * (PI * work * k * k / radius).cbrt()
     }
 
-    /// The profile.
-    pub fn profile(&self) -> &Profile {
-        &self.profile
-    }
-
-    /// Contact modulus `E*` (Pa).
-    pub fn contact_modulus(&self) -> f64 {
-        self.estar
-    }
-
-    /// Work of adhesion `w` (J/m^2).
-    pub fn work(&self) -> f64 {
-        self.work
-    }
+    adhesive_profile_accessors!();
 
     /// Dugdale stress `sigma0` (Pa).
     pub fn stress(&self) -> f64 {

@@ -240,16 +240,23 @@ pub fn regime_name(r: Regime) -> &'static str {
     }
 }
 
-/// The capillary table `asperity bem` prints.
-pub fn text(w: &WetOutput) -> String {
+/// The capillary tables' first line (the meniscus) and column titles: the
+/// eight columns of both tables ([`state_cells!`]), then `extra` (the
+/// caller's own titles, laid out).
+pub(super) fn table_head(
+    kelvin_radius_m: f64,
+    laplace_pressure: f64,
+    meniscus_height_m: f64,
+    extra: &str,
+) -> String {
     use std::fmt::Write as _;
     let mut t = format!(
-        "capillary: Kelvin radius {:.4e} m, Laplace pressure {:.4e} Pa, meniscus height h_m {:.4e} m\n",
-        w.kelvin_radius_m, w.laplace_pressure, w.meniscus_height_m
+        "capillary: Kelvin radius {kelvin_radius_m:.4e} m, Laplace pressure \
+         {laplace_pressure:.4e} Pa, meniscus height h_m {meniscus_height_m:.4e} m\n"
     );
     let _ = writeln!(
         t,
-        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9} {:>14} {:>9}",
+        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9}{extra}",
         "p (Pa)",
         "u_rms (m)",
         "h_m/u",
@@ -258,29 +265,58 @@ pub fn text(w: &WetOutput) -> String {
         "flooded (Pa)",
         "summits (Pa)",
         "summ/fl",
-        "Persson (Pa)",
-        "P/fl"
     );
-    let f = |x: Option<f64>, pct: bool| match x {
-        Some(v) if pct => format!("{:+.1}%", 100.0 * v),
+    t
+}
+
+/// A table cell: `-` for none, a signed percentage for a relative
+/// difference (`relative`), else four significant digits.
+pub(super) fn cell(x: Option<f64>, relative: bool) -> String {
+    match x {
+        Some(v) if relative => format!("{:+.1}%", 100.0 * v),
         Some(v) => format!("{v:.4e}"),
         None => "-".into(),
+    }
+}
+
+/// The eight cells of a capillary state's row under [`table_head`]'s
+/// titles, from a state with the fields `pressure`, `rms_gap_m`, `ratio`,
+/// `regime`, `wetted_fraction`, `flooded_pressure`, `per_summit_pressure`
+/// and `model_error` ([`WetState`], `PerssonWetState`).
+macro_rules! state_cells {
+    ($s:expr) => {
+        format!(
+            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9}",
+            $s.pressure,
+            $s.rms_gap_m,
+            $s.ratio,
+            $crate::commands::wet_map::regime_name($s.regime),
+            $s.wetted_fraction,
+            $s.flooded_pressure,
+            $crate::commands::wet_map::cell($s.per_summit_pressure, false),
+            $crate::commands::wet_map::cell($s.model_error, true)
+        )
     };
+}
+pub(super) use state_cells;
+
+/// The capillary table `asperity bem` prints.
+pub fn text(w: &WetOutput) -> String {
+    use std::fmt::Write as _;
+    let extra = format!(" {:>14} {:>9}", "Persson (Pa)", "P/fl");
+    let mut t = table_head(
+        w.kelvin_radius_m,
+        w.laplace_pressure,
+        w.meniscus_height_m,
+        &extra,
+    );
     for s in &w.states {
-        let regime = regime_name(s.regime);
         let _ = writeln!(
             t,
-            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9} {:>14} {:>9}",
-            s.pressure,
-            s.rms_gap_m,
-            s.ratio,
-            regime,
-            s.wetted_fraction,
-            s.flooded_pressure,
-            f(s.per_summit_pressure, false),
-            f(s.model_error, true),
-            f(s.persson_flooded_pressure, false),
-            f(s.persson_vs_exact, true)
+            "{} {:>14} {:>9}",
+            state_cells!(s),
+            cell(s.persson_flooded_pressure, false),
+            cell(s.persson_vs_exact, true)
         );
     }
     t.push_str(

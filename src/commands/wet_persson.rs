@@ -8,7 +8,7 @@
 //! ([`crate::capillary::per_summit_pressure`]), with their difference
 //! where both apply (the transition, `0.1 <= h_m/u_rms <= 1`).
 
-use super::wet_map::{regime_name, regime_warnings, Liquid};
+use super::wet_map::{regime_warnings, state_cells, table_head, Liquid};
 use super::{param, CommandResult};
 use crate::capillary::{per_summit_pressure, Regime};
 use crate::gw::GwOnMoments;
@@ -153,41 +153,14 @@ pub fn warnings(w: &PerssonWetOutput) -> Vec<String> {
 /// The capillary table `asperity persson` prints.
 pub fn text(w: &PerssonWetOutput) -> String {
     use std::fmt::Write as _;
-    let mut t = format!(
-        "capillary: Kelvin radius {:.4e} m, Laplace pressure {:.4e} Pa, meniscus height h_m {:.4e} m\n",
-        w.kelvin_radius_m, w.laplace_pressure, w.meniscus_height_m
-    );
-    let _ = writeln!(
-        t,
-        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9}",
-        "p (Pa)",
-        "u_rms (m)",
-        "h_m/u",
-        "regime",
-        "A_w/A0",
-        "flooded (Pa)",
-        "summits (Pa)",
-        "summ/fl"
+    let mut t = table_head(
+        w.kelvin_radius_m,
+        w.laplace_pressure,
+        w.meniscus_height_m,
+        "",
     );
     for s in &w.states {
-        let ps = s
-            .per_summit_pressure
-            .map_or("-".into(), |v| format!("{v:.4e}"));
-        let me = s
-            .model_error
-            .map_or("-".into(), |v| format!("{:+.1}%", 100.0 * v));
-        let _ = writeln!(
-            t,
-            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9}",
-            s.pressure,
-            s.rms_gap_m,
-            s.ratio,
-            regime_name(s.regime),
-            s.wetted_fraction,
-            s.flooded_pressure,
-            ps,
-            me
-        );
+        let _ = writeln!(t, "{}", state_cells!(s));
     }
     t.push_str(
         "(flooded: Laplace pressure on the area where Persson's gap distribution is below h_m; \
