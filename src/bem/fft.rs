@@ -425,21 +425,17 @@ mod tests {
         let f = Fft2::new(rows, cols);
         let (x, kernel) = test_field_and_kernel(&f, rows * cols);
         let run = |threads: usize| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap()
-                .install(|| {
-                    let mut spec = vec![ZERO; f.spectrum_len()];
-                    let mut work = spec.clone();
-                    let mut y = vec![0.0; rows * cols];
-                    f.convolve(&x, &mut y, &kernel, &mut spec, &mut work);
-                    f.forward(&x, &mut spec, &mut work);
-                    let s = spec.clone();
-                    let mut back = vec![0.0; rows * cols];
-                    f.inverse(&mut spec, &mut back, &mut work);
-                    (y, s, back)
-                })
+            crate::test_threads::on_threads(threads, || {
+                let mut spec = vec![ZERO; f.spectrum_len()];
+                let mut work = spec.clone();
+                let mut y = vec![0.0; rows * cols];
+                f.convolve(&x, &mut y, &kernel, &mut spec, &mut work);
+                f.forward(&x, &mut spec, &mut work);
+                let s = spec.clone();
+                let mut back = vec![0.0; rows * cols];
+                f.inverse(&mut spec, &mut back, &mut work);
+                (y, s, back)
+            })
         };
         let one = run(1);
         for threads in [2, 3] {
