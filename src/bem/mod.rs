@@ -142,7 +142,29 @@ pub struct Solution {
     pub elastic_energy_per_area: f64,
 }
 
+/// How one boundary-element solve ended, as the outputs state it (the
+/// keys `iterations`, `residual`, `converged` of `asperity bem --json`'s
+/// states and of a scene's map states).
+#[derive(serde::Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct SolveReport {
+    /// Solver iterations (of the last solve).
+    pub iterations: usize,
+    /// Final residual (dimensionless; see the solver).
+    pub residual: f64,
+    /// Whether the residual fell below the tolerance.
+    pub converged: bool,
+}
+
 impl Solution {
+    /// Its [`SolveReport`]: iterations, residual, convergence.
+    pub fn report(&self) -> SolveReport {
+        SolveReport {
+            iterations: self.iterations,
+            residual: self.residual,
+            converged: self.converged,
+        }
+    }
+
     /// From the pressure solver: contact where `p > 0`; gaps clipped at 0;
     /// plastic where `p >= hardness` (`inf`: none).
     fn from_fields(p: Vec<f64>, g: Vec<f64>, hardness: f64, it: usize, residual: f64) -> Self {
