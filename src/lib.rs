@@ -56,6 +56,8 @@ pub mod stickiness;
 #[cfg(feature = "study")]
 pub mod study;
 pub mod surface;
+#[cfg(test)]
+mod test_threads;
 #[cfg(feature = "study")]
 pub mod topography;
 

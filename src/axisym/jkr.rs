@@ -118,20 +118,7 @@ impl AxisymJkr {
         Ok(s)
     }
 
-    /// The profile.
-    pub fn profile(&self) -> &Profile {
-        &self.profile
-    }
-
-    /// Contact modulus `E*` (Pa).
-    pub fn contact_modulus(&self) -> f64 {
-        self.estar
-    }
-
-    /// Work of adhesion `w` (J/m^2).
-    pub fn work(&self) -> f64 {
-        self.work
-    }
+    adhesive_profile_accessors!();
 
     /// Interference `delta(a) = delta_0(a) - sqrt(2 pi w a/E*)` (m).
     pub fn interference(&self, a: f64) -> f64 {

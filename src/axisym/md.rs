@@ -187,20 +187,7 @@ impl AxisymMd {
         0.5 * lambda * (PI * work * k * k / radius).cbrt()
     }
 
-    /// The profile.
-    pub fn profile(&self) -> &Profile {
-        &self.profile
-    }
-
-    /// Contact modulus `E*` (Pa).
-    pub fn contact_modulus(&self) -> f64 {
-        self.estar
-    }
-
-    /// Work of adhesion `w` (J/m^2).
-    pub fn work(&self) -> f64 {
-        self.work
-    }
+    adhesive_profile_accessors!();
 
     /// Dugdale stress `sigma0` (Pa).
     pub fn stress(&self) -> f64 {
@@ -381,38 +368,41 @@ impl AxisymMd {
         (0..=SCAN).rev().map(move |i| lo * ratio.powi(i as i32))
     }
 
-    fn find_pull_off(&self) -> Result<MdPoint> {
+    /// The first contact radius of the descending scan ([`Self::grid`])
+    /// where slope `k` of [`Self::slopes`] (0: `d delta/da`, 1: `dF/da`)
+    /// turns negative, refined by Brent; `None` when it never does. `what`
+    /// names the instability in the errors.
+    fn first_negative_slope(&self, k: usize, what: &str) -> Result<Option<MdPoint>> {
+        let slope = |a: f64| {
+            let s = self.slopes(a);
+            [s.0, s.1][k]
+        };
         let mut prev: Option<(f64, f64)> = None;
         for a in self.grid() {
-            let df = self.slopes(a).1;
-            if let Some((a_hi, df_hi)) = prev {
-                if df < 0.0 && df_hi >= 0.0 {
-                    let r = brent(|x| self.slopes(x).1, a, a_hi, 4.0 * f64::EPSILON * a_hi)
-                        .ok_or_else(|| no_convergence("Maugis-Dugdale pull-off"))?;
-                    return Ok(self.point(r));
+            let d = slope(a);
+            if let Some((a_hi, d_hi)) = prev {
+                if d < 0.0 && d_hi >= 0.0 {
+                    let r = brent(slope, a, a_hi, 4.0 * f64::EPSILON * a_hi)
+                        .ok_or_else(|| no_convergence(&format!("Maugis-Dugdale {what}")))?;
+                    return Ok(Some(self.point(r)));
                 }
-            } else if df < 0.0 {
-                return Err(too_deep("pull-off"));
+            } else if d < 0.0 {
+                return Err(too_deep(what));
             }
-            prev = Some((a, df));
+            prev = Some((a, d));
         }
-        Ok(self.junction)
+        Ok(None)
+    }
+
+    fn find_pull_off(&self) -> Result<MdPoint> {
+        Ok(self
+            .first_negative_slope(1, "pull-off")?
+            .unwrap_or(self.junction))
     }
 
     fn find_snap(&self) -> Result<MdPoint> {
-        let mut prev: Option<(f64, f64)> = None;
-        for a in self.grid() {
-            let dd = self.slopes(a).0;
-            if let Some((a_hi, dd_hi)) = prev {
-                if dd < 0.0 && dd_hi >= 0.0 {
-                    let r = brent(|x| self.slopes(x).0, a, a_hi, 4.0 * f64::EPSILON * a_hi)
-                        .ok_or_else(|| no_convergence("Maugis-Dugdale jump-out"))?;
-                    return Ok(self.point(r));
-                }
-            } else if dd < 0.0 {
-                return Err(too_deep("jump-out"));
-            }
-            prev = Some((a, dd));
+        if let Some(p) = self.first_negative_slope(0, "jump-out")? {
+            return Ok(p);
         }
         // On the disc: d delta/dc = h'(c) - 4 sigma0/(pi E*).
         let c0 = self.junction.outer_radius;

@@ -15,6 +15,27 @@
 //! load `< 0` tensile; Barthel's `calK = E*/2`. The rough-surface law built
 //! on these is [`crate::law::shaped`].
 
+/// The accessors of an adhesive contact of one profile (fields `profile`,
+/// `estar`, `work`): [`AxisymJkr`] and [`AxisymMd`].
+macro_rules! adhesive_profile_accessors {
+    () => {
+        /// The profile.
+        pub fn profile(&self) -> &Profile {
+            &self.profile
+        }
+
+        /// Contact modulus `E*` (Pa).
+        pub fn contact_modulus(&self) -> f64 {
+            self.estar
+        }
+
+        /// Work of adhesion `w` (J/m^2).
+        pub fn work(&self) -> f64 {
+            self.work
+        }
+    };
+}
+
 pub mod dmt;
 pub mod jkr;
 pub mod md;

@@ -378,18 +378,25 @@ mod tests {
         }
     }
 
+    /// A deterministic field of `n` values in `[-0.5, 0.5)` and a kernel
+    /// of `f`'s spectrum length in `[1, 2)`: the convolution tests' inputs.
+    fn test_field_and_kernel(f: &Fft2, n: usize) -> (Vec<f64>, Vec<f64>) {
+        let x = (0..n)
+            .map(|k| ((k * 7919) % 97) as f64 / 97.0 - 0.5)
+            .collect();
+        let kernel = (0..f.spectrum_len())
+            .map(|k| 1.0 + ((k * 31) % 13) as f64 / 13.0)
+            .collect();
+        (x, kernel)
+    }
+
     /// The fused small-grid convolution equals transform, multiply, inverse
     /// on grids narrower than its column batch (a 3 x 3 map panicked).
     #[test]
     fn narrow_grids_convolve_as_the_plain_transforms() {
         for (rows, cols) in [(3, 3), (3, 5), (5, 3), (2, 9), (9, 2), (6, 6), (3, 17)] {
             let f = Fft2::new(rows, cols);
-            let x: Vec<f64> = (0..rows * cols)
-                .map(|k| ((k * 7919) % 97) as f64 / 97.0 - 0.5)
-                .collect();
-            let kernel: Vec<f64> = (0..f.spectrum_len())
-                .map(|k| 1.0 + ((k * 31) % 13) as f64 / 13.0)
-                .collect();
+            let (x, kernel) = test_field_and_kernel(&f, rows * cols);
             let mut spec = vec![Complex::new(0.0, 0.0); f.spectrum_len()];
             let mut work = spec.clone();
             let mut fused = vec![0.0; rows * cols];
@@ -416,28 +423,19 @@ mod tests {
         let (rows, cols) = (392, 350);
         assert!(rows * cols > PARALLEL_MIN);
         let f = Fft2::new(rows, cols);
-        let x: Vec<f64> = (0..rows * cols)
-            .map(|k| ((k * 7919) % 97) as f64 / 97.0 - 0.5)
-            .collect();
-        let kernel: Vec<f64> = (0..f.spectrum_len())
-            .map(|k| 1.0 + ((k * 31) % 13) as f64 / 13.0)
-            .collect();
+        let (x, kernel) = test_field_and_kernel(&f, rows * cols);
         let run = |threads: usize| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap()
-                .install(|| {
-                    let mut spec = vec![ZERO; f.spectrum_len()];
-                    let mut work = spec.clone();
-                    let mut y = vec![0.0; rows * cols];
-                    f.convolve(&x, &mut y, &kernel, &mut spec, &mut work);
-                    f.forward(&x, &mut spec, &mut work);
-                    let s = spec.clone();
-                    let mut back = vec![0.0; rows * cols];
-                    f.inverse(&mut spec, &mut back, &mut work);
-                    (y, s, back)
-                })
+            crate::test_threads::on_threads(threads, || {
+                let mut spec = vec![ZERO; f.spectrum_len()];
+                let mut work = spec.clone();
+                let mut y = vec![0.0; rows * cols];
+                f.convolve(&x, &mut y, &kernel, &mut spec, &mut work);
+                f.forward(&x, &mut spec, &mut work);
+                let s = spec.clone();
+                let mut back = vec![0.0; rows * cols];
+                f.inverse(&mut spec, &mut back, &mut work);
+                (y, s, back)
+            })
         };
         let one = run(1);
         for threads in [2, 3] {

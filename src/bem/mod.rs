@@ -54,7 +54,7 @@ pub use clusters::{Cluster, SizeBin};
 pub use gap_control::Exponential;
 
 use crate::error::{positive, Error, Result};
-use crate::numeric::roots::brent;
+use crate::numeric::roots::try_brent;
 use crate::surface::{HeightMap, Plane};
 use operator::HalfSpace;
 
@@ -142,7 +142,29 @@ pub struct Solution {
     pub elastic_energy_per_area: f64,
 }
 
+/// How one boundary-element solve ended, as the outputs state it (the
+/// keys `iterations`, `residual`, `converged` of `asperity bem --json`'s
+/// states and of a scene's map states).
+#[derive(serde::Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct SolveReport {
+    /// Solver iterations (of the last solve).
+    pub iterations: usize,
+    /// Final residual (dimensionless; see the solver).
+    pub residual: f64,
+    /// Whether the residual fell below the tolerance.
+    pub converged: bool,
+}
+
 impl Solution {
+    /// Its [`SolveReport`]: iterations, residual, convergence.
+    pub fn report(&self) -> SolveReport {
+        SolveReport {
+            iterations: self.iterations,
+            residual: self.residual,
+            converged: self.converged,
+        }
+    }
+
     /// From the pressure solver: contact where `p > 0`; gaps clipped at 0;
     /// plastic where `p >= hardness` (`inf`: none).
     fn from_fields(p: Vec<f64>, g: Vec<f64>, hardness: f64, it: usize, residual: f64) -> Self {
@@ -735,7 +757,7 @@ impl Problem {
 
 /// Finds `x > 0` with `f(x) = target` for `f` monotone (decreasing when
 /// `decreasing`): bracket by factors of 4 from `x0`, then Brent's method
-/// ([`brent`]) in `ln x`, stopped at the first evaluation with
+/// ([`try_brent`]) in `ln x`, stopped at the first evaluation with
 /// `|f - target| <= tol` (it counts as an exact root) or when the bracket
 /// is [`LN_X_TOL`] wide. Returns the solution at the root; every solve
 /// warm-starts from the previous one (`f` keeps it).
@@ -779,44 +801,26 @@ where
     // The bracket's ends are known: Brent asks for them first.
     let (la, lb) = (a.ln(), b.ln());
     let mut best = (lb, fb.abs(), sb);
-    let mut failure = None;
     let mut solves = 0;
-    let root = brent(
+    let root = try_brent(
         |lx| {
             if lx == la {
-                return fa;
+                return Ok(fa);
             }
             if lx == lb {
-                return fb;
-            }
-            if failure.is_some() {
-                return f64::NAN;
+                return Ok(fb);
             }
             solves += 1;
-            match eval(lx.exp()) {
-                Ok((v, s)) => {
-                    if v.abs() < best.1 {
-                        best = (lx, v.abs(), s);
-                    }
-                    if v.abs() <= tol {
-                        0.0
-                    } else {
-                        v
-                    }
-                }
-                Err(e) => {
-                    failure = Some(e);
-                    f64::NAN
-                }
+            let (v, s) = eval(lx.exp())?;
+            if v.abs() < best.1 {
+                best = (lx, v.abs(), s);
             }
+            Ok(if v.abs() <= tol { 0.0 } else { v })
         },
         la,
         lb,
         LN_X_TOL,
-    );
-    if let Some(e) = failure {
-        return Err(e);
-    }
+    )?;
     let Some(root) = root else {
         return Err(Error::NoConvergence {
             what: "boundary elements: the control variable".into(),

@@ -21,6 +21,11 @@ where
         .into_par_iter()
         .map(|c| f(c * CHUNK..((c + 1) * CHUNK).min(n)))
         .collect();
+    add(parts)
+}
+
+/// The component-wise sum of the chunks' `parts`, in chunk order.
+fn add<const K: usize>(parts: Vec<[f64; K]>) -> [f64; K] {
     let mut out = [0.0; K];
     for p in parts {
         for k in 0..K {
@@ -45,11 +50,5 @@ where
         .enumerate()
         .map(|(c, s)| f(c * CHUNK..c * CHUNK + s.len(), s))
         .collect();
-    let mut out = [0.0; K];
-    for p in parts {
-        for k in 0..K {
-            out[k] += p[k];
-        }
-    }
-    out
+    add(parts)
 }

@@ -89,22 +89,6 @@ impl AsperityLaw for WithMeniscus {
         self.dry.reversible()
     }
 
-    fn remembers_maximum(&self) -> bool {
-        self.dry.remembers_maximum()
-    }
-
-    fn history_breakpoints(&self) -> Vec<f64> {
-        self.dry.history_breakpoints()
-    }
-
-    fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
-        self.dry.contact_loss_peaks(recovery)
-    }
-
-    fn attach_interference(&self) -> f64 {
-        self.dry.attach_interference()
-    }
-
     fn detach_interference(&self) -> f64 {
         self.dry.detach_interference()
     }
@@ -118,9 +102,7 @@ impl AsperityLaw for WithMeniscus {
         self.dry.interaction_range().min(-self.height)
     }
 
-    fn max_interference(&self) -> f64 {
-        self.dry.max_interference()
-    }
+    crate::law::delegate_history!(dry);
 
     /// The dry law's, with the meniscus' reach `-h_m` and full wetting at 0.
     fn breakpoints(&self, branch: Branch) -> Vec<f64> {

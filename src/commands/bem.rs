@@ -8,7 +8,7 @@ use super::persson::positive_values;
 use super::wet_map::{wet_states, Liquid, WetOutput};
 use super::{param, CommandResult};
 use crate::bem::compare::{compare, CompareError, CompareInput, Comparison, Control, Step};
-use crate::bem::{memory_estimate, Exponential, Options, SizeBin, Solution};
+use crate::bem::{memory_estimate, Exponential, Options, SizeBin, Solution, SolveReport};
 use crate::error::positive;
 use crate::surface::{npy, HeightMap};
 use crate::Error;
@@ -251,13 +251,11 @@ pub struct BemState {
     pub elastic_energy: f64,
     /// Contact clusters (8-connected pixels in contact).
     pub clusters: usize,
-    /// Solver iterations.
-    pub iterations: usize,
-    /// Final residual (dimensionless).
-    pub residual: f64,
-    /// Whether the residual fell below the tolerance (`false` only with
-    /// `allow_unconverged`, with a warning).
-    pub converged: bool,
+    /// The solve's iterations, final residual (dimensionless) and
+    /// whether it fell below the tolerance (`converged: false` only with
+    /// `allow_unconverged`, with a warning); its keys inline.
+    #[serde(flatten)]
+    pub solve: SolveReport,
     /// With a hardness: the fraction of the pixels at `p = H` (plastic).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub plastic_area_fraction: Option<f64>,
@@ -539,9 +537,7 @@ fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> 
                 full_contact: s.full_contact(),
                 elastic_energy: s.elastic_energy_per_area,
                 clusters: st.clusters,
-                iterations: s.iterations,
-                residual: s.residual,
-                converged: s.converged,
+                solve: s.report(),
                 cluster_sizes_px: st.cluster_sizes.clone(),
                 resistance: st.resistance,
             }
@@ -632,48 +628,43 @@ fn write_outputs(
         }
     }
     use crate::study::plot::{Chart, Series};
-    let series = |label: &str, pts: Vec<(f64, f64)>| Series::leg(label, pts);
-    let pick = |l: &[BemModel], f: fn(&BemModel) -> Option<f64>| -> Vec<(f64, f64)> {
-        l.iter()
-            .filter_map(|m| f(m).map(|v| (m.pressure, v)))
-            .collect()
+    // One quantity of the three models against the mean pressure: the
+    // exact states' `exact`, the theories' `theory` where they have one.
+    let chart = |title: &str,
+                 y_label: &str,
+                 exact: fn(&BemState) -> f64,
+                 theory: fn(&BemModel) -> Option<f64>| {
+        let pick = |l: &[BemModel]| -> Vec<(f64, f64)> {
+            l.iter()
+                .filter_map(|m| theory(m).map(|v| (m.pressure, v)))
+                .collect()
+        };
+        let exact = out.states.iter().map(|s| (s.pressure, exact(s))).collect();
+        Chart {
+            title: title.into(),
+            x_label: "mean pressure p (Pa)".into(),
+            y_label: y_label.into(),
+            series: vec![
+                Series::leg("boundary elements", exact),
+                Series::leg("GW", pick(&out.gw)),
+                Series::leg("Persson", pick(&out.persson)),
+            ],
+            y_range: None,
+            y_symlog: false,
+        }
     };
-    let area = Chart {
-        title: "Contact area against mean pressure".into(),
-        x_label: "mean pressure p (Pa)".into(),
-        y_label: "A/A0".into(),
-        series: vec![
-            series(
-                "boundary elements",
-                out.states
-                    .iter()
-                    .map(|s| (s.pressure, s.area_fraction))
-                    .collect(),
-            ),
-            series("GW", pick(&out.gw, |m| m.area_fraction)),
-            series("Persson", pick(&out.persson, |m| m.area_fraction)),
-        ],
-        y_range: None,
-        y_symlog: false,
-    };
-    let gap = Chart {
-        title: "Mean gap against mean pressure".into(),
-        x_label: "mean pressure p (Pa)".into(),
-        y_label: "mean gap (m)".into(),
-        series: vec![
-            series(
-                "boundary elements",
-                out.states
-                    .iter()
-                    .map(|s| (s.pressure, s.mean_gap_m))
-                    .collect(),
-            ),
-            series("GW", pick(&out.gw, |m| m.mean_gap_m)),
-            series("Persson", pick(&out.persson, |m| m.mean_gap_m)),
-        ],
-        y_range: None,
-        y_symlog: false,
-    };
+    let area = chart(
+        "Contact area against mean pressure",
+        "A/A0",
+        |s| s.area_fraction,
+        |m| m.area_fraction,
+    );
+    let gap = chart(
+        "Mean gap against mean pressure",
+        "mean gap (m)",
+        |s| s.mean_gap_m,
+        |m| m.mean_gap_m,
+    );
     area.write_svg_loglog(&dir.join("area_vs_pressure.svg"), 800, 560)?;
     gap.write_svg(&dir.join("gap_vs_pressure.svg"), 800, 560)
 }
@@ -724,9 +715,9 @@ fn print_table(o: &BemOutput) -> String {
             s.mean_gap_m,
             area_text(s.area_fraction),
             s.clusters,
-            s.iterations,
-            s.residual,
-            if s.converged { "yes" } else { "NO" },
+            s.solve.iterations,
+            s.solve.residual,
+            if s.solve.converged { "yes" } else { "NO" },
             f(g.area_fraction),
             f(g.mean_gap_m),
             pct(d.gw_area),

@@ -98,17 +98,12 @@ pub enum HeatingOutput {
 pub fn heating(input: &HeatingInput) -> CommandResult<(HeatingOutput, f64)> {
     // The pair's order, named by both inputs (a huge softening temperature
     // was blamed on the melting temperature alone).
-    if input.softening_temperature >= input.melting_temperature {
-        return Err(Error::invalid(
-            param("softening_temperature"),
-            format!(
-                "{:e} K must be below {} = {:e} K",
-                input.softening_temperature,
-                param("melting_temperature"),
-                input.melting_temperature
-            ),
-        ));
-    }
+    super::check_order(
+        ("softening_temperature", input.softening_temperature),
+        ("melting_temperature", input.melting_temperature),
+        " K",
+        true,
+    )?;
     let heating = Heating::for_metal(
         input.bulk_temperature,
         input.softening_temperature,

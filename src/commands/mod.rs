@@ -58,6 +58,34 @@ pub use vocabulary::{param, Vocabulary};
 /// Result of a command: its typed output, or an error naming its input.
 pub type CommandResult<T> = crate::Result<T>;
 
+/// The order of a pair of inputs, named by both: an error naming `lo`
+/// when its value is at or above `hi`'s (`strict`) or above it (else),
+/// "`{lo value:e}{unit} must be below {hi} = {hi value:e}{unit}`" ("must
+/// not exceed" when not strict); `unit` with its leading space, or empty.
+/// NaN passes (each input's own check names it).
+pub(crate) fn check_order(
+    (lo, lo_value): (&str, f64),
+    (hi, hi_value): (&str, f64),
+    unit: &str,
+    strict: bool,
+) -> CommandResult<()> {
+    let (bad, verb) = if strict {
+        (lo_value >= hi_value, "must be below")
+    } else {
+        (lo_value > hi_value, "must not exceed")
+    };
+    if bad {
+        return Err(crate::Error::invalid(
+            param(lo),
+            format!(
+                "{lo_value:e}{unit} {verb} {} = {hi_value:e}{unit}",
+                param(hi)
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The text of an input file `path` (named `what` in messages, e.g.
 /// `spots file`): one that cannot be read (missing, a directory, not
 /// UTF-8) is bad input naming the path.

@@ -396,29 +396,13 @@ fn at_pressure(input: &PerssonInput, p: f64, e: Error) -> Error {
 /// # Errors
 /// Naming `{q_long}` above `{q_roll}`, or `{q_roll}` not below `{q_short}`.
 fn check_wavevectors(input: &PerssonInput) -> CommandResult<()> {
-    if input.q_long > input.q_roll {
-        return Err(Error::invalid(
-            param("q_long"),
-            format!(
-                "{:e} must not exceed {} = {:e}",
-                input.q_long,
-                param("q_roll"),
-                input.q_roll
-            ),
-        ));
-    }
-    if input.q_roll >= input.q_short {
-        return Err(Error::invalid(
-            param("q_roll"),
-            format!(
-                "{:e} must be below {} = {:e}",
-                input.q_roll,
-                param("q_short"),
-                input.q_short
-            ),
-        ));
-    }
-    Ok(())
+    let (long, roll, short) = (
+        ("q_long", input.q_long),
+        ("q_roll", input.q_roll),
+        ("q_short", input.q_short),
+    );
+    super::check_order(long, roll, "", false)?;
+    super::check_order(roll, short, "", true)
 }
 
 /// A spectrum's error named by the command's inputs: a moment of the

@@ -201,18 +201,13 @@ fn write_charts(gt: &GreenwoodTripp, states: &[GtState], dir: &Path) -> crate::R
             .iter()
             .map(|&(r, _)| (r, hertz_pressure_gt(s.load.value, r)))
             .collect();
-        Chart {
-            title: format!("pressure, mu = {}, d = {}", gt.mu(), s.d),
-            x_label: "rho = r/sqrt(2 R sigma)".into(),
-            y_label: "p / (E* sqrt(sigma/(8R)))".into(),
-            series: vec![
-                Series::leg("rough sphere (Greenwood–Tripp)", rough),
-                Series::dashed("Hertz, same load", hertz),
-            ],
-            y_range: None,
-            y_symlog: false,
-        }
-        .write_svg(&dir.join(format!("pressure_{i}.svg")), 800, 560)?;
+        let title = format!("pressure, mu = {}, d = {}", gt.mu(), s.d);
+        let axes = ("rho = r/sqrt(2 R sigma)", "p / (E* sqrt(sigma/(8R)))");
+        beside_hertz(title, axes, rough, ("Hertz, same load", hertz)).write_svg(
+            &dir.join(format!("pressure_{i}.svg")),
+            800,
+            560,
+        )?;
     }
     // Load against approach: a dense curve over the separations given.
     let hi = states.iter().map(|s| s.d).fold(f64::NEG_INFINITY, f64::max);
@@ -231,16 +226,35 @@ fn write_charts(gt: &GreenwoodTripp, states: &[GtState], dir: &Path) -> crate::R
         .iter()
         .map(|s| (hertz_approach_gt(s.load.value), s.load.value))
         .collect();
+    let title = format!("load against approach, mu = {}", gt.mu());
+    let axes = (
+        "approach of distant points u(0) - d (sigma)",
+        "P* = P / (E* sqrt(sigma/(8R)) 2R sigma)",
+    );
+    beside_hertz(title, axes, rough, ("Hertz", hertz)).write_svg(
+        &dir.join("load_approach.svg"),
+        800,
+        560,
+    )
+}
+
+/// A chart of the rough sphere's curve `rough` (solid) beside Hertz's
+/// (dashed, with its legend label), axes titled `(x, y)`.
+fn beside_hertz(
+    title: String,
+    (x_label, y_label): (&str, &str),
+    rough: Vec<(f64, f64)>,
+    (hertz_label, hertz): (&str, Vec<(f64, f64)>),
+) -> Chart {
     Chart {
-        title: format!("load against approach, mu = {}", gt.mu()),
-        x_label: "approach of distant points u(0) - d (sigma)".into(),
-        y_label: "P* = P / (E* sqrt(sigma/(8R)) 2R sigma)".into(),
+        title,
+        x_label: x_label.into(),
+        y_label: y_label.into(),
         series: vec![
             Series::leg("rough sphere (Greenwood–Tripp)", rough),
-            Series::dashed("Hertz", hertz),
+            Series::dashed(hertz_label, hertz),
         ],
         y_range: None,
         y_symlog: false,
     }
-    .write_svg(&dir.join("load_approach.svg"), 800, 560)
 }

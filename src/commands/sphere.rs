@@ -220,26 +220,27 @@ fn text(out: &SphereOutput) -> String {
         "pull-off, load control       {:.6}  [pi w R]",
         out.pull_off_load_control
     );
-    let _ = writeln!(
-        t,
-        "jump-out load                {}  [pi w R]",
-        show(out.jump_out_load)
-    );
-    let _ = writeln!(
-        t,
-        "jump-out interference        {}  [(pi^2 w^2 R/K^2)^(1/3)]",
-        show(out.jump_out_interference)
-    );
-    let _ = writeln!(
-        t,
-        "jump-in interference         {}  [(pi^2 w^2 R/K^2)^(1/3)]",
-        show(out.jump_in_interference)
-    );
-    let _ = writeln!(
-        t,
-        "contact radius at zero load  {}  [(pi w R^2/K)^(1/3)]",
-        show(out.contact_radius_zero_load)
-    );
+    let (load, interference, radius) = ("pi w R", "(pi^2 w^2 R/K^2)^(1/3)", "(pi w R^2/K)^(1/3)");
+    for (label, value, unit) in [
+        ("jump-out load", out.jump_out_load, load),
+        (
+            "jump-out interference",
+            out.jump_out_interference,
+            interference,
+        ),
+        (
+            "jump-in interference",
+            out.jump_in_interference,
+            interference,
+        ),
+        (
+            "contact radius at zero load",
+            out.contact_radius_zero_load,
+            radius,
+        ),
+    ] {
+        let _ = writeln!(t, "{label:<29}{}  [{unit}]", show(value));
+    }
     let _ = writeln!(t, "mesh nodes at pull-off       {}", out.nodes);
     t
 }

@@ -139,32 +139,31 @@ mod tests {
 
     #[test]
     fn each_front_end_words_the_inputs() {
+        // `e` as the command line and as Python word it.
+        let renders = |e: &Error, cli: &str, python: &str| {
+            assert_eq!(Vocabulary::cli().render(e), cli);
+            assert_eq!(Vocabulary::python().render(e), python);
+        };
         let e = crate::error::positive(&param("pixel_size"), -1.0).unwrap_err();
-        assert_eq!(
-            Vocabulary::cli().render(&e),
-            "--pixel-size = -1 is out of range: allowed finite, in (0, inf)"
-        );
-        assert_eq!(
-            Vocabulary::python().render(&e),
-            "pixel_size = -1 is out of range: allowed finite, in (0, inf)"
+        renders(
+            &e,
+            "--pixel-size = -1 is out of range: allowed finite, in (0, inf)",
+            "pixel_size = -1 is out of range: allowed finite, in (0, inf)",
         );
         let e = Error::invalid(
             format!("{}, {}", param("pressures"), param("gaps")),
             "give only one of them",
         );
-        assert_eq!(
-            Vocabulary::cli().render(&e),
-            "--pressures, --gaps: give only one of them"
-        );
-        assert_eq!(
-            Vocabulary::python().render(&e),
-            "pressures, gaps: give only one of them"
+        renders(
+            &e,
+            "--pressures, --gaps: give only one of them",
+            "pressures, gaps: give only one of them",
         );
         let e = Error::invalid(param("pressures[3]"), "not a number");
-        assert_eq!(Vocabulary::cli().render(&e), "--pressures: not a number");
-        assert_eq!(
-            Vocabulary::python().render(&e),
-            "pressures[3]: not a number"
+        renders(
+            &e,
+            "--pressures: not a number",
+            "pressures[3]: not a number",
         );
         assert_eq!(Vocabulary::python().word("lambda", None), "lambda_");
         let v = Vocabulary::cli().with("punch_radius", "--radius");

@@ -114,9 +114,10 @@ pub struct WetState {
     pub persson_vs_exact: Option<f64>,
 }
 
-/// What `--relative-humidity` adds to `asperity bem`.
-#[derive(Serialize, Debug, Clone)]
-pub struct WetOutput {
+/// A meniscus as the capillary outputs state it (`asperity bem` and
+/// `asperity persson` with `--relative-humidity`).
+#[derive(Serialize, Debug, Clone, Copy, PartialEq)]
+pub struct MeniscusOutput {
     /// Kelvin radius `r_K` (m).
     pub kelvin_radius_m: f64,
     /// Laplace pressure `gamma/r_K` (Pa).
@@ -124,6 +125,25 @@ pub struct WetOutput {
     pub laplace_pressure: f64,
     /// Meniscus height `h_m = r_K (cos theta_1 + cos theta_2)` (m).
     pub meniscus_height_m: f64,
+}
+
+impl MeniscusOutput {
+    /// The scales of `m`.
+    pub fn of(m: &Meniscus) -> MeniscusOutput {
+        MeniscusOutput {
+            kelvin_radius_m: m.kelvin_radius(),
+            laplace_pressure: m.laplace_pressure(),
+            meniscus_height_m: m.height(),
+        }
+    }
+}
+
+/// What `--relative-humidity` adds to `asperity bem`.
+#[derive(Serialize, Debug, Clone)]
+pub struct WetOutput {
+    /// The meniscus (its keys inline).
+    #[serde(flatten)]
+    pub meniscus: MeniscusOutput,
     /// One per exact state, in order.
     pub states: Vec<WetState>,
 }
@@ -189,9 +209,7 @@ pub fn wet_states(
         return Err(Error::invalid(param("relative_humidity"), "no state"));
     }
     Ok(Some(WetOutput {
-        kelvin_radius_m: m.kelvin_radius(),
-        laplace_pressure: m.laplace_pressure(),
-        meniscus_height_m: m.height(),
+        meniscus: MeniscusOutput::of(&m),
         states,
     }))
 }
@@ -199,7 +217,10 @@ pub fn wet_states(
 /// Warnings of the capillary states: the regime, and the Kelvin equation
 /// below its molecular limit.
 pub fn warnings(w: &WetOutput) -> Vec<String> {
-    regime_warnings(w.kelvin_radius_m, w.states.iter().map(|s| s.regime))
+    regime_warnings(
+        w.meniscus.kelvin_radius_m,
+        w.states.iter().map(|s| s.regime),
+    )
 }
 
 /// The warnings of a Kelvin radius `r_k` (m) below a molecule and of each
@@ -240,16 +261,23 @@ pub fn regime_name(r: Regime) -> &'static str {
     }
 }
 
-/// The capillary table `asperity bem` prints.
-pub fn text(w: &WetOutput) -> String {
+/// The capillary tables' first line (the meniscus) and column titles: the
+/// eight columns of both tables ([`state_cells!`]), then `extra` (the
+/// caller's own titles, laid out).
+pub(super) fn table_head(m: &MeniscusOutput, extra: &str) -> String {
     use std::fmt::Write as _;
+    let MeniscusOutput {
+        kelvin_radius_m,
+        laplace_pressure,
+        meniscus_height_m,
+    } = m;
     let mut t = format!(
-        "capillary: Kelvin radius {:.4e} m, Laplace pressure {:.4e} Pa, meniscus height h_m {:.4e} m\n",
-        w.kelvin_radius_m, w.laplace_pressure, w.meniscus_height_m
+        "capillary: Kelvin radius {kelvin_radius_m:.4e} m, Laplace pressure \
+         {laplace_pressure:.4e} Pa, meniscus height h_m {meniscus_height_m:.4e} m\n"
     );
     let _ = writeln!(
         t,
-        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9} {:>14} {:>9}",
+        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9}{extra}",
         "p (Pa)",
         "u_rms (m)",
         "h_m/u",
@@ -258,29 +286,53 @@ pub fn text(w: &WetOutput) -> String {
         "flooded (Pa)",
         "summits (Pa)",
         "summ/fl",
-        "Persson (Pa)",
-        "P/fl"
     );
-    let f = |x: Option<f64>, pct: bool| match x {
-        Some(v) if pct => format!("{:+.1}%", 100.0 * v),
+    t
+}
+
+/// A table cell: `-` for none, a signed percentage for a relative
+/// difference (`relative`), else four significant digits.
+pub(super) fn cell(x: Option<f64>, relative: bool) -> String {
+    match x {
+        Some(v) if relative => format!("{:+.1}%", 100.0 * v),
         Some(v) => format!("{v:.4e}"),
         None => "-".into(),
+    }
+}
+
+/// The eight cells of a capillary state's row under [`table_head`]'s
+/// titles, from a state with the fields `pressure`, `rms_gap_m`, `ratio`,
+/// `regime`, `wetted_fraction`, `flooded_pressure`, `per_summit_pressure`
+/// and `model_error` ([`WetState`], `PerssonWetState`).
+macro_rules! state_cells {
+    ($s:expr) => {
+        format!(
+            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9}",
+            $s.pressure,
+            $s.rms_gap_m,
+            $s.ratio,
+            $crate::commands::wet_map::regime_name($s.regime),
+            $s.wetted_fraction,
+            $s.flooded_pressure,
+            $crate::commands::wet_map::cell($s.per_summit_pressure, false),
+            $crate::commands::wet_map::cell($s.model_error, true)
+        )
     };
+}
+pub(super) use state_cells;
+
+/// The capillary table `asperity bem` prints.
+pub fn text(w: &WetOutput) -> String {
+    use std::fmt::Write as _;
+    let extra = format!(" {:>14} {:>9}", "Persson (Pa)", "P/fl");
+    let mut t = table_head(&w.meniscus, &extra);
     for s in &w.states {
-        let regime = regime_name(s.regime);
         let _ = writeln!(
             t,
-            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9} {:>14} {:>9}",
-            s.pressure,
-            s.rms_gap_m,
-            s.ratio,
-            regime,
-            s.wetted_fraction,
-            s.flooded_pressure,
-            f(s.per_summit_pressure, false),
-            f(s.model_error, true),
-            f(s.persson_flooded_pressure, false),
-            f(s.persson_vs_exact, true)
+            "{} {:>14} {:>9}",
+            state_cells!(s),
+            cell(s.persson_flooded_pressure, false),
+            cell(s.persson_vs_exact, true)
         );
     }
     t.push_str(

@@ -8,7 +8,7 @@
 //! ([`crate::capillary::per_summit_pressure`]), with their difference
 //! where both apply (the transition, `0.1 <= h_m/u_rms <= 1`).
 
-use super::wet_map::{regime_name, regime_warnings, Liquid};
+use super::wet_map::{regime_warnings, state_cells, table_head, Liquid, MeniscusOutput};
 use super::{param, CommandResult};
 use crate::capillary::{per_summit_pressure, Regime};
 use crate::gw::GwOnMoments;
@@ -48,13 +48,9 @@ pub struct PerssonWetState {
 /// What `--relative-humidity` adds to `asperity persson`.
 #[derive(Serialize, Debug, Clone)]
 pub struct PerssonWetOutput {
-    /// Kelvin radius `r_K` (m).
-    pub kelvin_radius_m: f64,
-    /// Laplace pressure `gamma/r_K` (Pa).
-    #[serde(rename = "laplace_pressure_Pa")]
-    pub laplace_pressure: f64,
-    /// Meniscus height `h_m` (m).
-    pub meniscus_height_m: f64,
+    /// The meniscus (its keys inline).
+    #[serde(flatten)]
+    pub meniscus: MeniscusOutput,
     /// One per mean pressure, in order.
     pub states: Vec<PerssonWetState>,
     /// The numerical error, in words.
@@ -130,9 +126,7 @@ pub fn persson_wet(
         });
     }
     Ok(Some(PerssonWetOutput {
-        kelvin_radius_m: m.kelvin_radius(),
-        laplace_pressure: m.laplace_pressure(),
-        meniscus_height_m: hm,
+        meniscus: MeniscusOutput::of(&m),
         states,
         numerical_error: format!(
             "wetted fraction by adaptive Gauss-Kronrod over the wavevector to {GAP_RTOL:e} \
@@ -147,47 +141,18 @@ pub fn persson_wet(
 /// Warnings of the capillary states: the regime of each, and the Kelvin
 /// equation below its molecular limit.
 pub fn warnings(w: &PerssonWetOutput) -> Vec<String> {
-    regime_warnings(w.kelvin_radius_m, w.states.iter().map(|s| s.regime))
+    regime_warnings(
+        w.meniscus.kelvin_radius_m,
+        w.states.iter().map(|s| s.regime),
+    )
 }
 
 /// The capillary table `asperity persson` prints.
 pub fn text(w: &PerssonWetOutput) -> String {
     use std::fmt::Write as _;
-    let mut t = format!(
-        "capillary: Kelvin radius {:.4e} m, Laplace pressure {:.4e} Pa, meniscus height h_m {:.4e} m\n",
-        w.kelvin_radius_m, w.laplace_pressure, w.meniscus_height_m
-    );
-    let _ = writeln!(
-        t,
-        "{:>12} {:>12} {:>8} {:>11} {:>10} {:>14} {:>14} {:>9}",
-        "p (Pa)",
-        "u_rms (m)",
-        "h_m/u",
-        "regime",
-        "A_w/A0",
-        "flooded (Pa)",
-        "summits (Pa)",
-        "summ/fl"
-    );
+    let mut t = table_head(&w.meniscus, "");
     for s in &w.states {
-        let ps = s
-            .per_summit_pressure
-            .map_or("-".into(), |v| format!("{v:.4e}"));
-        let me = s
-            .model_error
-            .map_or("-".into(), |v| format!("{:+.1}%", 100.0 * v));
-        let _ = writeln!(
-            t,
-            "{:>12.4e} {:>12.4e} {:>8.3} {:>11} {:>10.4e} {:>14.4e} {:>14} {:>9}",
-            s.pressure,
-            s.rms_gap_m,
-            s.ratio,
-            regime_name(s.regime),
-            s.wetted_fraction,
-            s.flooded_pressure,
-            ps,
-            me
-        );
+        let _ = writeln!(t, "{}", state_cells!(s));
     }
     t.push_str(
         "(flooded: Laplace pressure on the area where Persson's gap distribution is below h_m; \

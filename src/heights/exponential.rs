@@ -2,7 +2,7 @@
 
 use super::quad::{is_half_integer, is_integer};
 use super::HeightDistribution;
-use crate::numeric::quadrature::{integrate_pieces, QuadOptions};
+use crate::numeric::quadrature::integrate_pieces;
 use crate::special::{gamma::gamma, normal};
 
 /// Exponential summit heights (Greenwood & Williamson 1966):
@@ -118,11 +118,5 @@ fn exp_moment_below_origin(n: f64, a: f64) -> f64 {
     let pts = [
         0.0, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0, 800.0,
     ];
-    let opts = QuadOptions {
-        rel_tol: super::quad::FALLBACK_REL_TOL,
-        abs_tol: 0.0,
-        max_intervals: 1000,
-        relative_to_magnitude: false,
-    };
-    integrate_pieces(f, &pts, &opts).value
+    integrate_pieces(f, &pts, &super::quad::FALLBACK).value
 }

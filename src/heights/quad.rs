@@ -5,6 +5,15 @@ use crate::numeric::quadrature::{integrate_pieces, QuadOptions};
 /// Relative tolerance of the fallback quadrature.
 pub(crate) const FALLBACK_REL_TOL: f64 = 1e-13;
 
+/// The fallback quadrature's options: [`FALLBACK_REL_TOL`] relative to
+/// `|int f|`, no absolute tolerance, at most 1000 panels.
+pub(crate) const FALLBACK: QuadOptions = QuadOptions {
+    rel_tol: FALLBACK_REL_TOL,
+    abs_tol: 0.0,
+    max_intervals: 1000,
+    relative_to_magnitude: false,
+};
+
 /// `int_0^t_max t^n g(t) dt` for `n >= 0` by adaptive Gauss–Kronrod in
 /// `u = sqrt(t)` (`dt = 2u du`, integrand `2 u^(2n+1) g(u^2)`), which removes
 /// the `t^n` endpoint singularity for half-integer `n` and softens it
@@ -32,13 +41,7 @@ pub(crate) fn power_moment<G: Fn(f64) -> f64>(n: f64, g: G, t_max: f64, breaks: 
     }
     pts.sort_by(f64::total_cmp);
     pts.dedup();
-    let opts = QuadOptions {
-        rel_tol: FALLBACK_REL_TOL,
-        abs_tol: 0.0,
-        max_intervals: 1000,
-        relative_to_magnitude: false,
-    };
-    integrate_pieces(f, &pts, &opts).value
+    integrate_pieces(f, &pts, &FALLBACK).value
 }
 
 /// Whether `n` is a non-negative integer.

@@ -3,7 +3,7 @@
 use super::quad::{binomial, is_integer};
 use super::HeightDistribution;
 use crate::error::{Allowed, Result};
-use crate::numeric::quadrature::{integrate_pieces, QuadOptions};
+use crate::numeric::quadrature::integrate_pieces;
 use crate::special::gamma::gamma;
 
 /// Allowed shapes: below 0.1 `Gamma(1 + 2/k)` overflows soon after; above
@@ -91,13 +91,7 @@ impl Weibull {
         let pts = [
             0.0, 0.125, 0.25, 0.5, 1.0, 2.0, 3.0, 4.0, 6.0, 8.0, 16.0, 27.6,
         ];
-        let opts = QuadOptions {
-            rel_tol: super::quad::FALLBACK_REL_TOL,
-            abs_tol: 0.0,
-            max_intervals: 1000,
-            relative_to_magnitude: false,
-        };
-        pre * integrate_pieces(f, &pts, &opts).value
+        pre * integrate_pieces(f, &pts, &super::quad::FALLBACK).value
     }
 }
 

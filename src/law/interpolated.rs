@@ -633,29 +633,11 @@ impl AsperityLaw for InterpolatedLaw {
         self.state(delta, self.branch_after(delta_max))
     }
 
-    fn history_breakpoints(&self) -> Vec<f64> {
-        self.inner.history_breakpoints()
-    }
-
-    fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
-        self.inner.contact_loss_peaks(recovery)
-    }
-
-    fn remembers_maximum(&self) -> bool {
-        self.inner.remembers_maximum()
-    }
-
-    fn attach_interference(&self) -> f64 {
-        self.inner.attach_interference()
-    }
-
     fn interaction_range(&self) -> f64 {
         self.inner.interaction_range()
     }
 
-    fn max_interference(&self) -> f64 {
-        self.inner.max_interference()
-    }
+    super::delegate_history!(inner);
 }
 
 impl LawKernels for InterpolatedLaw {

@@ -393,11 +393,7 @@ impl LawKernels for Jkr {
         if delta_max < self.attach_interference() {
             return Some(super::RetractionMinimum::MONOTONE);
         }
-        let p = self.pull_off(Control::Load)?;
-        Some(super::RetractionMinimum {
-            interference: p.interference,
-            load: p.load,
-        })
+        self.pull_off(Control::Load).map(Into::into)
     }
 
     /// Masked Newton iterations on groups of asperities in SIMD lanes

@@ -54,6 +54,35 @@ macro_rules! delegate_critical_points {
     };
 }
 
+/// The history and reach of a law that wraps another one, the field
+/// `$inner` (an interpolant of it, or it with a meniscus beside): its
+/// history breakpoints, contact-loss peaks, whether it remembers its
+/// maximum, its attach and largest interferences, delegated.
+macro_rules! delegate_history {
+    ($inner:ident) => {
+        fn history_breakpoints(&self) -> Vec<f64> {
+            self.$inner.history_breakpoints()
+        }
+
+        fn contact_loss_peaks(&self, recovery: f64) -> Vec<f64> {
+            self.$inner.contact_loss_peaks(recovery)
+        }
+
+        fn remembers_maximum(&self) -> bool {
+            self.$inner.remembers_maximum()
+        }
+
+        fn attach_interference(&self) -> f64 {
+            self.$inner.attach_interference()
+        }
+
+        fn max_interference(&self) -> f64 {
+            self.$inner.max_interference()
+        }
+    };
+}
+pub(crate) use delegate_history;
+
 /// The critical interferences of a law with no force out of contact and
 /// no jump (Hertz, DMT, the plastic laws): it attaches and detaches at
 /// first contact, and the load is zero below it.

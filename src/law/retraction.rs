@@ -57,3 +57,14 @@ impl RetractionMinimum {
         }
     }
 }
+
+impl From<super::Instability> for RetractionMinimum {
+    /// The pull-off under load control of a unimodal retraction: its most
+    /// tensile point (interference and load).
+    fn from(p: super::Instability) -> RetractionMinimum {
+        RetractionMinimum {
+            interference: p.interference,
+            load: p.load,
+        }
+    }
+}

@@ -10,7 +10,7 @@ use super::observable::Observables;
 use super::program::{History, LoadingProgram};
 use super::state::State;
 use crate::error::{positive, Allowed, Error, Result};
-use crate::numeric::roots::{brent, golden_min};
+use crate::numeric::roots::{golden_min, try_brent};
 
 /// How far below its start the separation-at-a-load search looks, in
 /// height scales: 50 sigma is below any summit a distribution represents
@@ -250,23 +250,8 @@ pub trait LoadingModel: Sync {
         let root = if self.is_discrete() {
             bisect_to_load(&load, target, (lo, hi), tol)?
         } else {
-            let mut failure = None;
-            let root = brent(
-                |d| match load(d) {
-                    Ok(p) => p - target,
-                    Err(e) => {
-                        failure = Some(e);
-                        f64::NAN
-                    }
-                },
-                lo,
-                hi,
-                tol,
-            );
-            if let Some(e) = failure {
-                return Err(e);
-            }
-            root.ok_or_else(|| Error::invalid("max_load", "could not bracket the load"))?
+            try_brent(|d| Ok(load(d)? - target), lo, hi, tol)?
+                .ok_or_else(|| Error::invalid("max_load", "could not bracket the load"))?
         };
         let met = load(root)?;
         let rtol = self.load_tolerance();

@@ -124,6 +124,24 @@ impl Observable {
             Observable::Custom(c) => c.value(s),
         }
     }
+
+    /// [`value`](Observable::value) of the states `(load[k], radius[k])`
+    /// into `out[k]`, bit for bit: a custom observable's own
+    /// [`PerAsperity::value_batch`], the others one state after another.
+    #[inline(always)]
+    pub(crate) fn values(&self, load: &[f64], radius: &[f64], out: &mut [f64]) {
+        match self {
+            Observable::Custom(c) => c.value_batch(load, radius, out),
+            other => {
+                for (k, o) in out.iter_mut().enumerate() {
+                    *o = other.value(&ContactState {
+                        load: load[k],
+                        radius: radius[k],
+                    });
+                }
+            }
+        }
+    }
 }
 
 /// A quantity of a state formed from its totals, not itself a sum over
@@ -257,17 +275,7 @@ impl Observables {
         }
         let mut extra = [0.0; N];
         for (j, e) in self.extras.iter().enumerate() {
-            match e {
-                Observable::Custom(c) => c.value_batch(load, radius, &mut extra),
-                other => {
-                    for k in 0..N {
-                        extra[k] = other.value(&ContactState {
-                            load: load[k],
-                            radius: radius[k],
-                        });
-                    }
-                }
-            }
+            e.values(load, radius, &mut extra);
             for k in 0..N {
                 out[k][3 + j] = extra[k] * weight[k];
             }
@@ -316,17 +324,7 @@ impl Observables {
             }
         }
         for (e, col) in self.extras.iter().zip(extras.iter_mut()) {
-            match e {
-                Observable::Custom(c) => c.value_batch(load, radius, col),
-                other => {
-                    for k in 0..n {
-                        col[k] = other.value(&ContactState {
-                            load: load[k],
-                            radius: radius[k],
-                        });
-                    }
-                }
-            }
+            e.values(load, radius, col);
             for k in 0..n {
                 col[k] *= weight[k];
             }

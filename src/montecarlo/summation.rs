@@ -242,35 +242,9 @@ impl MonteCarlo {
                     observables,
                 )
             };
-            let partials: Vec<Partial> = match (&mut memory, serial) {
-                (Memory::Attached(a), true) => a
-                    .chunks_mut(SUM_BLOCK)
-                    .map(MemoryChunk::Attached)
-                    .enumerate()
-                    .skip(lo / SUM_BLOCK)
-                    .map(one)
-                    .collect(),
-                (Memory::Attached(a), false) => a
-                    .par_chunks_mut(SUM_BLOCK)
-                    .map(MemoryChunk::Attached)
-                    .enumerate()
-                    .skip(lo / SUM_BLOCK)
-                    .map(one)
-                    .collect(),
-                (Memory::Maximum(m), true) => m
-                    .chunks_mut(SUM_BLOCK)
-                    .map(MemoryChunk::Maximum)
-                    .enumerate()
-                    .skip(lo / SUM_BLOCK)
-                    .map(one)
-                    .collect(),
-                (Memory::Maximum(m), false) => m
-                    .par_chunks_mut(SUM_BLOCK)
-                    .map(MemoryChunk::Maximum)
-                    .enumerate()
-                    .skip(lo / SUM_BLOCK)
-                    .map(one)
-                    .collect(),
+            let partials = match &mut memory {
+                Memory::Attached(a) => block_partials(a, MemoryChunk::Attached, lo, serial, one),
+                Memory::Maximum(m) => block_partials(m, MemoryChunk::Maximum, lo, serial, one),
             };
             let mut total = Partial::default();
             for p in &partials {
@@ -560,6 +534,34 @@ struct PreparedBlock {
 enum Memory {
     Attached(Vec<bool>),
     Maximum(Vec<f64>),
+}
+
+/// `one` of every [`SUM_BLOCK`] block of `v` (as a [`MemoryChunk`] by
+/// `wrap`, with its block index) from the block of summit `lo` on, in
+/// block order: on this thread when `serial`, else in parallel (the same
+/// partials either way).
+fn block_partials<'a, T: Send>(
+    v: &'a mut [T],
+    wrap: fn(&'a mut [T]) -> MemoryChunk<'a>,
+    lo: usize,
+    serial: bool,
+    one: impl Fn((usize, MemoryChunk<'a>)) -> Partial + Sync + Send,
+) -> Vec<Partial> {
+    if serial {
+        v.chunks_mut(SUM_BLOCK)
+            .map(wrap)
+            .enumerate()
+            .skip(lo / SUM_BLOCK)
+            .map(one)
+            .collect()
+    } else {
+        v.par_chunks_mut(SUM_BLOCK)
+            .map(wrap)
+            .enumerate()
+            .skip(lo / SUM_BLOCK)
+            .map(one)
+            .collect()
+    }
 }
 
 /// One block of a [`Memory`].

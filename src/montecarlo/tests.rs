@@ -219,28 +219,24 @@ fn lognormal_radii_have_their_moments() {
 #[test]
 fn populations_are_identical_for_one_and_two_threads() {
     let run = |threads: usize| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| {
-                let spec = PopulationSpec::new(
-                    50_000,
-                    SIGMA,
-                    RadiusSpec::LogNormal {
-                        median: R,
-                        log_std: 0.3,
-                    },
-                    11,
-                )
-                .unwrap();
-                let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
-                let mc = MonteCarlo::new(pop.clone(), jkr()).unwrap();
-                let prog = LoadingProgram::new(8.0 * SIGMA, -SIGMA, 30).unwrap();
-                let path: Vec<f64> = (0..40).map(|k| SIGMA * (3.0 - 0.1 * k as f64)).collect();
-                let seq = mc.sequence(&path, &Observables::ALL).unwrap();
-                (pop, mc.curve(&prog, &Observables::ALL).unwrap(), seq)
-            })
+        crate::test_threads::on_threads(threads, || {
+            let spec = PopulationSpec::new(
+                50_000,
+                SIGMA,
+                RadiusSpec::LogNormal {
+                    median: R,
+                    log_std: 0.3,
+                },
+                11,
+            )
+            .unwrap();
+            let pop = Arc::new(Population::sample(&spec, &Exponential::new()).unwrap());
+            let mc = MonteCarlo::new(pop.clone(), jkr()).unwrap();
+            let prog = LoadingProgram::new(8.0 * SIGMA, -SIGMA, 30).unwrap();
+            let path: Vec<f64> = (0..40).map(|k| SIGMA * (3.0 - 0.1 * k as f64)).collect();
+            let seq = mc.sequence(&path, &Observables::ALL).unwrap();
+            (pop, mc.curve(&prog, &Observables::ALL).unwrap(), seq)
+        })
     };
     let (p1, c1, s1) = run(1);
     let (p2, c2, s2) = run(2);

@@ -9,7 +9,9 @@ use crate::gw::{GwModel, RoughSurface};
 use crate::heights::Exponential;
 use crate::law::interpolated::InterpolatedLaw;
 use crate::law::plastic::{build, AdhesivePlastic, MaxInterference, PlasticLoading};
-use crate::law::{AsperityLaw, Branch, Dmt, Hertz, Jkr, LawKernels, Maugis, RadiusScaling};
+use crate::law::{
+    AsperityLaw, Branch, ContactState, Dmt, Hertz, Jkr, LawKernels, Maugis, RadiusScaling,
+};
 use crate::loading::{History, LoadingModel, LoadingProgram, Observables};
 use crate::material::plastic::{Plasticity, Variant};
 use std::sync::Arc;
@@ -70,27 +72,28 @@ fn batch_equals_scalar_bit_for_bit_for_every_law() {
     for law in laws() {
         let (mut load, mut radius) = (vec![0.0; d.len()], vec![0.0; d.len()]);
         law.state_batch(&d, None, &mut load, &mut radius);
-        for (i, &x) in d.iter().enumerate() {
-            let s = law.state(x, Branch::Approach);
-            assert_eq!(load[i].to_bits(), s.load.to_bits(), "{} {x:e}", law.name());
-            assert_eq!(
-                radius[i].to_bits(),
-                s.radius.to_bits(),
-                "{} {x:e}",
-                law.name()
-            );
-        }
+        let approach = d.iter().map(|&x| (x, law.state(x, Branch::Approach)));
+        assert_same_bits(&load, &radius, approach, law.name());
         law.state_batch(&d, Some(&m), &mut load, &mut radius);
-        for (i, (&x, &mx)) in d.iter().zip(&m).enumerate() {
-            let s = law.state_after(x, mx);
-            assert_eq!(load[i].to_bits(), s.load.to_bits(), "{} {x:e}", law.name());
-            assert_eq!(
-                radius[i].to_bits(),
-                s.radius.to_bits(),
-                "{} {x:e}",
-                law.name()
-            );
-        }
+        let after = d
+            .iter()
+            .zip(&m)
+            .map(|(&x, &mx)| (x, law.state_after(x, mx)));
+        assert_same_bits(&load, &radius, after, law.name());
+    }
+}
+
+/// `load[i]`, `radius[i]` are the `i`-th `states`' (at their interference
+/// `x`, m), bit for bit.
+fn assert_same_bits(
+    load: &[f64],
+    radius: &[f64],
+    states: impl Iterator<Item = (f64, ContactState)>,
+    name: &str,
+) {
+    for (i, (x, s)) in states.enumerate() {
+        assert_eq!(load[i].to_bits(), s.load.to_bits(), "{name} {x:e}");
+        assert_eq!(radius[i].to_bits(), s.radius.to_bits(), "{name} {x:e}");
     }
 }
 

@@ -170,14 +170,20 @@ mod tests {
         }
     }
 
+    /// Three series of degree 6 for the lane tests (either basis): mixed
+    /// signs, tiny coefficients, a sparse one.
+    const LANE_SERIES: [[f64; 7]; 3] = [
+        [0.1, -0.2, 0.3, -0.4, 0.5, -0.6, 0.7],
+        [1e-7, 3e-8, -2e-9, 1e-10, 5e-12, -1e-13, 2e-15],
+        [-3.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1e-3],
+    ];
+
+    /// A point in `[-1, 1]` per lane.
+    const LANE_POINTS: [f64; 3] = [0.3, -0.999, 0.123456789];
+
     #[test]
     fn clenshaw_lanes_are_clenshaw_bit_for_bit() {
-        let c: [[f64; 7]; 3] = [
-            [0.1, -0.2, 0.3, -0.4, 0.5, -0.6, 0.7],
-            [1e-7, 3e-8, -2e-9, 1e-10, 5e-12, -1e-13, 2e-15],
-            [-3.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1e-3],
-        ];
-        let x = [0.3, -0.999, 0.123456789];
+        let (c, x) = (LANE_SERIES, LANE_POINTS);
         let fixed = clenshaw_lanes::<6, 3>(&x, |l, j| c[l][j]);
         let dynamic = clenshaw_lanes_dyn(6, &x, |l, j| c[l][j]);
         for l in 0..3 {
@@ -188,12 +194,7 @@ mod tests {
 
     #[test]
     fn horner_lanes_are_horner_bit_for_bit() {
-        let a: [[f64; 7]; 3] = [
-            [0.1, -0.2, 0.3, -0.4, 0.5, -0.6, 0.7],
-            [1e-7, 3e-8, -2e-9, 1e-10, 5e-12, -1e-13, 2e-15],
-            [-3.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1e-3],
-        ];
-        let x = [0.3, -0.999, 0.123456789];
+        let (a, x) = (LANE_SERIES, LANE_POINTS);
         let v = horner_lanes::<7, 3>(&x, |l, k| a[l][k]);
         for l in 0..3 {
             assert_eq!(v[l].to_bits(), horner(&a[l], x[l]).to_bits());

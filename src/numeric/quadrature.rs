@@ -158,27 +158,7 @@ fn kronrod21_sums<const N: usize>(
         for j in 0..10 {
             resasc += WGK[j] * ((fv[j][i] - mean).abs() + (fv[20 - j][i] - mean).abs());
         }
-        let resabs = resabs * h.abs();
-        let resasc = resasc * h.abs();
-        let floored = resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON);
-        let floor = 50.0 * f64::EPSILON * resabs;
-        let mut err = ((resk - resg) * h).abs();
-        if resasc != 0.0 && err != 0.0 {
-            let x = 200.0 * err / resasc;
-            // `resasc min(1, x^1.5)` without the power where its value is
-            // known: `resasc` for `x >= 1`; for `x < 1`, `x^1.5 <= x`
-            // (rounded too), so below the floor when `resasc x` is.
-            err = if x >= 1.0 {
-                resasc
-            } else if floored && resasc * x <= floor {
-                floor
-            } else {
-                resasc * (x * x.sqrt()).min(1.0)
-            };
-        }
-        if floored {
-            err = err.max(floor);
-        }
+        let (err, resabs) = k21_error(resk, resg, resasc, resabs, h);
         value[i] = resk * h;
         error[i] = err;
         magnitude[i] = resabs;
@@ -230,28 +210,43 @@ pub fn kronrod21_sums_columns(
         }
     }
     for k in 0..n {
-        let abs_h = resabs[k] * h.abs();
-        let resasc = resasc[k] * h.abs();
-        let floored = abs_h > f64::MIN_POSITIVE / (50.0 * f64::EPSILON);
-        let floor = 50.0 * f64::EPSILON * abs_h;
-        let mut err = ((resk[k] - resg[k]) * h).abs();
-        if resasc != 0.0 && err != 0.0 {
-            let x = 200.0 * err / resasc;
-            err = if x >= 1.0 {
-                resasc
-            } else if floored && resasc * x <= floor {
-                floor
-            } else {
-                resasc * (x * x.sqrt()).min(1.0)
-            };
-        }
-        if floored {
-            err = err.max(floor);
-        }
+        let (err, abs_h) = k21_error(resk[k], resg[k], resasc[k], resabs[k], h);
         resk[k] *= h;
         error[k] = err;
         resabs[k] = abs_h;
     }
+}
+
+/// QUADPACK's error of one K21 panel of half-width `h` from its Kronrod
+/// and Gauss sums `resk`, `resg` and the unscaled `resasc = sum w |f - K/2|`
+/// and `resabs = sum w |f|`: `resasc min(1, (200 |K - G| / resasc)^1.5)`,
+/// floored at `50 eps resabs` (both scaled by `|h|`); returns the error and
+/// `resabs |h|` (the panel's `int |f|`). The one formula of
+/// [`kronrod21_n`] and [`kronrod21_sums_columns`].
+#[inline(always)]
+fn k21_error(resk: f64, resg: f64, resasc: f64, resabs: f64, h: f64) -> (f64, f64) {
+    let resabs = resabs * h.abs();
+    let resasc = resasc * h.abs();
+    let floored = resabs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON);
+    let floor = 50.0 * f64::EPSILON * resabs;
+    let mut err = ((resk - resg) * h).abs();
+    if resasc != 0.0 && err != 0.0 {
+        let x = 200.0 * err / resasc;
+        // `resasc min(1, x^1.5)` without the power where its value is
+        // known: `resasc` for `x >= 1`; for `x < 1`, `x^1.5 <= x`
+        // (rounded too), so below the floor when `resasc x` is.
+        err = if x >= 1.0 {
+            resasc
+        } else if floored && resasc * x <= floor {
+            floor
+        } else {
+            resasc * (x * x.sqrt()).min(1.0)
+        };
+    }
+    if floored {
+        err = err.max(floor);
+    }
+    (err, resabs)
 }
 
 /// The 21 K21 abscissae on `[a, b]`, ascending (the order

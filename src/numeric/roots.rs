@@ -82,6 +82,38 @@ pub fn brent<F: FnMut(f64) -> f64>(mut f: F, lo: f64, hi: f64, xtol: f64) -> Opt
     Some(b)
 }
 
+/// [`brent`] of a fallible `f`: the first error of `f` ends the search
+/// (no further evaluation) and is returned; otherwise `brent`'s answer.
+///
+/// # Errors
+/// The first error `f` returns.
+pub fn try_brent(
+    mut f: impl FnMut(f64) -> crate::Result<f64>,
+    lo: f64,
+    hi: f64,
+    xtol: f64,
+) -> crate::Result<Option<f64>> {
+    let mut failure = None;
+    let root = brent(
+        |x| {
+            if failure.is_some() {
+                return f64::NAN;
+            }
+            f(x).unwrap_or_else(|e| {
+                failure = Some(e);
+                f64::NAN
+            })
+        },
+        lo,
+        hi,
+        xtol,
+    );
+    match failure {
+        Some(e) => Err(e),
+        None => Ok(root),
+    }
+}
+
 /// Minimum of a unimodal `f` on `[lo, hi]` by golden-section search, to an
 /// absolute abscissa tolerance `xtol`. Returns `(x_min, f(x_min))`.
 pub fn golden_min<F: FnMut(f64) -> f64>(mut f: F, lo: f64, hi: f64, xtol: f64) -> (f64, f64) {

@@ -34,7 +34,7 @@
 
 use super::Persson;
 use crate::error::{positive, Allowed, Result};
-use crate::numeric::quadrature::{integrate, integrate_pieces, integrate_pieces_n, QuadOptions};
+use crate::numeric::quadrature::{integrate_pieces_n, QuadOptions};
 use crate::special::normal::{pdf, tail};
 use crate::spectrum::{Segment, Spectrum};
 use std::f64::consts::PI;
@@ -232,44 +232,14 @@ impl Persson {
             }
             q * q * c * w * inner
         };
-        let opts = QuadOptions::relative(super::QUAD_RTOL);
         let i = pre.index(qz);
         let q1 = pre.segs[pre.segs.len() - 1].q_hi;
         if !(qz < q1) {
             return 0.0;
         }
         let qb = pre.segs[i].q_hi.min(2.0 * qz);
-        let near = integrate(
-            |t| {
-                let q = qz + t * t;
-                2.0 * t * f(q)
-            },
-            0.0,
-            (qb - qz).sqrt(),
-            &opts,
-        )
-        .value;
-        let mut points: Vec<f64> = vec![qb.ln()];
-        points.extend(
-            pre.segs[i..]
-                .iter()
-                .filter(|s| s.q_hi > qb)
-                .map(|s| s.q_hi.ln()),
-        );
-        let far = if points.len() > 1 {
-            integrate_pieces(
-                |v| {
-                    let q = v.exp();
-                    q * f(q)
-                },
-                &points,
-                &opts,
-            )
-            .value
-        } else {
-            0.0
-        };
-        PI.sqrt() * (near + far)
+        let ends = pre.segs[i..].iter().map(|s| s.q_hi);
+        PI.sqrt() * super::integrate_from(f, qz, qb, ends).0
     }
 }
 

@@ -98,42 +98,12 @@ impl Persson {
 
     /// `int f(q) dq` over the spectrum (module documentation).
     fn integrate_q<F: Fn(f64) -> f64>(&self, f: F) -> (f64, f64) {
-        let opts = QuadOptions::relative(QUAD_RTOL);
         let segs = self.spectrum.segments();
         let first = segs.iter().position(|s| s.c > 0.0).unwrap_or(0);
         let q0 = segs[first].q_lo;
         // Where w stops being steep: the first segment or 2 q0.
         let qb = segs[first].q_hi.min(2.0 * q0);
-        let near = integrate(
-            |t| {
-                let q = q0 + t * t;
-                2.0 * t * f(q)
-            },
-            0.0,
-            (qb - q0).sqrt(),
-            &opts,
-        );
-        let mut points: Vec<f64> = vec![qb.ln()];
-        for s in &segs[first..] {
-            if s.q_hi > qb {
-                points.push(s.q_hi.ln());
-            }
-        }
-        let far = if points.len() > 1 {
-            integrate_pieces(
-                |v| {
-                    let q = v.exp();
-                    q * f(q)
-                },
-                &points,
-                &opts,
-            )
-        } else {
-            near
-        };
-        let far_v = if points.len() > 1 { far.value } else { 0.0 };
-        let far_e = if points.len() > 1 { far.error } else { 0.0 };
-        (near.value + far_v, near.error + far_e)
+        integrate_from(f, q0, qb, segs[first..].iter().map(|s| s.q_hi))
     }
 
     /// Persson's state at mean pressure `p > 0` (Pa).
@@ -236,6 +206,43 @@ pub fn check_pressures(name: &str, pressures: &[f64]) -> Result<()> {
         positive(name, *p)?;
     }
     Ok(())
+}
+
+/// `int f(q) dq` from `q0` over the spectrum's segments ending at `ends`
+/// (ascending, rad/m): on `[q0, qb]` by `q = q0 + t^2` (the integrands'
+/// `(q - q0)^(-1/2)` start becomes smooth), above `qb` by `q = e^v`, a
+/// piece per segment end beyond `qb`; each to [`QUAD_RTOL`]. Returns the
+/// value and its error estimate (the sum of both parts').
+fn integrate_from<F: Fn(f64) -> f64>(
+    f: F,
+    q0: f64,
+    qb: f64,
+    ends: impl Iterator<Item = f64>,
+) -> (f64, f64) {
+    let opts = QuadOptions::relative(QUAD_RTOL);
+    let near = integrate(
+        |t| {
+            let q = q0 + t * t;
+            2.0 * t * f(q)
+        },
+        0.0,
+        (qb - q0).sqrt(),
+        &opts,
+    );
+    let mut points: Vec<f64> = vec![qb.ln()];
+    points.extend(ends.filter(|&q| q > qb).map(f64::ln));
+    if points.len() < 2 {
+        return (near.value, near.error);
+    }
+    let far = integrate_pieces(
+        |v| {
+            let q = v.exp();
+            q * f(q)
+        },
+        &points,
+        &opts,
+    );
+    (near.value + far.value, near.error + far.error)
 }
 
 #[cfg(test)]

@@ -215,6 +215,24 @@ impl Core {
         }
     }
 
+    /// The state at `d` on its coarse level alone, from a continuation's
+    /// `end`, not yet converged; `retraction`: its laws (`None` on approach).
+    fn coarse_state(&self, d: f64, end: Continued, retraction: Option<Arc<Retraction>>) -> Solved {
+        let (mesh, sol, fa, tangent) = end;
+        Solved {
+            d,
+            levels: vec![Level {
+                f: self.shape_at(&mesh),
+                mesh,
+                sol,
+                factor: fa.map(Arc::new),
+            }],
+            tangent,
+            retraction,
+            converged: false,
+        }
+    }
+
     /// The approach state at central separation `d` (units `sigma`),
     /// continued from `start` (a nearby approach state; `None`: from far
     /// apart).
@@ -227,7 +245,7 @@ impl Core {
         let laws = Laws::Approach;
         let top = self.law.top();
         let start = start.filter(|s| s.retraction.is_none());
-        let (mesh, sol, fa, tangent) = match start {
+        let end = match start {
             Some(s) => {
                 let l0 = &s.levels[0];
                 self.continuation(
@@ -249,18 +267,7 @@ impl Core {
                 self.continuation(&laws, mesh, d0, h0, None, None, d, true)?
             }
         };
-        let mut state = Solved {
-            d,
-            levels: vec![Level {
-                f: self.shape_at(&mesh),
-                mesh,
-                sol,
-                factor: fa.map(Arc::new),
-            }],
-            tangent,
-            retraction: None,
-            converged: false,
-        };
+        let mut state = self.coarse_state(d, end, None);
         // Fit the outer radius and the grading, unless the start's meshes
         // still suit.
         let reuse = {
@@ -378,7 +385,7 @@ impl Core {
             _ => &retraction.deepest,
         };
         let l0 = &from.levels[0];
-        let (mesh, sol, fa, tangent) = self.continuation(
+        let end = self.continuation(
             &laws,
             l0.mesh.clone(),
             from.d,
@@ -392,18 +399,7 @@ impl Core {
             d,
             false,
         )?;
-        let mut state = Solved {
-            d,
-            levels: vec![Level {
-                f: self.shape_at(&mesh),
-                mesh,
-                sol,
-                factor: fa.map(Arc::new),
-            }],
-            tangent,
-            retraction: Some(retraction.clone()),
-            converged: false,
-        };
+        let mut state = self.coarse_state(d, end, Some(retraction.clone()));
         // The same meshes as the deepest state at every level.
         let n_levels = retraction.laws.len();
         let mut guide = from.clone();

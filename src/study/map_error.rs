@@ -112,12 +112,9 @@ pub struct MapState {
     pub load_at_gap: Option<f64>,
     /// Of the mean gap at the same load.
     pub mean_gap: Option<f64>,
-    /// The exact solve's iterations.
-    pub iterations: usize,
-    /// Its final residual (dimensionless).
-    pub residual: f64,
-    /// Whether it converged.
-    pub converged: bool,
+    /// How the exact solve ended (it converged: a solve stopped at the
+    /// iteration cap fails the measurement).
+    pub solve: crate::bem::SolveReport,
 }
 
 /// GW's model error on the map, or why it is not measured.
@@ -515,9 +512,7 @@ fn exact_states(
             area: relative(g.area_fraction, area),
             load_at_gap: gw_load_at_exact_gap.and_then(|l| relative(l, load)),
             mean_gap: relative(g.mean_gap, gap),
-            iterations: s.iterations,
-            residual: s.residual,
-            converged: s.converged,
+            solve: s.report(),
         });
         warm = Some(s);
     }

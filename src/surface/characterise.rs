@@ -232,11 +232,7 @@ mod tests {
         let topo = Topography::new(HeightMap::new(rows, cols, h).unwrap(), 1e-7).unwrap();
         for periodic in [false, true] {
             let on = |threads: usize| {
-                rayon::ThreadPoolBuilder::new()
-                    .num_threads(threads)
-                    .build()
-                    .unwrap()
-                    .install(|| topo.characterise(periodic).unwrap())
+                crate::test_threads::on_threads(threads, || topo.characterise(periodic).unwrap())
             };
             let one = on(1);
             assert!(one.stats.count > 100, "{}", one.stats.count);

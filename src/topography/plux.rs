@@ -11,41 +11,26 @@
 //! um, x fastest (exactly that many bytes). NaN heights are missing. The
 //! channels are named `Layer k`; the default is layer 0.
 
-use super::x3p::{heights, leaves};
+use super::x3p::heights;
 use super::{pick, pixel, Bad, Channel, Format, Measured};
 
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
-    if !bytes.starts_with(b"PK\x03\x04") {
-        return Err(Bad::magic("PK\\x03\\x04 (a zip archive)"));
-    }
-    let mut zip = zip::ZipArchive::new(std::io::Cursor::new(bytes))
-        .map_err(|e| Bad::corrupt(format!("not a readable zip archive: {e}")))?;
-    let xml = super::x3p::member(&mut zip, "index.xml", 1 << 24)?;
-    let xml = String::from_utf8(xml).map_err(|_| Bad::corrupt("index.xml is not UTF-8"))?;
-    let x = leaves(&xml, "index.xml")?;
-    let get = |k: &str| {
-        x.get(k)
-            .map(String::as_str)
-            .ok_or_else(|| Bad::corrupt(format!("index.xml has no {k}")))
-    };
-    let num = |k: &str| -> Result<f64, Bad> {
-        get(k)?
-            .parse::<f64>()
-            .map_err(|_| Bad::corrupt(format!("index.xml: {k} is not a number")))
-    };
-    let count = |k: &str| -> Result<usize, Bad> {
-        get(k)?
-            .parse::<usize>()
-            .map_err(|_| Bad::corrupt(format!("index.xml: {k} is not a count")))
-    };
+    let mut zip = super::x3p::open_zip(bytes)?;
+    let x = super::x3p::Leaves::read(&mut zip, "index.xml")?;
     let (nx, ny) = (
-        count("GENERAL/IMAGE_SIZE_X")?,
-        count("GENERAL/IMAGE_SIZE_Y")?,
+        x.count("GENERAL/IMAGE_SIZE_X")?,
+        x.count("GENERAL/IMAGE_SIZE_Y")?,
     );
     super::dims(ny, nx)?;
-    let (dx, dy) = (num("GENERAL/FOV_X")? * 1e-6, num("GENERAL/FOV_Y")? * 1e-6);
+    let (dx, dy) = (
+        x.num("GENERAL/FOV_X")? * 1e-6,
+        x.num("GENERAL/FOV_Y")? * 1e-6,
+    );
     let layers: Vec<String> = (0..)
-        .map_while(|k| x.get(&format!("LAYER_{k}/FILENAME_Z")).cloned())
+        .map_while(|k| {
+            x.optional(&format!("LAYER_{k}/FILENAME_Z"))
+                .map(str::to_string)
+        })
         .collect();
     if layers.is_empty() {
         return Err(Bad::corrupt("index.xml has no LAYER_0/FILENAME_Z"));

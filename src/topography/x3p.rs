@@ -21,7 +21,7 @@ use std::io::{Read, Write};
 /// The text of every leaf element of the XML document `xml` (the archive
 /// member `what`, for messages) by its path below the root
 /// (`Record1/Axes/CX/Increment`), namespace prefixes dropped.
-pub(super) fn leaves(xml: &str, what: &str) -> Result<HashMap<String, String>, Bad> {
+fn leaves(xml: &str, what: &str) -> Result<HashMap<String, String>, Bad> {
     use quick_xml::events::Event;
     let mut reader = quick_xml::Reader::from_str(xml);
     let mut path: Vec<String> = Vec::new();
@@ -61,6 +61,63 @@ pub(super) fn leaves(xml: &str, what: &str) -> Result<HashMap<String, String>, B
     Ok(out)
 }
 
+/// A zip archive's bytes opened, after checking its magic number.
+pub(super) fn open_zip(bytes: &[u8]) -> Result<zip::ZipArchive<std::io::Cursor<&[u8]>>, Bad> {
+    if !bytes.starts_with(b"PK\x03\x04") {
+        return Err(Bad::magic("PK\\x03\\x04 (a zip archive)"));
+    }
+    zip::ZipArchive::new(std::io::Cursor::new(bytes))
+        .map_err(|e| Bad::corrupt(format!("not a readable zip archive: {e}")))
+}
+
+/// The leaf elements of an XML member of an archive ([`leaves`]), read by
+/// path with errors naming the member.
+pub(super) struct Leaves {
+    map: HashMap<String, String>,
+    what: &'static str,
+}
+
+impl Leaves {
+    /// The member `what` of `zip` (at most 16 MiB), UTF-8 XML, read.
+    pub(super) fn read<R: Read + std::io::Seek>(
+        zip: &mut zip::ZipArchive<R>,
+        what: &'static str,
+    ) -> Result<Leaves, Bad> {
+        let xml = member(zip, what, 1 << 24)?;
+        let xml =
+            String::from_utf8(xml).map_err(|_| Bad::corrupt(format!("{what} is not UTF-8")))?;
+        Ok(Leaves {
+            map: leaves(&xml, what)?,
+            what,
+        })
+    }
+
+    /// The text at path `k`, if the document has it.
+    pub(super) fn optional(&self, k: &str) -> Option<&str> {
+        self.map.get(k).map(String::as_str)
+    }
+
+    /// The text at path `k`; an error naming the member and `k` without it.
+    pub(super) fn get(&self, k: &str) -> Result<&str, Bad> {
+        self.optional(k)
+            .ok_or_else(|| Bad::corrupt(format!("{} has no {k}", self.what)))
+    }
+
+    /// The number at path `k`.
+    pub(super) fn num(&self, k: &str) -> Result<f64, Bad> {
+        self.get(k)?
+            .parse::<f64>()
+            .map_err(|_| Bad::corrupt(format!("{}: {k} is not a number", self.what)))
+    }
+
+    /// The count at path `k`.
+    pub(super) fn count(&self, k: &str) -> Result<usize, Bad> {
+        self.get(k)?
+            .parse::<usize>()
+            .map_err(|_| Bad::corrupt(format!("{}: {k} is not a count", self.what)))
+    }
+}
+
 /// A member of the archive, read whole if its declared size is at most
 /// `limit` bytes.
 pub(super) fn member<R: Read + std::io::Seek>(
@@ -86,16 +143,16 @@ pub(super) fn member<R: Read + std::io::Seek>(
 }
 
 /// Refuses all but an areal map: `FeatureType` `SUR`, incremental x and y
-/// axes and an absolute z axis (`get` reads a leaf of `main.xml`).
-fn check_areal<'a>(get: &dyn Fn(&str) -> Result<&'a str, Bad>) -> Result<(), Bad> {
-    if get("Record1/FeatureType")? != "SUR" {
+/// axes and an absolute z axis (`x`: the leaves of `main.xml`).
+fn check_areal(x: &Leaves) -> Result<(), Bad> {
+    if x.get("Record1/FeatureType")? != "SUR" {
         return Err(Bad::unsupported(format!(
             "FeatureType {} (only SUR, an areal map)",
-            get("Record1/FeatureType")?
+            x.get("Record1/FeatureType")?
         )));
     }
     for (axis, kind) in [("CX", "I"), ("CY", "I"), ("CZ", "A")] {
-        let t = get(&format!("Record1/Axes/{axis}/AxisType"))?;
+        let t = x.get(&format!("Record1/Axes/{axis}/AxisType"))?;
         if t != kind {
             return Err(Bad::unsupported(format!(
                 "{axis} AxisType {t} (expected {kind})"
@@ -203,53 +260,33 @@ pub(super) fn heights<const N: usize>(
 
 pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
     pick(&["Default".to_string()], 0, channel)?;
-    if !bytes.starts_with(b"PK\x03\x04") {
-        return Err(Bad::magic("PK\\x03\\x04 (a zip archive)"));
-    }
-    let mut zip = zip::ZipArchive::new(std::io::Cursor::new(bytes))
-        .map_err(|e| Bad::corrupt(format!("not a readable zip archive: {e}")))?;
-    let xml = member(&mut zip, "main.xml", 1 << 24)?;
-    let xml = String::from_utf8(xml).map_err(|_| Bad::corrupt("main.xml is not UTF-8"))?;
-    let x = leaves(&xml, "main.xml")?;
-    let get = |k: &str| {
-        x.get(k)
-            .map(String::as_str)
-            .ok_or_else(|| Bad::corrupt(format!("main.xml has no {k}")))
-    };
-    let num = |k: &str| -> Result<f64, Bad> {
-        get(k)?
-            .parse::<f64>()
-            .map_err(|_| Bad::corrupt(format!("main.xml: {k} is not a number")))
-    };
-    let count = |k: &str| -> Result<usize, Bad> {
-        get(k)?
-            .parse::<usize>()
-            .map_err(|_| Bad::corrupt(format!("main.xml: {k} is not a count")))
-    };
-    check_areal(&get)?;
+    let mut zip = open_zip(bytes)?;
+    let x = Leaves::read(&mut zip, "main.xml")?;
+    check_areal(&x)?;
     let (nx, ny) = (
-        count("Record3/MatrixDimension/SizeX")?,
-        count("Record3/MatrixDimension/SizeY")?,
+        x.count("Record3/MatrixDimension/SizeX")?,
+        x.count("Record3/MatrixDimension/SizeY")?,
     );
-    if count("Record3/MatrixDimension/SizeZ")? != 1 {
+    if x.count("Record3/MatrixDimension/SizeZ")? != 1 {
         return Err(Bad::unsupported("SizeZ other than 1 (volume data)"));
     }
     super::grid(ny, nx)?;
     let (dx, dy) = (
-        num("Record1/Axes/CX/Increment")?,
-        num("Record1/Axes/CY/Increment")?,
+        x.num("Record1/Axes/CX/Increment")?,
+        x.num("Record1/Axes/CY/Increment")?,
     );
-    let t = get("Record1/Axes/CZ/DataType")?;
+    let t = x.get("Record1/Axes/CZ/DataType")?;
     if !matches!(t, "I" | "L" | "F" | "D") {
         return Err(Bad::unsupported(format!("CZ DataType {t}")));
     }
     let inc = x
-        .get("Record1/Axes/CZ/Increment")
-        .map_or(Ok(1.0), |_| num("Record1/Axes/CZ/Increment"))?;
+        .optional("Record1/Axes/CZ/Increment")
+        .map_or(Ok(1.0), |_| x.num("Record1/Axes/CZ/Increment"))?;
     let off = x
-        .get("Record1/Axes/CZ/Offset")
-        .map_or(Ok(0.0), |_| num("Record1/Axes/CZ/Offset"))?;
-    let link = get("Record3/DataLink/PointDataLink")
+        .optional("Record1/Axes/CZ/Offset")
+        .map_or(Ok(0.0), |_| x.num("Record1/Axes/CZ/Offset"))?;
+    let link = x
+        .get("Record3/DataLink/PointDataLink")
         .map_err(|_| Bad::unsupported("no Record3/DataLink/PointDataLink (inline DataList)"))?;
     // Scaled by the increment and offset; non-finite values are missing.
     let plain = inc == 1.0 && off == 0.0;
@@ -276,7 +313,7 @@ pub(super) fn read(bytes: &[u8], channel: &Channel) -> Result<Measured, Bad> {
             scale(f64::from_le_bytes(b))
         })?,
     };
-    if let Some(valid) = x.get("Record3/DataLink/ValidPointsLink") {
+    if let Some(valid) = x.optional("Record3/DataLink/ValidPointsLink") {
         mask_invalid(&mut zip, valid, &mut z)?;
     }
     Ok(Measured {

@@ -288,11 +288,7 @@ impl LawKernels for AdhesivePlastic {
         if delta_max < 0.0 {
             return Some(crate::law::RetractionMinimum::MONOTONE);
         }
-        let p = self.pull_off_after(delta_max, Control::Load);
-        Some(crate::law::RetractionMinimum {
-            interference: p.interference,
-            load: p.load,
-        })
+        Some(self.pull_off_after(delta_max, Control::Load).into())
     }
 
     fn prepares_history(&self) -> bool {
@@ -330,11 +326,7 @@ impl LawKernels for AdhesivePlastic {
             load,
             interference,
         };
-        let p = pull_off_on(residual, &s, Control::Load);
-        Some(crate::law::RetractionMinimum {
-            interference: p.interference,
-            load: p.load,
-        })
+        Some(pull_off_on(residual, &s, Control::Load).into())
     }
 
     /// The shapes of a block of states prepared at once and their JKR

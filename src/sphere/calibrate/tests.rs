@@ -6,6 +6,19 @@ fn problem() -> SphereProblem {
     SphereProblem::new(1.0, Shape::Paraboloid, SolverOptions::coarse()).unwrap()
 }
 
+/// The contact most tests put the calibrated law on: `R = 1 um`,
+/// `E* = 50 GPa`, `w = 0.5 J/m^2`.
+const CONTACT: (f64, f64, f64) = (1e-6, 5e10, 0.5);
+
+/// `cal`'s law on the contact `(R, E*, w)` and its Maugis scales.
+fn law_and_scales(
+    cal: &Calibration,
+    (r, e, w): (f64, f64, f64),
+) -> (Tabulated, crate::material::MaugisScales) {
+    let law = cal.law(r, e, w).unwrap();
+    (law, crate::material::MaugisScales::new(r, e, w).unwrap())
+}
+
 /// The calibrated law reproduces the solver's critical points and has the
 /// hysteresis of the S-curve: attached on retraction down to the jump-out,
 /// detached on approach up to the jump-in.
@@ -13,9 +26,7 @@ fn problem() -> SphereProblem {
 fn law_reproduces_the_solver_curve() {
     let c = Calibration::compute(&problem()).unwrap();
     assert!((c.lambda_equivalent - 1.157_011_634_850_799_3).abs() < 1e-15);
-    let (r, e, w) = (2e-6, 3e10, 0.4);
-    let law = c.law(r, e, w).unwrap();
-    let s = crate::material::MaugisScales::new(r, e, w).unwrap();
+    let (law, s) = law_and_scales(&c, (2e-6, 3e10, 0.4));
     let pull = law.pull_off(Control::Load).unwrap();
     assert!((pull.load / s.load - c.facts.pull_off.load_bar).abs() < 1e-15);
     // the table's minimum on the attached branch is the refined pull-off
@@ -66,15 +77,7 @@ fn small_mu_has_one_branch() {
 fn one_table_serves_every_contact() {
     let c = Calibration::compute(&problem()).unwrap();
     let contacts = [(1e-6, 5e10, 0.5), (3e-5, 1e9, 0.05), (2e-8, 2e11, 1.5)];
-    let laws: Vec<_> = contacts
-        .iter()
-        .map(|&(r, e, w)| {
-            (
-                c.law(r, e, w).unwrap(),
-                crate::material::MaugisScales::new(r, e, w).unwrap(),
-            )
-        })
-        .collect();
+    let laws: Vec<_> = contacts.iter().map(|&k| law_and_scales(&c, k)).collect();
     for d in [-5.0, -0.95, -0.5, 0.0, 1.0, 3.0] {
         for branch in [Branch::Approach, Branch::Retract] {
             let v: Vec<(f64, f64)> = laws
@@ -182,9 +185,7 @@ fn far_field_follows_the_solver_out_to_50_z0() {
     .trace()
     .unwrap();
     let far: Vec<_> = far.into_iter().filter(|p| p.radius_bar == 0.0).collect();
-    let (r, e, w) = (1e-6, 5e10, 0.5);
-    let law = cal.law(r, e, w).unwrap();
-    let sc = crate::material::MaugisScales::new(r, e, w).unwrap();
+    let (law, sc) = law_and_scales(&cal, CONTACT);
     let s = mu * super::super::trace::MAUGIS_INTERFERENCE;
     for gap in [5.0, 10.0, 20.0, 50.0] {
         let d = (1.0 - gap) / s;
@@ -235,9 +236,7 @@ fn table_reaches_100_pi_w_r() {
         .filter(|p| p.load_bar > 1.0 && p.radius_bar > 0.0)
         .copied()
         .collect();
-    let (r, e, w) = (1e-6, 5e10, 0.5);
-    let law = cal.law(r, e, w).unwrap();
-    let sc = crate::material::MaugisScales::new(r, e, w).unwrap();
+    let (law, sc) = law_and_scales(&cal, CONTACT);
     for want_load in [5.0, 20.0, 50.0, 95.0] {
         let p = attached.iter().find(|p| p.load_bar >= want_load).unwrap();
         let d = p.interference_bar;
@@ -258,9 +257,7 @@ fn table_reaches_100_pi_w_r() {
 #[test]
 fn far_field_is_not_cut() {
     let cal = Calibration::compute(&problem()).unwrap();
-    let (r, e, w) = (1e-6, 5e10, 0.5);
-    let law = cal.law(r, e, w).unwrap();
-    let sc = crate::material::MaugisScales::new(r, e, w).unwrap();
+    let (law, sc) = law_and_scales(&cal, CONTACT);
     assert_eq!(law.cutoff_interference(), f64::NEG_INFINITY);
     let s = cal.table.far_field_scale;
     for h in [200.0f64, 1e4] {
@@ -288,9 +285,7 @@ fn far_field_is_not_cut() {
 fn calibrated_law_shares_the_continuum_origin() {
     let cal = Calibration::compute(&problem()).unwrap();
     let md = crate::law::MaugisCurve::new(cal.lambda_equivalent).unwrap();
-    let (r, e, w) = (1e-6, 5e10, 0.5);
-    let law = cal.law(r, e, w).unwrap();
-    let sc = crate::material::MaugisScales::new(r, e, w).unwrap();
+    let (law, sc) = law_and_scales(&cal, CONTACT);
     let shift = 1.0 / cal.table.far_field_scale;
     for d in [2.0, 4.0] {
         let p = law.state(d * sc.interference, Branch::Retract).load / sc.load;

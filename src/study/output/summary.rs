@@ -299,13 +299,12 @@ pub struct MapStateSummary {
     /// GW's load (N) at the exact mean gap.
     #[serde(rename = "gw_load_at_exact_gap_N")]
     pub gw_load_at_exact_gap_n: Option<f64>,
-    /// The exact solve's iterations.
-    pub iterations: usize,
-    /// Its final residual (dimensionless, below the tolerance).
-    pub residual: f64,
-    /// Whether it converged (always: a solve stopped at the iteration cap
-    /// fails the measurement).
-    pub converged: bool,
+    /// How the exact solve ended: its iterations, final residual
+    /// (dimensionless, below the tolerance) and `converged` (always: a
+    /// solve stopped at the iteration cap fails the measurement); its keys
+    /// inline.
+    #[serde(flatten)]
+    pub solve: crate::bem::SolveReport,
 }
 
 impl ModelErrorSummary {
@@ -334,9 +333,7 @@ impl ModelErrorSummary {
                     gw_area_fraction: s.gw_area_fraction,
                     gw_mean_gap_m: s.gw_mean_gap,
                     gw_load_at_exact_gap_n: s.gw_load_at_exact_gap,
-                    iterations: s.iterations,
-                    residual: s.residual,
-                    converged: s.converged,
+                    solve: s.solve,
                 })
                 .collect(),
             exact_estimate_s: m.map.as_ref().map(|x| x.estimate_s),

@@ -3,6 +3,7 @@
 //! `<title>`), drawing at [`SCALE`] times the nominal size so lines and
 //! markers sit at sub-pixel positions, and where the legend goes.
 
+use super::Axis;
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -120,20 +121,68 @@ pub fn finish_svg_at(path: &Path, title: &str, width: u32, height: u32, scale: u
     crate::study::atomic::write(path, out).map_err(io)
 }
 
-/// Draws the legend of a chart sized in pixels in its upper left corner
-/// (white, framed, 14 px labels), then completes the file at `path` with
-/// its `title` ([`finish_svg_at`] at scale 1).
+/// A chart of `xa` by `ya` from `builder` (on its drawing area, with its
+/// caption if any): `margin` px all round, `x_area` px for the x labels
+/// below, `y_area` px for the y labels on the left.
+///
+/// # Errors
+/// The drawing's message.
+pub fn axes_chart<'a, DB: DrawingBackend>(
+    builder: &mut ChartBuilder<'a, '_, DB>,
+    (margin, x_area, y_area): (u32, u32, u32),
+    xa: &Axis,
+    ya: &Axis,
+) -> std::result::Result<ChartContext<'a, DB, Cartesian2d<Axis, Axis>>, String> {
+    builder
+        .margin(margin)
+        .x_label_area_size(x_area)
+        .y_label_area_size(y_area)
+        .build_cartesian_2d(xa.clone(), ya.clone())
+        .map_err(|e| e.to_string())
+}
+
+/// Draws the axes of a chart of `xa` by `ya` ([`axes_chart`]): the
+/// titles `x_desc`, `y_desc` in `desc_px` px, tick labels in 14 px by the
+/// axes' own formatters, and the grid unless `grid` is false.
+///
+/// # Errors
+/// The drawing's message.
+pub fn draw_axes<DB: DrawingBackend>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<Axis, Axis>>,
+    (xa, ya): (&Axis, &Axis),
+    (x_desc, y_desc): (&str, &str),
+    desc_px: u32,
+    grid: bool,
+) -> std::result::Result<(), String> {
+    let mut mesh = chart.configure_mesh();
+    if !grid {
+        mesh.disable_mesh();
+    }
+    mesh.x_desc(x_desc)
+        .y_desc(y_desc)
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", desc_px))
+        .x_label_formatter(&|v| xa.label(*v))
+        .y_label_formatter(&|v| ya.label(*v))
+        .draw()
+        .map_err(|e| e.to_string())
+}
+
+/// Draws the legend of a chart sized in pixels at `position` (white,
+/// framed, 14 px labels), then completes the file at `path` with its
+/// `title` ([`finish_svg_at`] at scale 1).
 pub fn legend_and_finish<'c, 'a: 'c, CT: plotters::coord::CoordTranslate>(
     chart: &mut ChartContext<'c, SVGBackend<'a>, CT>,
     root: &DrawingArea<SVGBackend<'a>, Shift>,
     path: &Path,
     title: &str,
     (width, height): (u32, u32),
+    position: SeriesLabelPosition,
 ) -> Result<()> {
     let fail = |e: String| Error::io(path.display(), e);
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(position)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 14))

@@ -2,7 +2,7 @@
 //! of a switch's populations, with the integral's pull-off and the
 //! quantiles marked.
 
-use super::{Axis, COLOURS};
+use super::{frame, Axis, COLOURS};
 use crate::error::{Error, Result};
 use plotters::prelude::*;
 use std::path::Path;
@@ -65,24 +65,12 @@ impl Histogram {
         let entries = 1.0 + self.markers.len() as f64;
         let top = tallest * 1.08 / (1.0 - (0.06 * entries + 0.04)).max(0.4);
         let mark_top = tallest * 1.08;
-        let root = super::frame::titled_root_at(path, &self.title, width, height, 1)?;
+        let root = frame::titled_root_at(path, &self.title, width, height, 1)?;
         let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(0.0, top));
-        let mut chart = ChartBuilder::on(&root)
-            .margin(12)
-            .x_label_area_size(48)
-            .y_label_area_size(64)
-            .build_cartesian_2d(xa.clone(), ya.clone())
-            .map_err(|e| fail(e.to_string()))?;
-        chart
-            .configure_mesh()
-            .x_desc(&self.x_label)
-            .y_desc("populations")
-            .label_style(("sans-serif", 14))
-            .axis_desc_style(("sans-serif", 16))
-            .x_label_formatter(&|x| xa.label(*x))
-            .y_label_formatter(&|y| ya.label(*y))
-            .draw()
-            .map_err(|e| fail(e.to_string()))?;
+        let mut chart = frame::axes_chart(&mut ChartBuilder::on(&root), (12, 48, 64), &xa, &ya)
+            .map_err(fail)?;
+        let titles = (self.x_label.as_str(), "populations");
+        frame::draw_axes(&mut chart, (&xa, &ya), titles, 16, true).map_err(fail)?;
         let bar = COLOURS[0];
         chart
             .draw_series(counts.iter().enumerate().map(|(k, &c)| {
@@ -124,6 +112,8 @@ impl Histogram {
                     }
                 });
         }
-        super::frame::legend_and_finish(&mut chart, &root, path, &self.title, (width, height))
+        let size = (width, height);
+        let corner = SeriesLabelPosition::UpperLeft;
+        frame::legend_and_finish(&mut chart, &root, path, &self.title, size, corner)
     }
 }

@@ -3,6 +3,7 @@
 //! Lennard-Jones solution. Drawn from [`LawErrorTable`], the same measured
 //! errors the planner chooses laws by.
 
+use super::frame;
 use crate::error::{Error, Result};
 use crate::law::errors::LawErrorTable;
 use crate::law::LawKind;
@@ -87,7 +88,7 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
     let title = format!(
         "Adhesion map: where each law is within {tol:e} of the Lennard-Jones sphere solution"
     );
-    let root = super::frame::titled_root_at(path, &title, 1500, 560, 1)?;
+    let root = frame::titled_root_at(path, &title, 1500, 560, 1)?;
     let (xa, ya) = (super::Axis::log(x0, x1), super::Axis::linear(y0, y1));
     let panels = root.split_evenly((1, MAP_LAWS.len()));
     let colours = [
@@ -106,23 +107,11 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
         } else {
             format!("{}: nowhere within {tol:e}", kind.name())
         };
-        let mut chart = ChartBuilder::on(panel)
-            .caption(caption, ("sans-serif", 18))
-            .margin(8)
-            .x_label_area_size(40)
-            .y_label_area_size(48)
-            .build_cartesian_2d(xa.clone(), ya.clone())
-            .map_err(|e| fail(e.to_string()))?;
-        chart
-            .configure_mesh()
-            .x_desc("Tabor parameter mu")
-            .y_desc("load P / (pi w R)")
-            .label_style(("sans-serif", 14))
-            .axis_desc_style(("sans-serif", 14))
-            .x_label_formatter(&|v| xa.label(*v))
-            .y_label_formatter(&|v| ya.label(*v))
-            .draw()
-            .map_err(|e| fail(e.to_string()))?;
+        let mut builder = ChartBuilder::on(panel);
+        builder.caption(caption, ("sans-serif", 18));
+        let mut chart = frame::axes_chart(&mut builder, (8, 40, 48), &xa, &ya).map_err(fail)?;
+        let titles = ("Tabor parameter mu", "load P / (pi w R)");
+        frame::draw_axes(&mut chart, (&xa, &ya), titles, 14, true).map_err(fail)?;
         let mut cells = Vec::new();
         for i in 0..table.mu.len() {
             for j in 0..table.load_bar.len() {
@@ -137,7 +126,7 @@ pub fn write_adhesion_map(table: &LawErrorTable, tol: f64, path: &Path) -> Resul
         chart.draw_series(cells).map_err(|e| fail(e.to_string()))?;
     }
     root.present().map_err(|e| fail(e.to_string()))?;
-    super::frame::finish_svg_at(path, &title, 1500, 560, 1)
+    frame::finish_svg_at(path, &title, 1500, 560, 1)
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! equilibrium curve, the displacement-controlled loading and unloading paths (with their
 //! jumps) and the two envelopes.
 
-use super::{Axis, COLOURS};
+use super::{frame, Axis, COLOURS};
 use crate::error::{Error, Result};
 use crate::punch::{Envelope, Evolution, WavyPunch};
 use plotters::prelude::*;
@@ -101,24 +101,12 @@ impl PunchChart {
         };
         let ((x0, x1), (y0, y1)) = (span(|p| p.0), span(|p| p.1));
         let fail = |e: String| Error::io(path.display(), e);
-        let root = super::frame::titled_root_at(path, &self.title, width, height, 1)?;
+        let root = frame::titled_root_at(path, &self.title, width, height, 1)?;
         let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(y0, y1));
-        let mut chart = ChartBuilder::on(&root)
-            .margin(12)
-            .x_label_area_size(48)
-            .y_label_area_size(78)
-            .build_cartesian_2d(xa.clone(), ya.clone())
-            .map_err(|e| fail(e.to_string()))?;
-        chart
-            .configure_mesh()
-            .x_desc("depth h (m)")
-            .y_desc("load P (N)")
-            .label_style(("sans-serif", 14))
-            .axis_desc_style(("sans-serif", 16))
-            .x_label_formatter(&|v| xa.label(*v))
-            .y_label_formatter(&|v| ya.label(*v))
-            .draw()
-            .map_err(|e| fail(e.to_string()))?;
+        let mut chart = frame::axes_chart(&mut ChartBuilder::on(&root), (12, 48, 78), &xa, &ya)
+            .map_err(fail)?;
+        let titles = ("depth h (m)", "load P (N)");
+        frame::draw_axes(&mut chart, (&xa, &ya), titles, 16, true).map_err(fail)?;
         let grey = RGBColor(190, 190, 190);
         let inside = |p: &&(f64, f64)| p.0 >= x0 && p.0 <= x1 && p.1 >= y0 && p.1 <= y1;
         let series: [Styled; 5] = [
@@ -165,7 +153,9 @@ impl PunchChart {
                 }
             }
         }
-        super::frame::legend_and_finish(&mut chart, &root, path, &self.title, (width, height))
+        let size = (width, height);
+        let corner = SeriesLabelPosition::UpperLeft;
+        frame::legend_and_finish(&mut chart, &root, path, &self.title, size, corner)
     }
 }
 

@@ -1,7 +1,7 @@
 //! Charts of a measured topography: the summit-height histogram against the
 //! Gaussian model predicted from the moments, and the summit map.
 
-use super::{Axis, COLOURS};
+use super::{frame, Axis, COLOURS};
 use crate::error::{Error, Result};
 use crate::heights::{Gaussian, HeightDistribution};
 use crate::surface::Characterisation;
@@ -76,23 +76,13 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
         // neither bars nor the curve.
         / 0.8;
     let title = format!("Summit heights ({n} summits)");
-    let root = super::frame::titled_root_at(path, &title, 800, 500, 1)?;
+    let root = frame::titled_root_at(path, &title, 800, 500, 1)?;
     let (xa, ya) = (Axis::linear(x0, x1), Axis::linear(0.0, ymax));
-    let mut chart = ChartBuilder::on(&root)
-        .margin(12)
-        .x_label_area_size(48)
-        .y_label_area_size(78)
-        .build_cartesian_2d(xa.clone(), ya.clone())
+    let mut chart = frame::axes_chart(&mut ChartBuilder::on(&root), (12, 48, 78), &xa, &ya)
         .map_err(|e| fail(path, e))?;
-    chart
-        .configure_mesh()
-        .x_desc(format!("summit height above the mean plane ({name})"))
-        .y_desc(format!("probability density (1/{name})"))
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .x_label_formatter(&|v| xa.label(*v))
-        .y_label_formatter(&|v| ya.label(*v))
-        .draw()
+    let x_desc = format!("summit height above the mean plane ({name})");
+    let y_desc = format!("probability density (1/{name})");
+    frame::draw_axes(&mut chart, (&xa, &ya), (&x_desc, &y_desc), 16, true)
         .map_err(|e| fail(path, e))?;
     let bar = COLOURS[0];
     chart
@@ -109,16 +99,8 @@ pub fn write_summit_heights(path: &Path, c: &Characterisation) -> Result<()> {
         .map_err(|e| fail(path, e))?
         .label("Gaussian, GW parameters from moments")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], line.stroke_width(2)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 14))
-        .draw()
-        .map_err(|e| fail(path, e))?;
-    root.present().map_err(|e| fail(path, e))?;
-    super::frame::finish_svg_at(path, &title, 800, 500, 1)
+    let corner = SeriesLabelPosition::UpperRight;
+    frame::legend_and_finish(&mut chart, &root, path, &title, (800, 500), corner)
 }
 
 /// The summit map: every summit at its position (x along a row, y down the
@@ -152,28 +134,16 @@ pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
         ((h * side) as u32).max(200) + 70,
     );
     let title = format!("Summits ({}), coloured by height", c.summits.len());
-    let root = super::frame::titled_root_at(path, &title, size.0, size.1, 1)?;
+    let root = frame::titled_root_at(path, &title, size.0, size.1, 1)?;
     let (plot, scale_area) = root.split_horizontally(size.0 - 110);
     let (xa, ya) = (
         Axis::linear(0.0, w / u),
         Axis::linear(0.0, h / u).reversed(),
     );
-    let mut chart = ChartBuilder::on(&plot)
-        .margin(10)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
-        .build_cartesian_2d(xa.clone(), ya.clone())
+    let mut chart = frame::axes_chart(&mut ChartBuilder::on(&plot), (10, 40, 60), &xa, &ya)
         .map_err(|e| fail(path, e))?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc(format!("x ({name})"))
-        .y_desc(format!("y ({name})"))
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .x_label_formatter(&|v| xa.label(*v))
-        .y_label_formatter(&|v| ya.label(*v))
-        .draw()
+    let titles = (format!("x ({name})"), format!("y ({name})"));
+    frame::draw_axes(&mut chart, (&xa, &ya), (&titles.0, &titles.1), 16, false)
         .map_err(|e| fail(path, e))?;
     let radius = if c.summits.len() > 5000 { 1 } else { 2 };
     chart
@@ -187,7 +157,7 @@ pub fn write_summit_map(path: &Path, c: &Characterisation) -> Result<()> {
         .map_err(|e| fail(path, e))?;
     colour_scale(&scale_area, lo, hi, unit(c.moments.rms_height())).map_err(|e| fail(path, e))?;
     root.present().map_err(|e| fail(path, e))?;
-    super::frame::finish_svg_at(path, &title, size.0, size.1, 1)
+    frame::finish_svg_at(path, &title, size.0, size.1, 1)
 }
 
 /// The colour of a summit at fraction `t` of the height range: blue (low)

@@ -97,25 +97,13 @@ impl Scene {
         }
         if let Some(mc) = &self.montecarlo {
             if let Some(n) = mc.summits {
-                let max = crate::montecarlo::MAX_SUMMITS;
-                if n == 0 || n > max {
-                    return Err(Error::OutOfRange {
-                        name: "montecarlo.summits".into(),
-                        value: n as f64,
-                        allowed: Allowed::closed(1.0, max as f64),
-                    });
-                }
+                let max = crate::montecarlo::MAX_SUMMITS as f64;
+                Allowed::closed(1.0, max).check("montecarlo.summits", n as f64)?;
             }
             non_negative("montecarlo.radius_log_std", mc.radius_log_std)?;
             if let Some(n) = mc.seeds {
-                let max = super::limits::MAX_POPULATIONS;
-                if n == 0 || n > max {
-                    return Err(Error::OutOfRange {
-                        name: "montecarlo.seeds".into(),
-                        value: n as f64,
-                        allowed: Allowed::closed(1.0, max as f64),
-                    });
-                }
+                let max = super::limits::MAX_POPULATIONS as f64;
+                Allowed::closed(1.0, max).check("montecarlo.seeds", n as f64)?;
             }
         }
         costs(self)?;

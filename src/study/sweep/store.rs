@@ -492,16 +492,25 @@ mod tests {
         d
     }
 
-    #[test]
-    fn resume_drops_a_torn_line_and_keeps_complete_rows() {
-        let dir = tmp("torn");
+    /// A results file of [`meta`]`(None)` in a fresh temporary directory
+    /// `name` with the `rows` (index, row) appended, closed: the directory,
+    /// the meta and the file's path.
+    fn written(name: &str, rows: &[(usize, &str)]) -> (PathBuf, SweepMeta, PathBuf) {
+        let dir = tmp(name);
         let m = meta(None);
         let mut f = ResultsFile::open(&dir, &m).unwrap();
-        f.append(2, "2,0.6,9,ok,1e0").unwrap();
-        f.append(0, "0,0,7,ok,2e0").unwrap();
+        for &(k, row) in rows {
+            f.append(k, row).unwrap();
+        }
         drop(f);
-        // A kill in the middle of a write leaves a partial line.
         let path = dir.join("results.csv");
+        (dir, m, path)
+    }
+
+    #[test]
+    fn resume_drops_a_torn_line_and_keeps_complete_rows() {
+        let (dir, m, path) = written("torn", &[(2, "2,0.6,9,ok,1e0"), (0, "0,0,7,ok,2e0")]);
+        // A kill in the middle of a write leaves a partial line.
         let mut text = std::fs::read_to_string(&path).unwrap();
         text.push_str("1,0.3,8,o");
         std::fs::write(&path, &text).unwrap();
@@ -539,13 +548,7 @@ mod tests {
     /// has all its rows recomputed, with a note.
     #[test]
     fn resume_recomputes_edited_rows_and_rows_without_checksums() {
-        let dir = tmp("edited");
-        let m = meta(None);
-        let mut f = ResultsFile::open(&dir, &m).unwrap();
-        f.append(0, "0,0,7,ok,2e0").unwrap();
-        f.append(1, "1,0.3,8,ok,3e0").unwrap();
-        drop(f);
-        let path = dir.join("results.csv");
+        let (dir, m, path) = written("edited", &[(0, "0,0,7,ok,2e0"), (1, "1,0.3,8,ok,3e0")]);
         let text = std::fs::read_to_string(&path).unwrap();
         assert!(
             text.starts_with("index,a,seed,status,x,checksum\n"),
