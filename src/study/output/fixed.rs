@@ -79,7 +79,12 @@ fn fixed_digits(x: f64, decimals: usize, buf: &mut [u8; 64]) -> Option<usize> {
             }
         }
     };
-    let (int, frac) = (q / unit, q % unit);
+    // Most cells fit 64 bits, whose division is a few cycles (128-bit
+    // division is a library call).
+    let (int, frac) = match (u64::try_from(q), u64::try_from(unit)) {
+        (Ok(q), Ok(unit)) => (u128::from(q / unit), u128::from(q % unit)),
+        _ => (q / unit, q % unit),
+    };
     let mut n = 0;
     if negative {
         buf[n] = b'-';
@@ -96,13 +101,25 @@ fn fixed_digits(x: f64, decimals: usize, buf: &mut [u8; 64]) -> Option<usize> {
 
 /// Writes `v` in decimal with at least `min` digits (leading zeros) at
 /// the start of `buf`, returning the count.
-fn write_digits(buf: &mut [u8], mut v: u128, min: usize) -> usize {
+fn write_digits(buf: &mut [u8], v: u128, min: usize) -> usize {
     let mut tmp = [0u8; 40];
     let mut k = 0;
-    while v > 0 || k < min {
-        tmp[k] = b'0' + (v % 10) as u8;
-        v /= 10;
-        k += 1;
+    match u64::try_from(v) {
+        Ok(mut v) => {
+            while v > 0 || k < min {
+                tmp[k] = b'0' + (v % 10) as u8;
+                v /= 10;
+                k += 1;
+            }
+        }
+        Err(_) => {
+            let mut v = v;
+            while v > 0 || k < min {
+                tmp[k] = b'0' + (v % 10) as u8;
+                v /= 10;
+                k += 1;
+            }
+        }
     }
     for i in 0..k {
         buf[i] = tmp[k - 1 - i];

@@ -193,6 +193,7 @@ impl Chart {
         let fail = |e: String| Error::io(path.display(), e);
         let s = frame::SCALE as i32;
         let sf = s as f64;
+        let mut markers = Vec::new();
         {
             let area = frame::titled_root(path, &self.title, width, height)?;
             let mut chart = ChartBuilder::on(&area)
@@ -217,14 +218,55 @@ impl Chart {
                 .map_err(|e| fail(e.to_string()))?;
             let mut seen = Vec::new();
             for (i, series) in self.series.iter().enumerate() {
-                self.draw_one(&mut chart, i, series, (&x, &y), &mut seen, &fail)?;
+                self.draw_one(
+                    &mut chart,
+                    i,
+                    series,
+                    (&x, &y),
+                    (&mut seen, &mut markers),
+                    &fail,
+                )?;
             }
             if self.series.len() > 1 {
                 self.draw_legend(&mut chart, &seen, &fail)?;
             }
             area.present().map_err(|e| fail(e.to_string()))?;
         }
-        frame::finish_svg(path, &self.title, width, height)
+        frame::finish_svg_with(path, &self.title, width, height, &markers)
+    }
+
+    /// The markers of a series drawn with markers only, as the polygons
+    /// plotters' SVG backend would write (`<polygon opacity=".."
+    /// fill="#RRGGBB" points="x,y x,y .. "/>`, one line each, the same
+    /// bytes) at `marks`: a thousand listed states were a thousand trips
+    /// through its element and attribute machinery, most of the chart's
+    /// time.
+    fn marker_polygons(
+        chart: &Plotted<'_>,
+        colour: RGBColor,
+        outline: &[(i32, i32)],
+        marks: &[(f64, f64)],
+    ) -> String {
+        use std::fmt::Write as _;
+        let colour = colour.to_backend_color();
+        let mut out = String::with_capacity(marks.len() * (48 + 10 * outline.len()));
+        if colour.alpha == 0.0 {
+            return out;
+        }
+        let (r, g, b) = colour.rgb;
+        let head = format!(
+            "<polygon opacity=\"{}\" fill=\"#{r:02X}{g:02X}{b:02X}\" points=\"",
+            colour.alpha
+        );
+        for p in marks {
+            let (ax, ay) = chart.backend_coord(p);
+            out.push_str(&head);
+            for (dx, dy) in outline {
+                let _ = write!(out, "{},{} ", ax + dx, ay + dy);
+            }
+            out.push_str("\"/>\n");
+        }
+        out
     }
 
     /// Draws series `i` (its line runs clipped to the y range, then its
@@ -236,7 +278,7 @@ impl Chart {
         i: usize,
         series: &Series,
         (x, y): (&Axis, &Axis),
-        seen: &mut Vec<(f64, f64)>,
+        (seen, markers): (&mut Vec<(f64, f64)>, &mut Vec<(String, String)>),
         fail: &dyn Fn(String) -> Error,
     ) -> Result<()> {
         let s = frame::SCALE as i32;
@@ -295,12 +337,29 @@ impl Chart {
         let outline = marker_outline(shape, r);
         let (first, second, dot) = legend_pieces(shape, stroke, r);
         let line = colour.stroke_width((2 * s) as u32);
-        chart
-            .draw_series(
+        // Markers only: a placeholder where they go, the polygons written
+        // by `marker_polygons` and put in its place when the file is done.
+        let placeholder = match (stroke, marks.first()) {
+            (Stroke::Markers, Some(&first)) => {
+                let key = format!("\u{E000}markers-{i}\u{E000}");
+                markers.push((
+                    key.clone(),
+                    Self::marker_polygons(chart, colour, &outline, &marks),
+                ));
+                Some(Text::new(key, first, ("sans-serif", 10.0)))
+            }
+            _ => None,
+        };
+        let drawn = if placeholder.is_some() {
+            chart.draw_series(placeholder)
+        } else {
+            chart.draw_series(
                 marks
                     .iter()
                     .map(|&p| EmptyElement::at(p) + Polygon::new(outline.clone(), colour.filled())),
             )
+        };
+        drawn
             .map_err(|e| fail(e.to_string()))?
             .label(series.label.clone())
             .legend(move |(lx, ly)| {
