@@ -140,7 +140,12 @@ fn finish_svg_replacing(
                 "a chart's marker placeholder is missing",
             ));
         };
-        svg.replace_range(start..end, elements);
+        // Whole slices (`replace_range` splices byte by byte).
+        let mut joined = String::with_capacity(svg.len() + elements.len());
+        joined.push_str(&svg[..start]);
+        joined.push_str(elements);
+        joined.push_str(&svg[end..]);
+        svg = joined;
     }
     let big = format!("width=\"{}\" height=\"{}\"", width * scale, height * scale);
     let Some(head_end) = svg.find('>') else {

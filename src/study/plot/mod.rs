@@ -6,6 +6,7 @@ pub mod frame;
 mod histogram;
 mod loglog;
 mod map;
+mod markers;
 pub mod plastic;
 pub mod punch;
 pub mod surface;
@@ -235,40 +236,6 @@ impl Chart {
         frame::finish_svg_with(path, &self.title, width, height, &markers)
     }
 
-    /// The markers of a series drawn with markers only, as the polygons
-    /// plotters' SVG backend would write (`<polygon opacity=".."
-    /// fill="#RRGGBB" points="x,y x,y .. "/>`, one line each, the same
-    /// bytes) at `marks`: a thousand listed states were a thousand trips
-    /// through its element and attribute machinery, most of the chart's
-    /// time.
-    fn marker_polygons(
-        chart: &Plotted<'_>,
-        colour: RGBColor,
-        outline: &[(i32, i32)],
-        marks: &[(f64, f64)],
-    ) -> String {
-        use std::fmt::Write as _;
-        let colour = colour.to_backend_color();
-        let mut out = String::with_capacity(marks.len() * (48 + 10 * outline.len()));
-        if colour.alpha == 0.0 {
-            return out;
-        }
-        let (r, g, b) = colour.rgb;
-        let head = format!(
-            "<polygon opacity=\"{}\" fill=\"#{r:02X}{g:02X}{b:02X}\" points=\"",
-            colour.alpha
-        );
-        for p in marks {
-            let (ax, ay) = chart.backend_coord(p);
-            out.push_str(&head);
-            for (dx, dy) in outline {
-                let _ = write!(out, "{},{} ", ax + dx, ay + dy);
-            }
-            out.push_str("\"/>\n");
-        }
-        out
-    }
-
     /// Draws series `i` (its line runs clipped to the y range, then its
     /// markers with the legend entry) and adds the points it covers, as
     /// fractions of the plotting area, to `seen`.
@@ -334,7 +301,7 @@ impl Chart {
         } else {
             3
         } * s;
-        let outline = marker_outline(shape, r);
+        let outline = markers::outline(shape, r);
         let (first, second, dot) = legend_pieces(shape, stroke, r);
         let line = colour.stroke_width((2 * s) as u32);
         // Markers only: a placeholder where they go, the polygons written
@@ -344,7 +311,7 @@ impl Chart {
                 let key = format!("\u{E000}markers-{i}\u{E000}");
                 markers.push((
                     key.clone(),
-                    Self::marker_polygons(chart, colour, &outline, &marks),
+                    markers::polygons(chart, colour, &outline, &marks),
                 ));
                 Some(Text::new(key, first, ("sans-serif", 10.0)))
             }
@@ -406,42 +373,6 @@ impl Chart {
     }
 }
 
-/// The outline of marker shape `k` (circle, triangle, square, cross) of
-/// radius `r`, as polygon vertices around the origin.
-fn marker_outline(k: usize, r: i32) -> Vec<(i32, i32)> {
-    let rf = r as f64;
-    let ring = |n: usize, rr: f64, turn: f64| -> Vec<(i32, i32)> {
-        (0..n)
-            .map(|j| {
-                let a = turn + std::f64::consts::TAU * j as f64 / n as f64;
-                ((rr * a.cos()).round() as i32, (rr * a.sin()).round() as i32)
-            })
-            .collect()
-    };
-    match k {
-        0 => ring(16, rf, 0.0),
-        1 => ring(3, 1.3 * rf, -std::f64::consts::FRAC_PI_2),
-        2 => ring(4, 1.15 * rf, std::f64::consts::FRAC_PI_4),
-        _ => {
-            let (a, b) = (r, r / 3);
-            vec![
-                (-b, -a),
-                (b, -a),
-                (b, -b),
-                (a, -b),
-                (a, b),
-                (b, b),
-                (b, a),
-                (-b, a),
-                (-b, b),
-                (-a, b),
-                (-a, -b),
-                (-b, -b),
-            ]
-        }
-    }
-}
-
 /// A legend entry's pieces, relative to its anchor: a short line in the
 /// series' stroke (two pieces when dashed, none for markers only) and its
 /// marker outline in the middle.
@@ -460,7 +391,7 @@ fn legend_pieces(
         ),
         Stroke::Markers => (vec![], vec![]),
     };
-    let dot = marker_outline(k, r)
+    let dot = markers::outline(k, r)
         .into_iter()
         .map(|(a, b)| (a + len / 2, b))
         .collect();
