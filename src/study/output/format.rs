@@ -110,19 +110,30 @@ pub fn plain(v: f64, unit: &str) -> String {
 /// else one decimal from 10 up, three significant digits below
 /// (`538.4`, `1.50`, `0.00500`).
 pub fn count(v: f64) -> String {
+    let mut s = String::with_capacity(16);
+    push_count(&mut s, v, 0);
+    s
+}
+
+/// Appends [`count`]`(v)` right-aligned in `width` characters.
+pub fn push_count(out: &mut String, v: f64, width: usize) {
     let a = v.abs();
-    if v.fract() == 0.0 && a < 1e15 {
-        format!("{v:.0}")
+    let decimals = if v.fract() == 0.0 && a < 1e15 {
+        0
     } else if a >= 10.0 {
-        format!("{v:.1}")
+        1
     } else if a >= 1.0 {
-        format!("{v:.2}")
+        2
     } else if a == 0.0 {
-        "0".into()
+        for _ in 1..width {
+            out.push(' ');
+        }
+        out.push('0');
+        return;
     } else {
-        let decimals = (2 - a.log10().floor() as i32).max(0) as usize;
-        format!("{v:.decimals$}")
-    }
+        (2 - a.log10().floor() as i32).max(0) as usize
+    };
+    super::fixed::push_fixed(out, v, decimals, width);
 }
 
 #[cfg(test)]

@@ -6,6 +6,7 @@
 mod aliases;
 mod feature_figures;
 mod figures;
+pub mod fixed;
 pub mod format;
 mod report;
 pub mod sci;

@@ -2,8 +2,8 @@
 //! numbers with their units, one line each; the states' quantities follow
 //! the plan's quantity set.
 
-use super::format;
 use super::summary::{McSummary, PopulationSummary, Summary};
+use super::{fixed, format};
 use crate::study::plan::Plan;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -415,11 +415,14 @@ fn states(out: &mut String, plan: &Plan, summary: &Summary) {
         out.push_str("    ");
         for (i, ((_, _, values), (scale, is_count))) in columns.iter().zip(&scales).enumerate() {
             let sep = if i == 0 { "" } else { " " };
-            let _ = match values[row] {
-                None => write!(out, "{sep}{:>width$}", "-"),
-                Some(x) if *is_count => write!(out, "{sep}{:>width$}", format::count(x)),
-                Some(x) => write!(out, "{sep}{:>width$.3}", x / scale),
-            };
+            out.push_str(sep);
+            match values[row] {
+                None => {
+                    let _ = write!(out, "{:>width$}", "-");
+                }
+                Some(x) if *is_count => format::push_count(out, x, width),
+                Some(x) => fixed::push_fixed(out, x / scale, 3, width),
+            }
         }
         out.push('\n');
     }

@@ -104,10 +104,50 @@ pub fn finish_svg(path: &Path, title: &str, width: u32, height: u32) -> Result<(
     finish_svg_at(path, title, width, height, SCALE)
 }
 
+/// [`finish_svg`], each `(placeholder, elements)` of `replace` putting the
+/// elements in place of the `<text>` element whose text is the placeholder.
+pub fn finish_svg_with(
+    path: &Path,
+    title: &str,
+    width: u32,
+    height: u32,
+    replace: &[(String, String)],
+) -> Result<()> {
+    finish_svg_replacing(path, title, (width, height, SCALE), replace)
+}
+
 /// [`finish_svg`] for a chart drawn at `scale`.
 pub fn finish_svg_at(path: &Path, title: &str, width: u32, height: u32, scale: u32) -> Result<()> {
+    finish_svg_replacing(path, title, (width, height, scale), &[])
+}
+
+fn finish_svg_replacing(
+    path: &Path,
+    title: &str,
+    (width, height, scale): (u32, u32, u32),
+    replace: &[(String, String)],
+) -> Result<()> {
     let io = |e: std::io::Error| Error::io(path.display(), e);
-    let svg = std::fs::read_to_string(path).map_err(io)?;
+    let mut svg = std::fs::read_to_string(path).map_err(io)?;
+    for (key, elements) in replace {
+        let found = svg.find(key.as_str()).and_then(|at| {
+            let start = svg[..at].rfind("<text")?;
+            let end = at + svg[at..].find("</text>\n")? + "</text>\n".len();
+            Some((start, end))
+        });
+        let Some((start, end)) = found else {
+            return Err(Error::io(
+                path.display(),
+                "a chart's marker placeholder is missing",
+            ));
+        };
+        // Whole slices (`replace_range` splices byte by byte).
+        let mut joined = String::with_capacity(svg.len() + elements.len());
+        joined.push_str(&svg[..start]);
+        joined.push_str(elements);
+        joined.push_str(&svg[end..]);
+        svg = joined;
+    }
     let big = format!("width=\"{}\" height=\"{}\"", width * scale, height * scale);
     let Some(head_end) = svg.find('>') else {
         return Err(Error::io(path.display(), "no <svg> element written"));

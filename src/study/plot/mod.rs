@@ -6,6 +6,7 @@ pub mod frame;
 mod histogram;
 mod loglog;
 mod map;
+mod markers;
 pub mod plastic;
 pub mod punch;
 pub mod surface;
@@ -193,6 +194,7 @@ impl Chart {
         let fail = |e: String| Error::io(path.display(), e);
         let s = frame::SCALE as i32;
         let sf = s as f64;
+        let mut markers = Vec::new();
         {
             let area = frame::titled_root(path, &self.title, width, height)?;
             let mut chart = ChartBuilder::on(&area)
@@ -217,14 +219,21 @@ impl Chart {
                 .map_err(|e| fail(e.to_string()))?;
             let mut seen = Vec::new();
             for (i, series) in self.series.iter().enumerate() {
-                self.draw_one(&mut chart, i, series, (&x, &y), &mut seen, &fail)?;
+                self.draw_one(
+                    &mut chart,
+                    i,
+                    series,
+                    (&x, &y),
+                    (&mut seen, &mut markers),
+                    &fail,
+                )?;
             }
             if self.series.len() > 1 {
                 self.draw_legend(&mut chart, &seen, &fail)?;
             }
             area.present().map_err(|e| fail(e.to_string()))?;
         }
-        frame::finish_svg(path, &self.title, width, height)
+        frame::finish_svg_with(path, &self.title, width, height, &markers)
     }
 
     /// Draws series `i` (its line runs clipped to the y range, then its
@@ -236,7 +245,7 @@ impl Chart {
         i: usize,
         series: &Series,
         (x, y): (&Axis, &Axis),
-        seen: &mut Vec<(f64, f64)>,
+        (seen, markers): (&mut Vec<(f64, f64)>, &mut Vec<(String, String)>),
         fail: &dyn Fn(String) -> Error,
     ) -> Result<()> {
         let s = frame::SCALE as i32;
@@ -292,15 +301,32 @@ impl Chart {
         } else {
             3
         } * s;
-        let outline = marker_outline(shape, r);
+        let outline = markers::outline(shape, r);
         let (first, second, dot) = legend_pieces(shape, stroke, r);
         let line = colour.stroke_width((2 * s) as u32);
-        chart
-            .draw_series(
+        // Markers only: a placeholder where they go, the polygons written
+        // by `marker_polygons` and put in its place when the file is done.
+        let placeholder = match (stroke, marks.first()) {
+            (Stroke::Markers, Some(&first)) => {
+                let key = format!("\u{E000}markers-{i}\u{E000}");
+                markers.push((
+                    key.clone(),
+                    markers::polygons(chart, colour, &outline, &marks),
+                ));
+                Some(Text::new(key, first, ("sans-serif", 10.0)))
+            }
+            _ => None,
+        };
+        let drawn = if placeholder.is_some() {
+            chart.draw_series(placeholder)
+        } else {
+            chart.draw_series(
                 marks
                     .iter()
                     .map(|&p| EmptyElement::at(p) + Polygon::new(outline.clone(), colour.filled())),
             )
+        };
+        drawn
             .map_err(|e| fail(e.to_string()))?
             .label(series.label.clone())
             .legend(move |(lx, ly)| {
@@ -347,42 +373,6 @@ impl Chart {
     }
 }
 
-/// The outline of marker shape `k` (circle, triangle, square, cross) of
-/// radius `r`, as polygon vertices around the origin.
-fn marker_outline(k: usize, r: i32) -> Vec<(i32, i32)> {
-    let rf = r as f64;
-    let ring = |n: usize, rr: f64, turn: f64| -> Vec<(i32, i32)> {
-        (0..n)
-            .map(|j| {
-                let a = turn + std::f64::consts::TAU * j as f64 / n as f64;
-                ((rr * a.cos()).round() as i32, (rr * a.sin()).round() as i32)
-            })
-            .collect()
-    };
-    match k {
-        0 => ring(16, rf, 0.0),
-        1 => ring(3, 1.3 * rf, -std::f64::consts::FRAC_PI_2),
-        2 => ring(4, 1.15 * rf, std::f64::consts::FRAC_PI_4),
-        _ => {
-            let (a, b) = (r, r / 3);
-            vec![
-                (-b, -a),
-                (b, -a),
-                (b, -b),
-                (a, -b),
-                (a, b),
-                (b, b),
-                (b, a),
-                (-b, a),
-                (-b, b),
-                (-a, b),
-                (-a, -b),
-                (-b, -b),
-            ]
-        }
-    }
-}
-
 /// A legend entry's pieces, relative to its anchor: a short line in the
 /// series' stroke (two pieces when dashed, none for markers only) and its
 /// marker outline in the middle.
@@ -401,7 +391,7 @@ fn legend_pieces(
         ),
         Stroke::Markers => (vec![], vec![]),
     };
-    let dot = marker_outline(k, r)
+    let dot = markers::outline(k, r)
         .into_iter()
         .map(|(a, b)| (a + len / 2, b))
         .collect();

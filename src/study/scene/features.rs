@@ -308,8 +308,9 @@ impl Scene {
                     format!("needs 1 ..= {MAX_LISTED_STATES} values, got {}", xs.len()),
                 ));
             }
+            let field = format!("program.{name}");
             for &x in xs {
-                check(&format!("program.{name}"), x)?;
+                check(&field, x)?;
             }
             Ok(xs.to_vec())
         };

@@ -15,6 +15,7 @@ mod json_schema;
 mod keys;
 mod law_name;
 mod limits;
+mod listed;
 mod parse;
 mod schema;
 mod summit_source;

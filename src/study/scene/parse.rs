@@ -18,7 +18,10 @@ impl Scene {
     /// number for syntax errors, unknown or missing keys and wrong types;
     /// [`Error::OutOfRange`] naming the field for bad values.
     pub fn from_toml(text: &str) -> Result<Scene> {
-        let scene: Scene = toml::from_str(text).map_err(|e| parse_error(text, &e))?;
+        let scene = match fast_lists(text) {
+            Some(scene) => scene,
+            None => toml::from_str(text).map_err(|e| parse_error(text, &e))?,
+        };
         // An absent number reads as NaN (`surface.nominal_area` and its
         // kind): a NaN the user wrote must not pass for "not given". TOML
         // spells it `nan` (`+nan`, `-nan`): a text without those letters
@@ -308,6 +311,25 @@ fn parse_error(text: &str, e: &toml::de::Error) -> Error {
         }
     }
     Error::invalid(field, format!("line {line_no}: {message}"))
+}
+
+/// The scene with its long `[program]` number lists read by
+/// [`super::listed`], or `None` where the parser is to read the whole text
+/// (no such list, or the blanked text does not parse to empty lists there).
+fn fast_lists(text: &str) -> Option<Scene> {
+    let taken = super::listed::take(text)?;
+    let mut scene: Scene = toml::from_str(&taken.text).ok()?;
+    for (key, numbers) in taken.lists {
+        let slot = match key {
+            "separations" => &mut scene.program.separations,
+            _ => &mut scene.program.loads,
+        };
+        if !slot.as_ref().is_some_and(Vec::is_empty) {
+            return None;
+        }
+        *slot = Some(numbers);
+    }
+    Some(scene)
 }
 
 /// The table whose header is on line `line_no` (1-based) or the last one
