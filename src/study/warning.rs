@@ -320,8 +320,8 @@ impl Warning {
 }
 
 impl fmt::Display for Warning {
-    // Over 100 lines, kept whole: one match over the kinds of warning, each
-    // arm its sentence as the study layer wrote it before it was typed.
+    // One match over the kinds of warning, each arm its sentence as the
+    // study layer wrote it before it was typed (the longest in functions).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Warning::Validity(finding) => write!(f, "{finding}"),
@@ -371,40 +371,8 @@ impl fmt::Display for Warning {
                 error,
                 reference,
                 auto,
-            } => {
-                let advice = if *auto {
-                    "law.kind = \"calibrated\" uses the full-solver law"
-                } else {
-                    "law.kind = \"calibrated\" (or \"auto\") uses the full-solver law"
-                };
-                let reference =
-                    reference.map_or(String::new(), |r| format!(" ({r:.4e} {})", output.unit()));
-                write!(
-                    f,
-                    "model error: the {} of law {law} differs by {:.1} % from the full \
-                     Lennard-Jones solver's law on this surface{reference}; {advice}",
-                    output.name(),
-                    100.0 * error,
-                )
-            }
-            Warning::MapModelError {
-                quantity,
-                key,
-                difference,
-                pressure,
-                state,
-                states,
-                limit,
-                beyond,
-            } => write!(
-                f,
-                "model error: GW's {quantity} on this map differs from the exact elastic \
-                 solution by {:+.1} % at p = {pressure:.4e} Pa (state {} of {states}; beyond \
-                 {:.0} % at {beyond} of {states} states, {key})",
-                100.0 * difference,
-                state + 1,
-                100.0 * limit,
-            ),
+            } => model_error(f, *output, law, *error, *reference, *auto),
+            Warning::MapModelError { .. } => map_model_error(f, self),
             Warning::MapPullOff {
                 difference,
                 gw,
@@ -423,60 +391,10 @@ impl fmt::Display for Warning {
                  pulled off within the program, and the true pull-off lies further out (start \
                  further out, or leave start_separation unset for the law's reach)"
             ),
-            Warning::PopulationDisagrees {
-                integral,
-                carriers,
-                summits,
-                mean,
-                standard_error,
-                p05,
-                p95,
-                populations,
-            } => {
-                let integral_text = match integral {
-                    Some(p) => {
-                        format!("the integral gives {p:.3e} N, the minimum of the mean load curve")
-                    }
-                    None => "the integral's mean load is never tensile on retraction".into(),
-                };
-                let carriers = match carriers {
-                    Some(c) => {
-                        format!("only {c:.3} summits carry the tension at the integral's pull-off")
-                    }
-                    None => "no summit carries a tensile mean load".into(),
-                };
-                write!(
-                    f,
-                    "pull-off: {integral_text}; one switch of {summits} summits pulls off at \
-                     {mean:.3e} N on average (standard error {standard_error:.1e} N; 5 %-95 %: \
-                     {p05:.3e} .. {p95:.3e} N over {populations} populations): {carriers}, so \
-                     each switch's pull-off is that of its own highest summits, not of the mean \
-                     surface"
-                )
+            Warning::PopulationDisagrees { .. } => population_disagrees(f, self),
+            Warning::PopulationIntervals { .. } | Warning::PopulationConfidence { .. } => {
+                population_quantiles(f, self)
             }
-            Warning::PopulationIntervals {
-                populations,
-                confidence,
-                needed,
-            } => write!(
-                f,
-                "pull-off population: {populations} populations are too few for a {:.0} % \
-                 interval of the 5 % and 95 % quantiles (p05_interval_N, p95_interval_N are \
-                 null; {needed} are needed, montecarlo.seeds)",
-                100.0 * confidence
-            ),
-            Warning::PopulationConfidence {
-                confidence,
-                populations,
-                needed,
-            } => write!(
-                f,
-                "pull-off population: switch.confidence = {confidence} asks for the pull-off only \
-                 {:.3} % of switches exceed, but {populations} populations cannot resolve it (at \
-                 least {needed:.0} are needed): its quantile is interpolated between the two most \
-                 tensile pull-offs drawn, not resolved",
-                100.0 * (1.0 - confidence)
-            ),
             Warning::SpotsMerged { merged, spots } => write!(
                 f,
                 "montecarlo spots: {merged} spots overlapped others at their random positions and \
@@ -502,6 +420,124 @@ impl fmt::Display for Warning {
             ),
             Warning::RoughSphere(w) => write!(f, "rough sphere at the closest approach: {w}"),
         }
+    }
+}
+
+/// [`Warning::ModelError`]'s sentence.
+fn model_error(
+    f: &mut fmt::Formatter<'_>,
+    output: ModelErrorOutput,
+    law: &str,
+    error: f64,
+    reference: Option<f64>,
+    auto: bool,
+) -> fmt::Result {
+    let advice = if auto {
+        "law.kind = \"calibrated\" uses the full-solver law"
+    } else {
+        "law.kind = \"calibrated\" (or \"auto\") uses the full-solver law"
+    };
+    let reference = reference.map_or(String::new(), |r| format!(" ({r:.4e} {})", output.unit()));
+    write!(
+        f,
+        "model error: the {} of law {law} differs by {:.1} % from the full \
+         Lennard-Jones solver's law on this surface{reference}; {advice}",
+        output.name(),
+        100.0 * error,
+    )
+}
+
+/// [`Warning::MapModelError`]'s sentence (nothing for another kind).
+fn map_model_error(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
+    let Warning::MapModelError {
+        quantity,
+        key,
+        difference,
+        pressure,
+        state,
+        states,
+        limit,
+        beyond,
+    } = w
+    else {
+        return Ok(());
+    };
+    write!(
+        f,
+        "model error: GW's {quantity} on this map differs from the exact elastic \
+                 solution by {:+.1} % at p = {pressure:.4e} Pa (state {} of {states}; beyond \
+                 {:.0} % at {beyond} of {states} states, {key})",
+        100.0 * difference,
+        state + 1,
+        100.0 * limit,
+    )
+}
+
+/// [`Warning::PopulationDisagrees`]'s sentence (nothing for another kind).
+fn population_disagrees(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
+    let Warning::PopulationDisagrees {
+        integral,
+        carriers,
+        summits,
+        mean,
+        standard_error,
+        p05,
+        p95,
+        populations,
+    } = w
+    else {
+        return Ok(());
+    };
+    let integral_text = match integral {
+        Some(p) => {
+            format!("the integral gives {p:.3e} N, the minimum of the mean load curve")
+        }
+        None => "the integral's mean load is never tensile on retraction".into(),
+    };
+    let carriers = match carriers {
+        Some(c) => {
+            format!("only {c:.3} summits carry the tension at the integral's pull-off")
+        }
+        None => "no summit carries a tensile mean load".into(),
+    };
+    write!(
+        f,
+        "pull-off: {integral_text}; one switch of {summits} summits pulls off at \
+                     {mean:.3e} N on average (standard error {standard_error:.1e} N; 5 %-95 %: \
+                     {p05:.3e} .. {p95:.3e} N over {populations} populations): {carriers}, so \
+                     each switch's pull-off is that of its own highest summits, not of the mean \
+                     surface"
+    )
+}
+
+/// [`Warning::PopulationIntervals`]' and [`Warning::PopulationConfidence`]'s
+/// sentences (nothing for another kind).
+fn population_quantiles(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
+    match w {
+        Warning::PopulationIntervals {
+            populations,
+            confidence,
+            needed,
+        } => write!(
+            f,
+            "pull-off population: {populations} populations are too few for a {:.0} % \
+                 interval of the 5 % and 95 % quantiles (p05_interval_N, p95_interval_N are \
+                 null; {needed} are needed, montecarlo.seeds)",
+            100.0 * confidence
+        ),
+        Warning::PopulationConfidence {
+            confidence,
+            populations,
+            needed,
+        } => write!(
+            f,
+            "pull-off population: switch.confidence = {confidence} asks for the pull-off only \
+                 {:.3} % of switches exceed, but {populations} populations cannot resolve it (at \
+                 least {needed:.0} are needed): its quantile is interpolated between the two most \
+                 tensile pull-offs drawn, not resolved",
+            100.0 * (1.0 - confidence)
+        ),
+        _ => Ok(()),
     }
 }
 
