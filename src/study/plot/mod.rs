@@ -21,6 +21,9 @@ use plotters::coord::ranged1d::Ranged;
 use plotters::prelude::*;
 use std::path::Path;
 
+/// Marker polygons written after the chart: (placeholder, SVG text) pairs.
+type Placeholders = Vec<(String, String)>;
+
 /// A chart's plotting context: an SVG drawing with both axes [`Axis`].
 type Plotted<'a> = ChartContext<'a, SVGBackend<'a>, Cartesian2d<Axis, Axis>>;
 
@@ -245,7 +248,7 @@ impl Chart {
         i: usize,
         series: &Series,
         (x, y): (&Axis, &Axis),
-        (seen, markers): (&mut Vec<(f64, f64)>, &mut Vec<(String, String)>),
+        (seen, markers): (&mut Vec<(f64, f64)>, &mut Placeholders),
         fail: &dyn Fn(String) -> Error,
     ) -> Result<()> {
         let s = frame::SCALE as i32;

@@ -52,9 +52,7 @@ pub(super) fn take(text: &str) -> Option<Taken> {
         }
         // The list from its `[` to its `]`, possibly over several lines.
         let open = start + (line.len() - line.trim_start().len()) + (t.len() - after.len());
-        let Some(close_rel) = text[open..].find(']') else {
-            return None;
-        };
+        let close_rel = text[open..].find(']')?;
         let close = open + close_rel;
         let Some(numbers) = floats(&text[open + 1..close]) else {
             continue;
