@@ -25,6 +25,7 @@
 //! [`PlanMode::EverythingOn`] switches every skip off; the tests and the
 //! report compare the two to show that skipping pays and costs nothing.
 
+mod auto;
 mod budget;
 mod build;
 mod decision;

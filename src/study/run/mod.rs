@@ -325,7 +325,7 @@ impl Plan {
         let results = self
             .run_unmapped(progress)
             .map_err(|e| crate::study::scene::map_derived(&self.scene, e))?;
-        let replanned = match self.auto_replanned(&results) {
+        let replanned = match self.auto_replanned(|rtol| auto::missed(&results, rtol)) {
             Ok(Some(plan)) => plan,
             Ok(None) => return Ok(results),
             Err(e) => return Ok(auto_failed(results, &e)),
