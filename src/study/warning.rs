@@ -465,8 +465,8 @@ fn map_model_error(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
     write!(
         f,
         "model error: GW's {quantity} on this map differs from the exact elastic \
-                 solution by {:+.1} % at p = {pressure:.4e} Pa (state {} of {states}; beyond \
-                 {:.0} % at {beyond} of {states} states, {key})",
+         solution by {:+.1} % at p = {pressure:.4e} Pa (state {} of {states}; beyond \
+         {:.0} % at {beyond} of {states} states, {key})",
         100.0 * difference,
         state + 1,
         100.0 * limit,
@@ -503,10 +503,10 @@ fn population_disagrees(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result 
     write!(
         f,
         "pull-off: {integral_text}; one switch of {summits} summits pulls off at \
-                     {mean:.3e} N on average (standard error {standard_error:.1e} N; 5 %-95 %: \
-                     {p05:.3e} .. {p95:.3e} N over {populations} populations): {carriers}, so \
-                     each switch's pull-off is that of its own highest summits, not of the mean \
-                     surface"
+         {mean:.3e} N on average (standard error {standard_error:.1e} N; 5 %-95 %: \
+         {p05:.3e} .. {p95:.3e} N over {populations} populations): {carriers}, so \
+         each switch's pull-off is that of its own highest summits, not of the mean \
+         surface"
     )
 }
 
@@ -521,8 +521,8 @@ fn population_quantiles(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result 
         } => write!(
             f,
             "pull-off population: {populations} populations are too few for a {:.0} % \
-                 interval of the 5 % and 95 % quantiles (p05_interval_N, p95_interval_N are \
-                 null; {needed} are needed, montecarlo.seeds)",
+             interval of the 5 % and 95 % quantiles (p05_interval_N, p95_interval_N are \
+             null; {needed} are needed, montecarlo.seeds)",
             100.0 * confidence
         ),
         Warning::PopulationConfidence {
@@ -532,9 +532,9 @@ fn population_quantiles(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result 
         } => write!(
             f,
             "pull-off population: switch.confidence = {confidence} asks for the pull-off only \
-                 {:.3} % of switches exceed, but {populations} populations cannot resolve it (at \
-                 least {needed:.0} are needed): its quantile is interpolated between the two most \
-                 tensile pull-offs drawn, not resolved",
+             {:.3} % of switches exceed, but {populations} populations cannot resolve it (at \
+             least {needed:.0} are needed): its quantile is interpolated between the two most \
+             tensile pull-offs drawn, not resolved",
             100.0 * (1.0 - confidence)
         ),
         _ => Ok(()),
