@@ -38,6 +38,9 @@ pub(crate) enum Input<'a> {
     Plain(&'a [f64]),
     /// Scaled in place by the factor, then transformed.
     Scaled(&'a mut [f64], f64),
+    /// The first field where the second (the mask) is positive, 0
+    /// elsewhere: `x (m > 0)`, read without a masked copy.
+    Masked(&'a [f64], &'a [f64]),
 }
 
 /// One task's scratch: a real row, the transforms' scratch and a block of
@@ -171,11 +174,21 @@ impl Fft2 {
         let nh = self.half_cols();
         let (head, tail) = work.split_at_mut(in_rows * nh);
         self.for_chunks(tail, nh * ROWS_PER_TASK, |_, chunk| chunk.fill(ZERO));
-        let transform = |xs: &[f64], out: &mut [Complex<f64>]| {
+        // `ms`: the mask of `Input::Masked` (the same rows as `xs`).
+        let transform = |xs: &[f64], ms: Option<&[f64]>, out: &mut [Complex<f64>]| {
             let mut guard = self.scratch();
             let s = guard.s.as_mut().expect("taken from the pool");
-            for (xr, o) in xs.chunks(in_cols).zip(out.chunks_mut(nh)) {
-                s.re[..in_cols].copy_from_slice(xr);
+            for (i, (xr, o)) in xs.chunks(in_cols).zip(out.chunks_mut(nh)).enumerate() {
+                match ms {
+                    None => s.re[..in_cols].copy_from_slice(xr),
+                    Some(m) => {
+                        let mr = &m[i * in_cols..(i + 1) * in_cols];
+                        for ((d, x), m) in s.re[..in_cols].iter_mut().zip(xr).zip(mr) {
+                            // Branch-free: the contact pattern is random.
+                            *d = x * f64::from(u8::from(*m > 0.0));
+                        }
+                    }
+                }
                 s.re[in_cols..].fill(0.0);
                 // Lengths match by construction.
                 let _ = self.r2c.process_with_scratch(&mut s.re, o, &mut s.cs);
@@ -187,15 +200,25 @@ impl Fft2 {
                 if self.parallel() {
                     x.par_chunks(xa)
                         .zip(head.par_chunks_mut(wa))
-                        .for_each(|(xs, o)| transform(xs, o));
+                        .for_each(|(xs, o)| transform(xs, None, o));
                 } else {
-                    transform(x, head);
+                    transform(x, None, head);
+                }
+            }
+            Input::Masked(x, m) => {
+                if self.parallel() {
+                    x.par_chunks(xa)
+                        .zip(m.par_chunks(xa))
+                        .zip(head.par_chunks_mut(wa))
+                        .for_each(|((xs, ms), o)| transform(xs, Some(ms), o));
+                } else {
+                    transform(x, Some(m), head);
                 }
             }
             Input::Scaled(x, f) => {
                 let scaled = |xs: &mut [f64], o: &mut [Complex<f64>]| {
                     xs.iter_mut().for_each(|v| *v *= f);
-                    transform(xs, o);
+                    transform(xs, None, o);
                 };
                 if self.parallel() {
                     x.par_chunks_mut(xa)

@@ -6,7 +6,8 @@
 //! - [`operator`]: the half-space compliance by FFT, periodic or padded
 //!   (non-periodic).
 //! - `contact`: load control without adhesion, Polonsky & Keer's (1999)
-//!   constrained conjugate gradients in the pressure.
+//!   constrained conjugate gradients in the pressure, preconditioned by
+//!   the stiffness `K^-1` on periodic maps.
 //! - `full_contact`: load control on a periodic map at and near full
 //!   contact: the exact full-contact state `p = K^-1 h + P` at once when
 //!   every pixel of it is pressed, else, when few are not, conjugate

@@ -205,6 +205,17 @@ impl HalfSpace {
         self.convolve(Input::Plain(u), p, true);
     }
 
+    /// `p = K^-1 (u (mask > 0))`: the stiffness applied to `u` where
+    /// `mask` is positive and to 0 elsewhere (periodic only; zero-mean
+    /// `p`), without a masked copy of `u`.
+    ///
+    /// # Panics
+    /// On a padded operator (an internal misuse).
+    pub(crate) fn pressure_masked(&self, u: &[f64], mask: &[f64], p: &mut [f64]) {
+        assert!(self.periodic, "stiffness of a padded half-space");
+        self.convolve(Input::Masked(u, mask), p, true);
+    }
+
     fn convolve(&self, x: Input<'_>, y: &mut [f64], stiff: bool) {
         let mut guard = self.buffers.lock().unwrap_or_else(|e| e.into_inner());
         let b = &mut *guard;
