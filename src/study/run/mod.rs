@@ -87,11 +87,9 @@ pub struct Results {
 }
 
 /// `results` of an `auto` law that missed `rtol` on the surface, kept
-/// because the full-solver law's run failed with `e`.
-fn auto_failed(mut results: Results, e: &crate::Error) -> Results {
-    results.warnings.push(Warning::AutoLawFailed {
-        error: e.to_string(),
-    });
+/// because the full-solver law's run failed with `error`.
+fn auto_failed(mut results: Results, error: crate::Error) -> Results {
+    results.warnings.push(Warning::AutoLawFailed { error });
     results
 }
 
@@ -328,14 +326,14 @@ impl Plan {
         let replanned = match self.auto_replanned(|rtol| auto::missed(&results, rtol)) {
             Ok(Some(plan)) => plan,
             Ok(None) => return Ok(results),
-            Err(e) => return Ok(auto_failed(results, &e)),
+            Err(e) => return Ok(auto_failed(results, e)),
         };
         match replanned.run_unmapped(progress) {
             Ok(mut r) => {
                 r.replanned = Some(Box::new(replanned));
                 Ok(r)
             }
-            Err(e) => Ok(auto_failed(results, &e)),
+            Err(e) => Ok(auto_failed(results, e)),
         }
     }
 
