@@ -461,7 +461,7 @@ impl Plan {
             hysteresis_energy,
         )?;
         model_error.measure_map(self, closest, pull_off.map(|p| p.load), max_load, t0)?;
-        warnings.extend(model_error.warnings(&self.law.name, self.scene.law.kind));
+        warnings.extend(model_error.warnings(&self.law.name, self.advises_calibrated_only()));
         if let Some(p) = pull_off.filter(|p| p.at_start) {
             warnings.push(Warning::PullOffAtStart {
                 separation: p.separation,
@@ -586,7 +586,7 @@ impl Plan {
             let loads: Vec<Option<f64>> = r.listed.iter().map(|l| l.state.load()).collect();
             let separations: Vec<f64> = steps.iter().map(|&(d, _)| d).collect();
             m.measure_listed(self, &separations, &loads);
-            let before = m.warnings(&self.law.name, self.scene.law.kind);
+            let before = m.warnings(&self.law.name, self.advises_calibrated_only());
             let listed_state = |w: &Warning| {
                 matches!(
                     w,
