@@ -3,7 +3,7 @@
 //! surface`) and Persson (from the map's radial spectrum) at the same mean
 //! pressures.
 
-use super::criteria::CriteriaOutput;
+use super::criteria::{Assessment, CriteriaOutput};
 use super::persson::positive_values;
 use super::wet_map::{wet_states, Liquid, WetOutput};
 use super::{param, CommandResult};
@@ -299,22 +299,11 @@ pub struct BemOutput {
     pub gamma: f64,
     /// Wall-clock time of the solves (s).
     pub solve_wall_s: f64,
-    /// The numerical error of the outputs, in words.
-    pub numerical_error: String,
-    /// The model error of the outputs, in words.
-    pub model_error: String,
-    /// Results outside a model's validity.
-    pub warnings: Vec<String>,
-    /// With an adhesion: the stickiness criteria of the map
-    /// ([`crate::stickiness`]: Pastewka–Robbins with its validity,
-    /// Persson–Tosatti, the Tabor parameter at `R = 1/h''`, Müser's
-    /// `mu_rho`) and the map's scales they use.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub adhesion_criteria: Option<CriteriaOutput>,
-    /// With a liquid: the capillary attraction of every state, flooded
-    /// and per-summit, with the regime.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub capillary: Option<WetOutput>,
+    /// The errors in words, the warnings, the map's stickiness criteria
+    /// with an adhesion, and with a liquid the capillary attraction of every
+    /// state, flooded and per-summit; its keys inline.
+    #[serde(flatten)]
+    pub assessment: Assessment<WetOutput>,
 }
 
 impl BemInput {
@@ -375,9 +364,10 @@ pub fn bem(map: &HeightMap, args: &BemInput) -> CommandResult<BemOutput> {
         let persson = crate::spectrum::radial::radial_psd_xy(map, pixels, args.periodic)
             .and_then(|psd| crate::persson::Persson::new(psd, args.estar, args.gamma))
             .ok();
-        out.capillary = wet_states(l, &cmp, persson.as_ref(), (map.rows(), map.cols()), pixels)?;
-        if let Some(w) = &out.capillary {
-            out.warnings.extend(super::wet_map::warnings(w));
+        let a = &mut out.assessment;
+        a.capillary = wet_states(l, &cmp, persson.as_ref(), (map.rows(), map.cols()), pixels)?;
+        if let Some(w) = &a.capillary {
+            a.warnings.extend(super::wet_map::warnings(w));
         }
     }
     if let Some(dir) = &args.out {
@@ -555,23 +545,25 @@ fn output(map: &HeightMap, args: &BemInput, cmp: &Comparison, memory: usize) -> 
         memory_estimate_bytes: memory,
         gamma: args.gamma,
         solve_wall_s: cmp.solve_wall_s,
-        numerical_error: format!(
-            "{}boundary elements: each state converged to the stated residual (< {:e}; gap residual over h_rms under load control, KKT residual over the full-contact RMS pressure under gap control); on a 256^2 self-affine map the area fraction moves by < 1e-5 from 1e-8 to 1e-12; discretisation: Hertz on 512^2 within 0.2 % (docs/performance.md). Persson: quadrature 1e-12 relative on the map's radial spectrum",
-            unconverged_note(cmp),
-            args.tolerance
-        ),
-        model_error: measured_model_error(cmp),
-        warnings: cmp
-            .warnings
-            .iter()
-            .map(ToString::to_string)
-            .chain(cmp.criteria.iter().flat_map(|c| c.warnings(true)))
-            .collect(),
-        adhesion_criteria: cmp.criteria.zip(cmp.roughness).map(|(c, r)| CriteriaOutput {
-            criteria: c,
-            roughness: r.into(),
-        }),
-        capillary: None,
+        assessment: Assessment {
+            numerical_error: format!(
+                "{}boundary elements: each state converged to the stated residual (< {:e}; gap residual over h_rms under load control, KKT residual over the full-contact RMS pressure under gap control); on a 256^2 self-affine map the area fraction moves by < 1e-5 from 1e-8 to 1e-12; discretisation: Hertz on 512^2 within 0.2 % (docs/performance.md). Persson: quadrature 1e-12 relative on the map's radial spectrum",
+                unconverged_note(cmp),
+                args.tolerance
+            ),
+            model_error: measured_model_error(cmp),
+            warnings: cmp
+                .warnings
+                .iter()
+                .map(ToString::to_string)
+                .chain(cmp.criteria.iter().flat_map(|c| c.warnings(true)))
+                .collect(),
+            adhesion_criteria: cmp.criteria.zip(cmp.roughness).map(|(c, r)| CriteriaOutput {
+                criteria: c,
+                roughness: r.into(),
+            }),
+            capillary: None,
+        },
     }
 }
 
@@ -733,10 +725,10 @@ fn print_table(o: &BemOutput) -> String {
         "(iter, residual, conv: the solver's iterations, final residual and whether it fell below the tolerance; dA/A, du/u: the model's area fraction and mean gap against the exact ones, model/exact - 1)"
     );
     full_contact_lines(o, &mut t);
-    if let Some(c) = &o.adhesion_criteria {
+    if let Some(c) = &o.assessment.adhesion_criteria {
         t.push_str(&c.criteria.text());
     }
-    if let Some(w) = &o.capillary {
+    if let Some(w) = &o.assessment.capillary {
         t.push_str(&super::wet_map::text(w));
     }
     if let Some(h) = o.hardness {
@@ -757,11 +749,7 @@ fn print_table(o: &BemOutput) -> String {
             );
         }
     }
-    for w in &o.warnings {
-        let _ = writeln!(t, "warning: {w}");
-    }
-    let _ = writeln!(t, "numerical error: {}", o.numerical_error);
-    let _ = writeln!(t, "model error: {}", o.model_error);
+    o.assessment.closing_lines(&mut t);
     t
 }
 

@@ -44,6 +44,46 @@ impl From<Roughness> for RoughnessOutput {
     }
 }
 
+/// What `asperity bem` and `asperity persson` give after their numbers: the
+/// outputs' numerical and model errors in words, the warnings, and, when
+/// asked, the stickiness criteria and the capillary attraction (`C`: on the
+/// map's exact gap fields for `bem`, [`super::wet_map::WetOutput`]; on
+/// Persson's gap distribution for `persson`,
+/// [`super::wet_persson::PerssonWetOutput`]). Its keys stand inline in the
+/// output, in this order.
+#[derive(Serialize, Debug, Clone)]
+pub struct Assessment<C> {
+    /// The numerical error of the outputs, in words.
+    pub numerical_error: String,
+    /// The model error of the outputs, in words.
+    pub model_error: String,
+    /// Results outside a model's validity.
+    pub warnings: Vec<String>,
+    /// With an adhesion energy and range: the stickiness criteria
+    /// ([`crate::stickiness`]: Pastewka–Robbins with its validity,
+    /// Persson–Tosatti, the Tabor parameter at `R = 1/h''`, Müser's
+    /// `mu_rho`) and the scales they use.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub adhesion_criteria: Option<CriteriaOutput>,
+    /// With a liquid: the flooded capillary attraction, per-summit menisci
+    /// beside it, and the regime.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub capillary: Option<C>,
+}
+
+impl<C> Assessment<C> {
+    /// The text's last lines: each warning, then the numerical and the
+    /// model error.
+    pub fn closing_lines(&self, t: &mut String) {
+        use std::fmt::Write as _;
+        for w in &self.warnings {
+            let _ = writeln!(t, "warning: {w}");
+        }
+        let _ = writeln!(t, "numerical error: {}", self.numerical_error);
+        let _ = writeln!(t, "model error: {}", self.model_error);
+    }
+}
+
 /// The stickiness criteria of `spectrum` (contact modulus `estar`, Pa)
 /// with the adhesion `(adhesion_energy, adhesion_range)` (none without
 /// both), their warnings appended to `warnings`.

@@ -123,7 +123,9 @@ pub fn heating(input: &HeatingInput) -> CommandResult<(HeatingOutput, f64)> {
             HeatingOutput::Temperature {
                 max_temperature: heating.peak_temperature(u).map_err(rename)?,
                 condition: heating.condition(u).map_err(rename)?,
-                warnings: heating.warning(u).map_err(rename)?.into_iter().collect(),
+                warnings: (heating.warning(u).map_err(rename)?.iter())
+                    .map(ToString::to_string)
+                    .collect(),
             }
         }
         HeatingTarget::MaxTemperature(t) => HeatingOutput::Voltage {

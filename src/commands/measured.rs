@@ -237,16 +237,19 @@ fn refuse_unit(unit: Option<HeightUnit>, format: Format, shown: &str) -> Command
 }
 
 impl MeasuredMap {
-    /// The pixel sizes `(dx, dy)` (m) to use and the warnings on the way
+    /// The pixel sizes `(dx, dy)` (m) to use and the warning on the way
     /// ([`topography::pixel_sizes`] with `{pixel_size}`): the file's, or
     /// `given` (square) when the file has none; given anyway, it must agree
     /// with the file's to [`PIXEL_AGREEMENT`] relative, else it wins with a
-    /// warning naming both.
+    /// warning naming both ([`topography::PixelSizeMismatch`]).
     ///
     /// # Errors
     /// [`Error::Invalid`] naming `{pixel_size}` when neither gives one;
     /// out of range when given non-positive.
-    pub fn pixels(&self, given: Option<f64>) -> CommandResult<((f64, f64), Vec<String>)> {
+    pub fn pixels(
+        &self,
+        given: Option<f64>,
+    ) -> CommandResult<((f64, f64), Option<topography::PixelSizeMismatch>)> {
         topography::pixel_sizes(self.file_pixels, given, &param("pixel_size"), self.format)
     }
 
@@ -276,7 +279,7 @@ pub fn plane_rms(map: &HeightMap, pixels: (f64, f64), periodic: bool) -> f64 {
 
 /// Warnings that a unit is probably wrong ([`topography::unit_warnings`],
 /// pointing at `{height_unit}` and `{scale}`).
-pub fn unit_warnings(rms_height: f64, pixels: (f64, f64)) -> Vec<String> {
+pub fn unit_warnings(rms_height: f64, pixels: (f64, f64)) -> Vec<topography::UnitWarning> {
     topography::unit_warnings(rms_height, pixels, &param("height_unit"), &param("scale"))
 }
 
@@ -326,18 +329,21 @@ mod tests {
             periodic: false,
             missing: 0,
         };
-        assert_eq!(m.pixels(None).unwrap(), ((1e-7, 2e-7), vec![]));
+        assert_eq!(m.pixels(None).unwrap(), ((1e-7, 2e-7), None));
         let (p, w) = m.pixels(Some(1e-7)).unwrap();
         assert_eq!(p, (1e-7, 1e-7));
-        assert!(w[0].contains("disagrees"), "{w:?}");
+        let w = w.unwrap();
+        assert_eq!((w.given, w.file), (1e-7, (1e-7, 2e-7)));
+        assert!(w.to_string().contains("disagrees"), "{w:?}");
         m.file_pixels = Some((1e-7, 1e-7));
-        assert_eq!(m.pixels(Some(1e-7 * (1.0 + 1e-10))).unwrap().1.len(), 0);
+        assert_eq!(m.pixels(Some(1e-7 * (1.0 + 1e-10))).unwrap().1, None);
         m.file_pixels = None;
         let e = m.pixels(None).unwrap_err();
         assert_eq!(e.field(), Some("{pixel_size}"));
-        assert!(unit_warnings(2e-5, (1e-7, 1e-7))[0].contains("um"));
-        assert!(unit_warnings(1e-8, (5e-3, 5e-3))[0].contains("above 1 mm"));
-        assert!(unit_warnings(1e-8, (1e-11, 1e-7))[0].contains("below 0.1 nm"));
+        let first = |h, p| unit_warnings(h, p)[0].to_string();
+        assert!(first(2e-5, (1e-7, 1e-7)).contains("um"));
+        assert!(first(1e-8, (5e-3, 5e-3)).contains("above 1 mm"));
+        assert!(first(1e-8, (1e-11, 1e-7)).contains("below 0.1 nm"));
         assert!(unit_warnings(1e-8, (1e-7, 1e-7)).is_empty());
     }
 }

@@ -1,7 +1,7 @@
 //! `asperity persson`: Persson's contact theory on an analytic self-affine
 //! spectrum, with GW on the same spectrum beside it.
 
-use super::criteria::{of_spectrum, CriteriaOutput};
+use super::criteria::{of_spectrum, Assessment};
 use super::wet_map::Liquid;
 use super::wet_persson::{persson_wet, PerssonWetOutput};
 use super::{param, CommandResult};
@@ -141,19 +141,11 @@ pub struct PerssonOutput {
     pub persson_tosatti_number: Option<f64>,
     /// GW on the same spectrum.
     pub gw: PerssonGw,
-    /// The numerical error of the outputs, in words.
-    pub numerical_error: String,
-    /// The model error of the outputs, in words.
-    pub model_error: String,
-    /// Results outside a model's validity.
-    pub warnings: Vec<String>,
-    /// With an adhesion energy and range: the stickiness criteria.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub adhesion_criteria: Option<CriteriaOutput>,
-    /// With a liquid: the flooded capillary attraction from Persson's gap
-    /// distribution, per-summit menisci beside it, and the regime.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub capillary: Option<PerssonWetOutput>,
+    /// The errors in words, the warnings, the stickiness criteria with an
+    /// adhesion energy and range, and with a liquid the flooded capillary
+    /// attraction from Persson's gap distribution; its keys inline.
+    #[serde(flatten)]
+    pub assessment: Assessment<PerssonWetOutput>,
 }
 
 /// Persson's theory and GW on a self-affine spectrum (`asperity persson`).
@@ -250,16 +242,15 @@ pub fn persson(input: &PerssonInput) -> CommandResult<PerssonOutput> {
             sigma_m: gw.sigma,
             mean_summit_height_m: gw.mean_summit_height,
         },
-        numerical_error: format!(
-            "Persson: area in closed form (erf, ~1e-15); mean gap by adaptive Gauss-Kronrod to {QUAD_RTOL:e} relative (largest estimate here {worst_quad:.1e}); both checked against mpmath to 1e-9 in tests/it/persson.rs. GW: closed-form F_n, ~1e-15"
-        ),
-        model_error: format!(
-            "{MEASURED_STATEMENT} Here gamma = {}.",
-            input.gamma
-        ),
-        warnings,
-        adhesion_criteria,
-        capillary,
+        assessment: Assessment {
+            numerical_error: format!(
+                "Persson: area in closed form (erf, ~1e-15); mean gap by adaptive Gauss-Kronrod to {QUAD_RTOL:e} relative (largest estimate here {worst_quad:.1e}); both checked against mpmath to 1e-9 in tests/it/persson.rs. GW: closed-form F_n, ~1e-15"
+            ),
+            model_error: format!("{MEASURED_STATEMENT} Here gamma = {}.", input.gamma),
+            warnings,
+            adhesion_criteria,
+            capillary,
+        },
     })
 }
 

@@ -61,16 +61,12 @@ fn print_table(o: &PerssonOutput) -> String {
         t,
         "(GW/P A, GW/P u: GW's area fraction and mean gap against Persson's, GW/Persson - 1)"
     );
-    if let Some(c) = &o.adhesion_criteria {
+    if let Some(c) = &o.assessment.adhesion_criteria {
         t.push_str(&c.criteria.text());
     }
-    if let Some(c) = &o.capillary {
+    if let Some(c) = &o.assessment.capillary {
         t.push_str(&super::wet_persson::text(c));
     }
-    for w in &o.warnings {
-        let _ = writeln!(t, "warning: {w}");
-    }
-    let _ = writeln!(t, "numerical error: {}", o.numerical_error);
-    let _ = writeln!(t, "model error: {}", o.model_error);
+    o.assessment.closing_lines(&mut t);
     t
 }

@@ -49,6 +49,62 @@ pub enum SpotCondition {
     Molten,
 }
 
+/// A spot that softens or melts at its contact voltage
+/// ([`Heating::warning`]); `Display` words the warning.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SpotWarning {
+    /// Above the softening voltage: the spot softens and grows, so the
+    /// resistance at the load and the temperature from it no longer hold.
+    Softened {
+        /// The contact voltage (V).
+        voltage: f64,
+        /// The softening voltage (V).
+        softening_voltage: f64,
+        /// The softening temperature (K).
+        softening_temperature: f64,
+        /// Holm's peak temperature at `voltage` (K).
+        temperature: f64,
+    },
+    /// At or above the melting voltage: the spot melts; no temperature.
+    Molten {
+        /// The contact voltage (V).
+        voltage: f64,
+        /// The melting voltage (V).
+        melting_voltage: f64,
+        /// The melting temperature (K).
+        melting_temperature: f64,
+    },
+}
+
+impl std::fmt::Display for SpotWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SpotWarning::Softened {
+                voltage,
+                softening_voltage,
+                softening_temperature,
+                temperature,
+            } => write!(
+                f,
+                "the contact voltage {voltage:.4e} V is above the softening voltage \
+                 {softening_voltage:.4} V (softening temperature {softening_temperature} K): the \
+                 spot softens at {temperature:.1} K and grows, so the resistance at this load and \
+                 the temperature from it no longer hold"
+            ),
+            SpotWarning::Molten {
+                voltage,
+                melting_voltage,
+                melting_temperature,
+            } => write!(
+                f,
+                "the contact voltage {voltage:.4e} V is above the melting voltage \
+                 {melting_voltage:.4} V (melting temperature {melting_temperature} K): the spot \
+                 melts; Holm's relation gives no temperature above melting, so none is reported"
+            ),
+        }
+    }
+}
+
 /// Holm's phi-theta relation for a bulk temperature `T0`, with the
 /// softening and melting temperatures (K) of the spot's metal.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -168,29 +224,25 @@ impl Heating {
     }
 
     /// A warning for contact voltage `U >= 0` (V) when the spot softens or
-    /// melts: the voltage against the softening or melting voltage and
-    /// what it means; `None` for a solid spot.
+    /// melts ([`SpotWarning`]: the voltage against the softening or melting
+    /// voltage and what it means); `None` for a solid spot.
     ///
     /// # Errors
     /// As [`Heating::max_temperature`].
-    pub fn warning(&self, voltage: f64) -> Result<Option<String>> {
+    pub fn warning(&self, voltage: f64) -> Result<Option<SpotWarning>> {
         Ok(match self.condition(voltage)? {
             SpotCondition::Solid => None,
-            SpotCondition::Softened => Some(format!(
-                "the contact voltage {voltage:.4e} V is above the softening voltage {:.4} V \
-                 (softening temperature {} K): the spot softens at {:.1} K and grows, so the \
-                 resistance at this load and the temperature from it no longer hold",
-                self.softening_voltage(),
-                self.softening,
-                self.max_temperature(voltage)?
-            )),
-            SpotCondition::Molten => Some(format!(
-                "the contact voltage {voltage:.4e} V is above the melting voltage {:.4} V \
-                 (melting temperature {} K): the spot melts; Holm's relation gives no \
-                 temperature above melting, so none is reported",
-                self.melting_voltage(),
-                self.melting
-            )),
+            SpotCondition::Softened => Some(SpotWarning::Softened {
+                voltage,
+                softening_voltage: self.softening_voltage(),
+                softening_temperature: self.softening,
+                temperature: self.max_temperature(voltage)?,
+            }),
+            SpotCondition::Molten => Some(SpotWarning::Molten {
+                voltage,
+                melting_voltage: self.melting_voltage(),
+                melting_temperature: self.melting,
+            }),
         })
     }
 
@@ -285,11 +337,21 @@ mod tests {
         assert_eq!(h.condition(0.1).unwrap(), SpotCondition::Softened);
         assert_eq!(h.condition(10.0).unwrap(), SpotCondition::Molten);
         assert!(h.warning(0.05).unwrap().is_none());
-        assert!(h.warning(0.1).unwrap().unwrap().contains("softens"));
+        assert!(h
+            .warning(0.1)
+            .unwrap()
+            .unwrap()
+            .to_string()
+            .contains("softens"));
         // `heating --voltage 10` printed 31,991 K: no temperature now.
         assert!((h.max_temperature(10.0).unwrap() - 31_991.0).abs() < 1.0);
         assert_eq!(h.peak_temperature(10.0).unwrap(), None);
-        assert!(h.warning(10.0).unwrap().unwrap().contains("melts"));
+        assert!(h
+            .warning(10.0)
+            .unwrap()
+            .unwrap()
+            .to_string()
+            .contains("melts"));
         let below = h.peak_temperature(0.4).unwrap().unwrap();
         assert!(below < GOLD_MELTING_TEMPERATURE && below > 1300.0);
         // The inverse ends at melting.

@@ -31,7 +31,7 @@ pub mod spot;
 pub mod spots;
 pub mod switch;
 
-pub use heating::Heating;
+pub use heating::{Heating, SpotWarning};
 pub use interaction::{greenwood_mean_field, ContactResistance, Interaction, SpotSums, C_SQ};
 pub use observable::{ContactHeating, ResistanceObservables, SpotConductance};
 pub use sample::{population_spots, SampleResistance, EXACT_MAX_SPOTS};

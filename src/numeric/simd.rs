@@ -28,10 +28,33 @@ pub fn arch() -> pulp::Arch {
     })
 }
 
+/// An `ASPERITY_SIMD` value that was not followed: the value asked for and
+/// the instruction set the vector passes ran on instead. `Display` words the
+/// warning.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct IgnoredRequest {
+    /// The variable's value, as given.
+    pub wanted: String,
+    /// The set used ([`arch_name`]).
+    pub used: &'static str,
+}
+
+impl std::fmt::Display for IgnoredRequest {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{SIMD_VARIABLE}={} not followed (allowed: avx2, scalar, avx512, native, or \
+             unset for the widest set the CPU has): the vector passes ran on {} (the numbers are \
+             the same at every width, only the time differs)",
+            self.wanted, self.used
+        )
+    }
+}
+
 /// Why `ASPERITY_SIMD` was not followed, when it is set to a value that
 /// is not `avx2`, `scalar`, `avx512` or `native` (any case), or names a set
 /// the CPU lacks: the run then uses [`arch_name`]'s set, and says so.
-pub fn ignored_request() -> Option<String> {
+pub fn ignored_request() -> Option<IgnoredRequest> {
     let wanted = std::env::var(SIMD_VARIABLE).ok()?;
     let lower = wanted.to_ascii_lowercase();
     let followed = match lower.as_str() {
@@ -41,13 +64,9 @@ pub fn ignored_request() -> Option<String> {
         "" | "native" => return None,
         _ => false,
     };
-    (!followed).then(|| {
-        format!(
-            "{SIMD_VARIABLE}={wanted} not followed (allowed: avx2, scalar, avx512, native, or \
-             unset for the widest set the CPU has): the vector passes ran on {} (the numbers are the same \
-             at every width, only the time differs)",
-            arch_name()
-        )
+    (!followed).then(|| IgnoredRequest {
+        wanted,
+        used: arch_name(),
     })
 }
 

@@ -63,6 +63,7 @@ mod shifted_density;
 mod solve;
 mod table;
 pub mod units;
+mod warning;
 
 pub use gt::{GreenwoodTripp, GtPressure, GtState, MAX_MU, MIN_MU};
 pub use problem::{RoughSphere, SphereProfile};
@@ -71,3 +72,4 @@ pub use report::{
     RADIUS_RATIO_WARNING,
 };
 pub use solve::{Estimate, Shape, SolverOptions};
+pub use warning::SphereWarning;

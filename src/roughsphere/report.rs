@@ -4,6 +4,7 @@
 use super::problem::RoughSphere;
 use super::solve::{Estimate, Solved};
 use super::units::hertz_load_fraction_radius;
+use super::warning::SphereWarning;
 use crate::electrical::{
     ContactResistance, Interaction, ResistanceObservables, SpotResistance, SpotSums, C_SQ,
 };
@@ -112,8 +113,8 @@ pub struct SphereState {
     /// The model the numbers come from (its assumptions; the numerical
     /// error is in each [`Estimate`], the model's limits in `warnings`).
     pub model: String,
-    /// Numerical or model warnings.
-    pub warnings: Vec<String>,
+    /// Numerical or model warnings (serialised as their sentences).
+    pub warnings: Vec<SphereWarning>,
 }
 
 impl RoughSphere {
@@ -166,19 +167,15 @@ impl RoughSphere {
         let hertz_radius = (load.value > 0.0)
             .then(|| (3.0 * load.value * u.sphere_radius / (4.0 * u.contact_modulus)).cbrt());
         if !s.converged {
-            warnings.push(format!(
-                "mesh: the load's error estimate {:.1e} N is above the tolerance {:.0e} \
-                 (relative) at the node limit {}",
-                load.error, core.options.tolerance, core.options.max_nodes
-            ));
+            warnings.push(SphereWarning::Unconverged {
+                load_error: load.error,
+                tolerance: core.options.tolerance,
+                max_nodes: core.options.max_nodes,
+            });
         }
         if let Some(a) = radius_95 {
             if a.value > RADIUS_RATIO_WARNING * u.sphere_radius {
-                warnings.push(format!(
-                    "model: the contact radius {:.3e} m exceeds {RADIUS_RATIO_WARNING} R: the \
-                     half-space and small-slope assumptions are stretched",
-                    a.value
-                ));
+                warnings.push(SphereWarning::ContactRadius { radius: a.value });
             }
         }
         let bottom = core.law.bottom();
@@ -186,10 +183,7 @@ impl RoughSphere {
             .iter()
             .any(|lv| lv.sol.h.iter().any(|h| *h < bottom))
         {
-            warnings.push(format!(
-                "model: local gaps fall below {bottom:.2} sigma, under every represented summit; \
-                 the local law is extrapolated there"
-            ));
+            warnings.push(SphereWarning::GapsBelowSummits { bottom });
         }
         let pressure = query
             .radii
@@ -247,7 +241,7 @@ impl RoughSphere {
         &self,
         s: &Solved,
         query: &SphereQuery,
-        warnings: &mut Vec<String>,
+        warnings: &mut Vec<SphereWarning>,
     ) -> Result<(Option<Estimate>, Option<Estimate>, Option<BumpResistance>)> {
         let (mut real_area, mut contacts, mut resistance) = (None, None, None);
         let u = self.units();
@@ -297,10 +291,7 @@ impl RoughSphere {
                 let cr = ContactResistance::from_sums(&sums, &e.spot, e.interaction, side);
                 resistance = Some(bump_resistance(&cr, &g, &inv, side));
                 if cr.interaction_skipped {
-                    warnings.push(
-                        "electrical: fewer than 2 contacts: Greenwood's interaction left out"
-                            .into(),
-                    );
+                    warnings.push(SphereWarning::InteractionSkipped);
                 }
             }
             if let Some(frac) = self.central_area_fraction(s)? {
@@ -309,20 +300,12 @@ impl RoughSphere {
                     // above 1 that sum is not a fraction of anything, and the
                     // bump's real area built on it is no result.
                     real_area = None;
-                    let cause = excess_area_cause(frac, self.central_hertz_fraction(s));
-                    warnings.push(format!(
-                        "model: the real-area fraction at the centre is {frac:.2}, above 1: \
-                         {cause}; GW's independent summits overlap there and their summed \
-                         areas are not a fraction, so the bump's real area is null; its \
-                         contacts and resistance count overlapping summits (a smaller load, \
-                         or a harder material, keeps the centre below 1)"
-                    ));
+                    warnings.push(SphereWarning::AreaAboveOne {
+                        fraction: frac,
+                        hertz: self.central_hertz_fraction(s),
+                    });
                 } else if frac > AREA_FRACTION_WARNING {
-                    warnings.push(format!(
-                        "model: the real-area fraction at the centre is {frac:.2} (> \
-                         {AREA_FRACTION_WARNING}): GW's independent summits overstate the \
-                         stiffness of the rough layer there"
-                    ));
+                    warnings.push(SphereWarning::AreaFraction { fraction: frac });
                 }
             }
         }
@@ -362,32 +345,6 @@ impl RoughSphere {
     }
 }
 
-/// What makes the central real-area fraction `frac` exceed 1, against the
-/// fraction `hertz` of elastic summits without adhesion on the same heights
-/// at the same gap. A summit's area is at most twice Hertz's at the same
-/// interference without adhesion (fully plastic, `2 pi R delta` against
-/// `pi R delta`, Abbott's flattening in Kogut & Etsion 2002), so beyond
-/// `2 hertz` the excess is the law's adhesion (on the Kogut–Etsion bump of
-/// `examples/scenes/switch-bump-plastic.toml` at its former load of 20 uN,
-/// measured on the flat at the central gap: Hertz 0.25, Kogut–Etsion without adhesion 0.49, with JKR
-/// adhesion on the flattened tops 1.13); below it, the depth of the
-/// contact itself.
-fn excess_area_cause(frac: f64, hertz: f64) -> String {
-    if frac > 2.0 * hertz {
-        format!(
-            "elastic summits without adhesion would give {hertz:.2} there and plastic ones at \
-             most twice that ({:.2}): the rest is the law's adhesion widening each contact \
-             (JKR on a plastic summit's flattened top reaches far beyond it)",
-            2.0 * hertz
-        )
-    } else {
-        format!(
-            "elastic summits without adhesion would give {hertz:.2} there: the summits are \
-             pressed so deep that their areas alone exceed the nominal area"
-        )
-    }
-}
-
 /// The bump's resistance with an error estimate from the conductance's and
 /// the inverse distance's (relative errors added).
 fn bump_resistance(
@@ -408,28 +365,5 @@ fn bump_resistance(
         interaction: cr.interaction,
         interaction_skipped: cr.interaction_skipped,
         equivalent_square_side: side,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::excess_area_cause;
-
-    /// The plastic bump's centre at 20 uN (Hertz 0.2532 at the central gap
-    /// -1.5882 sigma, from `tests/data/bump_centre_area.py`; the measured
-    /// Kogut–Etsion fraction with adhesion 1.13) names adhesion; a fraction
-    /// within twice Hertz names the depth.
-    #[test]
-    fn the_excess_area_is_blamed_on_its_measured_cause() {
-        let hertz = 0.253_226;
-        let adhesive = excess_area_cause(1.13, hertz);
-        assert!(
-            adhesive.contains("0.25") && adhesive.contains("0.51"),
-            "{adhesive}"
-        );
-        assert!(adhesive.contains("adhesion widening"), "{adhesive}");
-        let deep = excess_area_cause(1.13, 0.6);
-        assert!(deep.contains("pressed so deep"), "{deep}");
-        assert!(!deep.contains("adhesion widening"), "{deep}");
     }
 }

@@ -19,7 +19,62 @@ pub enum Lookup {
     Missing,
     /// An entry that cannot be used (unreadable, not text, not an entry,
     /// failing its checksum, or for other parameters): the note to show.
-    Bad(String),
+    Bad(BadEntry),
+}
+
+/// A cache entry that could not be used and is recomputed: its file and
+/// why; `Display` words the note (`calibration cache entry FILE is not
+/// text (damaged): recomputed and stored again`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct BadEntry {
+    /// The entry's file.
+    pub path: PathBuf,
+    /// What is wrong with it.
+    pub why: BadReason,
+}
+
+/// Why a cache entry cannot be used.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum BadReason {
+    /// Its bytes are not UTF-8 text.
+    NotText,
+    /// It cannot be read (the operating system's message).
+    Unreadable(String),
+    /// It is not a calibration entry with a checksum.
+    NotAnEntry,
+    /// Its calibration cannot be serialised again for the checksum.
+    NotReserialisable,
+    /// Its checksum fails.
+    Checksum,
+    /// It holds another problem's calibration, or another solver
+    /// version's.
+    OtherParameters,
+}
+
+impl std::fmt::Display for BadEntry {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let unreadable;
+        let why = match &self.why {
+            BadReason::NotText => "is not text (damaged)",
+            BadReason::Unreadable(e) => {
+                unreadable = format!("cannot be read ({e})");
+                &unreadable
+            }
+            BadReason::NotAnEntry => {
+                "is not a calibration entry with a checksum (damaged, or an older format)"
+            }
+            BadReason::NotReserialisable => "cannot be re-serialised",
+            BadReason::Checksum => "fails its checksum (altered or damaged)",
+            BadReason::OtherParameters => {
+                "holds the calibration of other parameters or another solver version"
+            }
+        };
+        write!(
+            f,
+            "calibration cache entry {} {why}: recomputed and stored again",
+            self.path.display()
+        )
+    }
 }
 
 /// One stored entry: the calibration and the checksum of its canonical
@@ -89,35 +144,35 @@ impl CalibrationCache {
     /// cache's format, or its checksum fails), with the reason.
     pub fn lookup(&self, problem: &SphereProblem) -> Lookup {
         let path = self.path_for(problem);
-        let bad = |why: &str| {
-            Lookup::Bad(format!(
-                "calibration cache entry {} {why}: recomputed and stored again",
-                path.display()
-            ))
+        let bad = |why| {
+            Lookup::Bad(BadEntry {
+                path: path.clone(),
+                why,
+            })
         };
         let text = match std::fs::read(&path) {
             Ok(bytes) => match String::from_utf8(bytes) {
                 Ok(text) => text,
-                Err(_) => return bad("is not text (damaged)"),
+                Err(_) => return bad(BadReason::NotText),
             },
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Lookup::Missing,
-            Err(e) => return bad(&format!("cannot be read ({e})")),
+            Err(e) => return bad(BadReason::Unreadable(e.to_string())),
         };
         let Ok(entry) = serde_json::from_str::<Entry>(&text) else {
-            return bad("is not a calibration entry with a checksum (damaged, or an older format)");
+            return bad(BadReason::NotAnEntry);
         };
         let Ok(canonical) = serde_json::to_string(&entry.calibration) else {
-            return bad("cannot be re-serialised");
+            return bad(BadReason::NotReserialisable);
         };
         if format!("{:016x}", fnv1a64(canonical.as_bytes())) != entry.fnv1a64 {
-            return bad("fails its checksum (altered or damaged)");
+            return bad(BadReason::Checksum);
         }
         // The file's name holds the versions and parameters: an intact entry
         // for others was copied or renamed there.
         if entry.calibration.matches(problem) {
             Lookup::Found(Box::new(entry.calibration))
         } else {
-            bad("holds the calibration of other parameters or another solver version")
+            bad(BadReason::OtherParameters)
         }
     }
 
@@ -161,7 +216,7 @@ impl CalibrationCache {
     pub fn get_or_compute_noted(
         &self,
         problem: &SphereProblem,
-    ) -> Result<(Calibration, bool, Option<String>)> {
+    ) -> Result<(Calibration, bool, Option<BadEntry>)> {
         let note = match self.lookup(problem) {
             Lookup::Found(c) => return Ok((*c, true, None)),
             Lookup::Missing => None,
@@ -217,11 +272,24 @@ mod tests {
         // with a note naming the file.
         let text = std::fs::read_to_string(&path).unwrap();
         std::fs::write(&path, text.replacen("42.0", "63.0", 1)).unwrap();
-        assert!(matches!(cache.lookup(&p), Lookup::Bad(ref n) if n.contains("checksum")));
+        assert!(matches!(
+            cache.lookup(&p),
+            Lookup::Bad(BadEntry {
+                why: BadReason::Checksum,
+                ..
+            })
+        ));
         let (again, cached, note) = cache.get_or_compute_noted(&p).unwrap();
         assert_eq!(again, c);
         assert!(!cached);
-        assert!(note.unwrap().contains(&path.display().to_string()));
+        assert_eq!(
+            note.unwrap().to_string(),
+            format!(
+                "calibration cache entry {} fails its checksum (altered or damaged): recomputed \
+                 and stored again",
+                path.display()
+            )
+        );
         assert_eq!(cache.load(&p).unwrap(), c);
         // Other parameters, other files.
         let q =

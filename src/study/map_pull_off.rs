@@ -68,38 +68,49 @@ pub fn estimate_seconds(rows: usize, cols: usize, periodic: bool) -> f64 {
 }
 
 /// GW's pull-off against the adhesive boundary elements', or why it is not
-/// measured.
-#[derive(Debug, Clone, PartialEq)]
+/// measured; serialised as `summary.json`'s `model_error.pull_off_map`, in
+/// this order.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct MapPullOff {
-    /// What the exact pull-off is (its interaction, tolerance and sweep), or
-    /// why it is not measured (a sentence).
-    pub reference: String,
-    /// What differs between GW and the exact model (interaction law, summit
-    /// independence, grid resolution, edges); empty when not measured.
-    pub differences: String,
-    /// GW's pull-off (N, negative tensile).
+    /// GW's pull-off (N, negative tensile; `null` when not measured).
+    #[serde(rename = "gw_N")]
     pub gw: Option<f64>,
     /// The exact pull-off `p_min A_n` (N, negative tensile).
+    #[serde(rename = "exact_N")]
     pub exact: Option<f64>,
     /// `(GW - exact)/|exact|`.
     pub relative: Option<f64>,
-    /// The mean gap (m) of the exact pull-off.
-    pub gap: Option<f64>,
+    /// What the exact pull-off is (its interaction, tolerance and sweep), or
+    /// why it is not measured (a sentence).
+    pub reference: String,
+    /// The adhesive solves' stopping residual (dimensionless),
+    /// [`TOLERANCE`].
+    pub tolerance: f64,
+    /// What differs between GW and the exact model (interaction law, summit
+    /// independence, grid resolution, and the edges of a mirrored map);
+    /// empty when not measured.
+    pub differences: String,
     /// The work of adhesion `w` (J/m^2) of both.
+    #[serde(rename = "work_of_adhesion_J_m2")]
     pub energy: f64,
-    /// The exponential interaction's range `rho` (m).
+    /// The exponential interaction's range `rho = 0.9743 z0` (m).
+    #[serde(rename = "range_m")]
     pub range: f64,
-    /// The sweep's step of the mean gap (m).
+    /// The mean gap (m) of the exact pull-off.
+    #[serde(rename = "gap_m")]
+    pub gap: Option<f64>,
+    /// The retraction's step of the mean gap (m).
+    #[serde(rename = "gap_step_m")]
     pub gap_step: Option<f64>,
     /// The adhesive solves made.
     pub solves: usize,
-    /// The most iterations of one solve.
+    /// The most conjugate-gradient iterations of one solve.
     pub max_iterations: usize,
-    /// The iterations of all solves.
+    /// The conjugate-gradient iterations of all solves.
     pub iterations: usize,
     /// The estimated CPU time (s).
     pub estimate_s: f64,
-    /// The time it took (s, wall), 0 when not measured.
+    /// The time it took (s, wall; 0 when not measured).
     pub seconds: f64,
 }
 
@@ -108,6 +119,7 @@ impl MapPullOff {
         let a = &plan.contact.adhesion;
         MapPullOff {
             reference,
+            tolerance: TOLERANCE,
             differences: String::new(),
             gw: None,
             exact: None,
@@ -385,6 +397,7 @@ fn sweep(plan: &Plan, p_max: f64) -> Result<MapPullOff> {
     }
     Ok(MapPullOff {
         reference: reference(w, rho, k, step, mirrored.then_some((c.rows, c.cols))),
+        tolerance: TOLERANCE,
         differences: differences(plan, rho, mirrored),
         gw: None,
         exact: Some(best.1.min(0.0) * a_n),

@@ -13,7 +13,6 @@ use crate::error::Result;
 use crate::gw::Accuracy;
 use crate::loading::{hysteresis_energy_to, History, LoadingModel, LoadingProgram, Observables};
 use crate::study::plan::FullSolver;
-use crate::study::scene::LawName;
 use crate::study::warning::{ModelErrorOutput, Warning};
 
 use super::map_error::MapModelError;
@@ -165,8 +164,11 @@ impl ModelError {
 
     /// Warnings for the outputs whose model error exceeds
     /// [`MODEL_ERROR_WARN`], advising the full-solver law by the
-    /// `law.kind` values that give it, other than the scene's own `given`.
-    pub fn warnings(&self, law: &str, given: LawName) -> Vec<Warning> {
+    /// `law.kind` values that give it: only `calibrated` when
+    /// `calibrated_only` (the planner's decision,
+    /// [`Plan::advises_calibrated_only`](crate::study::Plan::advises_calibrated_only)), else also
+    /// `auto`.
+    pub fn warnings(&self, law: &str, calibrated_only: bool) -> Vec<Warning> {
         [
             (
                 ModelErrorOutput::PullOff,
@@ -193,7 +195,7 @@ impl ModelError {
                 law: law.to_string(),
                 error: e,
                 reference,
-                auto: given == LawName::Auto,
+                auto: calibrated_only,
             })
         })
         .chain(self.map.iter().flat_map(MapModelError::warnings))

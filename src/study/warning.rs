@@ -7,12 +7,19 @@
 //! command line and the Python package (a warning serialises as its
 //! sentence).
 //!
-//! Where a lower layer words its own warning (a measured map's pixel sizes
-//! and units, the rough sphere's model, the spot heating relation, the
-//! calibration cache, the SIMD request), the variant carries that sentence
-//! beside the numbers the study layer has.
+//! Where a lower layer finds the warning (a measured map's pixel sizes and
+//! units, the rough sphere's model, the spot heating relation, the
+//! calibration cache, the SIMD request, an elastic law on yielding
+//! summits), the variant wraps that layer's typed value, whose `Display` is
+//! the sentence, beside the numbers the study layer has.
 
+use crate::electrical::SpotWarning;
 use crate::gw::validity::Finding;
+use crate::law::plastic::ElasticLawYields;
+use crate::numeric::simd::IgnoredRequest;
+use crate::roughsphere::SphereWarning;
+use crate::study::cache::BadEntry;
+use crate::topography::{PixelSizeMismatch, UnitWarning};
 use serde::{Serialize, Serializer};
 use std::fmt;
 
@@ -64,13 +71,8 @@ pub enum Warning {
         tolerance: f64,
     },
     /// An elastic law on summits that yield: plasticity index `psi > 1`
-    /// ([`crate::law::plastic::elastic_law_warning`]'s sentence).
-    ElasticLawYields {
-        /// The plasticity index.
-        psi: f64,
-        /// The core's sentence.
-        text: String,
-    },
+    /// ([`crate::law::plastic::elastic_law_warning`]).
+    ElasticLawYields(ElasticLawYields),
     /// Per-summit menisci with a Kelvin radius (m) below a molecular size.
     MeniscusMolecular {
         /// The Kelvin radius (m).
@@ -96,23 +98,24 @@ pub enum Warning {
         /// The scene's `rtol`.
         rtol: f64,
     },
-    /// A calibration cache entry was bad and recomputed (the cache's
-    /// sentence, naming the file).
-    CalibrationCache(String),
+    /// A calibration cache entry was bad and recomputed (its file and
+    /// why).
+    CalibrationCache(BadEntry),
     /// A measured map's pixel size given in the scene disagrees with the
-    /// file's (the instrument readers' sentence).
-    MapPixelSize(String),
+    /// file's ([`crate::topography::pixel_sizes`]).
+    MapPixelSize(PixelSizeMismatch),
     /// A measured map's heights or pixel sizes are probably in the wrong
-    /// unit (the instrument readers' sentence).
-    MapUnits(String),
-    /// `ASPERITY_SIMD` was not followed ([`crate::numeric::simd::ignored_request`]'s
-    /// sentence).
-    SimdNotFollowed(String),
+    /// unit ([`crate::topography::unit_warnings`]; one code for the height
+    /// and the length unit).
+    MapUnits(UnitWarning),
+    /// `ASPERITY_SIMD` was not followed
+    /// ([`crate::numeric::simd::ignored_request`]).
+    SimdNotFollowed(IgnoredRequest),
     /// `law.kind = "auto"`: the full-solver law failed; the results are the
     /// analytic law's.
     AutoLawFailed {
-        /// The failure, worded.
-        error: String,
+        /// The failure.
+        error: crate::Error,
     },
     /// A law's model error above
     /// [`MODEL_ERROR_WARN`](crate::study::model_error::MODEL_ERROR_WARN)
@@ -126,8 +129,9 @@ pub enum Warning {
         error: f64,
         /// The reference value (the output's unit), when known.
         reference: Option<f64>,
-        /// Whether the scene's `law.kind` is `auto` (the advice then
-        /// names only `calibrated`).
+        /// Whether the advice names only `calibrated` (the planner's
+        /// decision, [`Plan::advises_calibrated_only`](crate::study::Plan::advises_calibrated_only):
+        /// the scene's `law.kind` is `auto`).
         auto: bool,
     },
     /// GW's `quantity` on a measured map differs from the exact elastic
@@ -221,8 +225,9 @@ pub enum Warning {
         current: f64,
         /// The hottest reported state's separation (m).
         separation: f64,
-        /// The heating relation's sentence for its voltage.
-        spot: String,
+        /// What the hottest spot does at its voltage (softens or melts,
+        /// [`crate::electrical::Heating::warning`]; one code for both).
+        spot: SpotWarning,
         /// Reported states beyond softening.
         beyond: usize,
         /// Reported states.
@@ -235,8 +240,9 @@ pub enum Warning {
         states: usize,
     },
     /// The rough sphere's own warning at the closest approach
-    /// ([`crate::roughsphere::SphereState::warnings`]).
-    RoughSphere(String),
+    /// ([`crate::roughsphere::SphereState::warnings`]; one code for all
+    /// its kinds).
+    RoughSphere(SphereWarning),
 }
 
 /// Every code [`Warning::code`] gives, each once.
@@ -286,7 +292,7 @@ impl Warning {
                 Finding::Resolution { .. } => "resolution",
             },
             Warning::HysteresisZero { .. } => "hysteresis-energy-zero",
-            Warning::ElasticLawYields { .. } => "elastic-law-yields",
+            Warning::ElasticLawYields(_) => "elastic-law-yields",
             Warning::MeniscusMolecular { .. } => "meniscus-molecular",
             Warning::MenisciMerge { .. } => "menisci-merge",
             Warning::MeniscusRigid { .. } => "meniscus-rigid",
@@ -330,11 +336,11 @@ impl fmt::Display for Warning {
                 "hysteresis energy: {energy:.3e} J is zero within its tolerance {tolerance:.3e} \
                  J; reported as 0"
             ),
-            Warning::ElasticLawYields { text, .. }
-            | Warning::CalibrationCache(text)
-            | Warning::MapPixelSize(text)
-            | Warning::MapUnits(text)
-            | Warning::SimdNotFollowed(text) => f.write_str(text),
+            Warning::ElasticLawYields(w) => write!(f, "{w}"),
+            Warning::CalibrationCache(w) => write!(f, "{w}"),
+            Warning::MapPixelSize(w) => write!(f, "{w}"),
+            Warning::MapUnits(w) => write!(f, "{w}"),
+            Warning::SimdNotFollowed(w) => write!(f, "{w}"),
             Warning::MeniscusMolecular { kelvin_radius } => write!(
                 f,
                 "adhesion.relative_humidity: the Kelvin radius {kelvin_radius:.3e} m is below a \
@@ -575,7 +581,6 @@ mod tests {
                 start: 1e-7,
             },
         ];
-        let text = || "text".to_string();
         let model_error = |output| Warning::ModelError {
             output,
             law: "jkr".into(),
@@ -591,10 +596,10 @@ mod tests {
                     energy: -1e-30,
                     tolerance: 1e-20,
                 },
-                Warning::ElasticLawYields {
+                Warning::ElasticLawYields(ElasticLawYields {
+                    law: "jkr".into(),
                     psi: 2.0,
-                    text: text(),
-                },
+                }),
                 Warning::MeniscusMolecular {
                     kelvin_radius: 1e-10,
                 },
@@ -608,11 +613,26 @@ mod tests {
                     error: 0.1,
                     rtol: 1e-3,
                 },
-                Warning::CalibrationCache(text()),
-                Warning::MapPixelSize(text()),
-                Warning::MapUnits(text()),
-                Warning::SimdNotFollowed(text()),
-                Warning::AutoLawFailed { error: text() },
+                Warning::CalibrationCache(BadEntry {
+                    path: "entry.json".into(),
+                    why: crate::study::cache::BadReason::Checksum,
+                }),
+                Warning::MapPixelSize(PixelSizeMismatch {
+                    name: "surface.pixel_size".into(),
+                    given: 1e-7,
+                    file: (2e-7, 2e-7),
+                }),
+                Warning::MapUnits(UnitWarning::PixelAbove {
+                    axis: 'x',
+                    size: 5e-3,
+                }),
+                Warning::SimdNotFollowed(IgnoredRequest {
+                    wanted: "avx1".into(),
+                    used: "scalar",
+                }),
+                Warning::AutoLawFailed {
+                    error: crate::Error::invalid("law.kind", "text"),
+                },
                 model_error(ModelErrorOutput::PullOff),
                 Warning::MapModelError {
                     quantity: "mean gap",
@@ -660,12 +680,16 @@ mod tests {
                 Warning::SpotHeating {
                     current: 0.1,
                     separation: 1e-9,
-                    spot: text(),
+                    spot: SpotWarning::Molten {
+                        voltage: 1.0,
+                        melting_voltage: 0.43,
+                        melting_temperature: 1337.33,
+                    },
                     beyond: 1,
                     reported: 2,
                 },
                 Warning::GreenwoodSkipped { states: 3 },
-                Warning::RoughSphere(text()),
+                Warning::RoughSphere(SphereWarning::InteractionSkipped),
                 model_error(ModelErrorOutput::ListedLoad),
             ])
             .collect()
@@ -703,5 +727,124 @@ mod tests {
             )
         );
         assert_eq!(w.code(), "greenwood-interaction-skipped");
+    }
+
+    /// The sentences of the lower layers' typed warnings, byte for byte as
+    /// those layers worded them before they were typed (the strings below
+    /// are the earlier formats' output, several copied from the command
+    /// line's and the example scenes' stderr).
+    #[test]
+    fn the_lower_layers_sentences_are_unchanged() {
+        use crate::study::cache::BadReason;
+        let heating = crate::electrical::Heating::new(293.15).unwrap();
+        let cases = [
+            (
+                Warning::ElasticLawYields(ElasticLawYields {
+                    law: "dmt".into(),
+                    psi: 8.5641,
+                }),
+                "plasticity index psi = 8.564 > 1: most contacts yield, but the law dmt is elastic \
+                 (it over-predicts the load at a given area); consider kogut-etsion or \
+                 jackson-green",
+            ),
+            (
+                Warning::CalibrationCache(BadEntry {
+                    path: "/c/e.json".into(),
+                    why: BadReason::Checksum,
+                }),
+                "calibration cache entry /c/e.json fails its checksum (altered or damaged): \
+                 recomputed and stored again",
+            ),
+            (
+                Warning::CalibrationCache(BadEntry {
+                    path: "/c/e.json".into(),
+                    why: BadReason::Unreadable("Permission denied (os error 13)".into()),
+                }),
+                "calibration cache entry /c/e.json cannot be read (Permission denied (os error \
+                 13)): recomputed and stored again",
+            ),
+            (
+                Warning::MapPixelSize(PixelSizeMismatch {
+                    name: "--pixel-size".into(),
+                    given: 6e-8,
+                    file: (5e-8, 5e-8),
+                }),
+                "--pixel-size = 6e-8 m disagrees with the file's pixels of 5e-8 m (x) by 5e-8 m \
+                 (y) beyond 1e-9 relative: using --pixel-size; omit it to trust the file",
+            ),
+            (
+                Warning::MapUnits(UnitWarning::RmsHeight {
+                    rms_height: 4.9937e-5,
+                    height_unit: "--height-unit".into(),
+                    scale: "--scale".into(),
+                }),
+                "the RMS height 4.994e-5 m is above 10 um: the height unit is probably wrong, \
+                 heights in mm (4.994e-8 m) read as m? (give --height-unit, or --scale)",
+            ),
+            (
+                Warning::MapUnits(UnitWarning::PixelAbove {
+                    axis: 'x',
+                    size: 5e-3,
+                }),
+                "the pixel size along x, 5.000e-3 m, is above 1 mm: the length unit is probably \
+                 wrong, a size in mm (5.000e-6 m) or um (5.000e-9 m) read as m?",
+            ),
+            (
+                Warning::MapUnits(UnitWarning::PixelBelow {
+                    axis: 'y',
+                    size: 1e-11,
+                }),
+                "the pixel size along y, 1.000e-11 m, is below 0.1 nm: the length unit is \
+                 probably wrong, a size in m (1.000e-5 m if it was in um, 1.000e-2 m if in nm) \
+                 converted once more?",
+            ),
+            (
+                Warning::SimdNotFollowed(IgnoredRequest {
+                    wanted: "bogus".into(),
+                    used: "avx512",
+                }),
+                "ASPERITY_SIMD=bogus not followed (allowed: avx2, scalar, avx512, native, or \
+                 unset for the widest set the CPU has): the vector passes ran on avx512 (the \
+                 numbers are the same at every width, only the time differs)",
+            ),
+            (
+                Warning::AutoLawFailed {
+                    error: crate::Error::invalid("materials", "no"),
+                },
+                "law.kind = \"auto\": the full-solver law, which the model error above asks \
+                 for, failed on this scene (materials: no); the results are the analytic law's",
+            ),
+            (
+                Warning::SpotHeating {
+                    current: 0.1,
+                    separation: 1e-9,
+                    spot: heating.warning(0.1).unwrap().unwrap(),
+                    beyond: 1,
+                    reported: 2,
+                },
+                "electrical.current = 1e-1 A at d = 1.0000e-9 m: the contact voltage 1.0000e-1 V \
+                 is above the softening voltage 0.0722 V (softening temperature 373.15 K): the \
+                 spot softens at 433.9 K and grows, so the resistance at this load and the \
+                 temperature from it no longer hold (1 of the 2 reported states, the closest \
+                 approach and the listed ones, are beyond softening; \
+                 electrical.softening_temperature and melting_temperature set the metal, gold's \
+                 by default)",
+            ),
+            (
+                Warning::RoughSphere(SphereWarning::AreaFraction { fraction: 0.92 }),
+                "rough sphere at the closest approach: model: the real-area fraction at the \
+                 centre is 0.92 (> 0.1): GW's independent summits overstate the stiffness of the \
+                 rough layer there",
+            ),
+        ];
+        for (w, sentence) in cases {
+            assert_eq!(w.to_string(), sentence);
+        }
+        assert_eq!(
+            heating.warning(10.0).unwrap().unwrap().to_string(),
+            "the contact voltage 1.0000e1 V is above the melting voltage 0.4079 V (melting \
+             temperature 1337.33 K): the spot melts; Holm's relation gives no temperature above \
+             melting, so none is reported"
+        );
     }
 }

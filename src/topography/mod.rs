@@ -40,7 +40,7 @@ mod sur;
 pub mod units;
 mod x3p;
 
-pub use sanity::{pixel_sizes, unit_warnings, PIXEL_AGREEMENT};
+pub use sanity::{pixel_sizes, unit_warnings, PixelSizeMismatch, UnitWarning, PIXEL_AGREEMENT};
 pub use x3p::to_x3p;
 
 use crate::error::{Error, Result};

@@ -185,6 +185,7 @@ fn diagnostics_fractions_and_warning() {
     assert!((psi - 3.03).abs() < 0.01);
     assert!(elastic_law_warning("hertz", psi)
         .unwrap()
+        .to_string()
         .contains("psi = 3.028"));
     assert!(elastic_law_warning("hertz", 0.8).is_none());
     let law = ke();

@@ -111,10 +111,10 @@ pub fn run(args: &BemArgs) -> crate::CliResult {
     input.pixel_size_y = Some(pixels.1);
     input.periodic = args.periodic || read.periodic;
     let rms = plane_rms(&read.map, pixels, input.periodic);
-    warnings.extend(unit_warnings(rms, pixels));
+    warnings.extend(unit_warnings(rms, pixels).iter().map(ToString::to_string));
     let mut out = bem(&read.map, &input).map_err(failed)?;
     let mut words_first: Vec<String> = warnings.iter().map(|w| words.words_in(w)).collect();
-    words_first.append(&mut out.warnings);
-    out.warnings = words_first;
+    words_first.append(&mut out.assessment.warnings);
+    out.assessment.warnings = words_first;
     crate::print_output(&out, &out.text(), args.json)
 }

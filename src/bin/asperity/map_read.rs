@@ -51,9 +51,13 @@ pub fn read_map(path: &Path, f: &MapArgs) -> CommandResult<(MeasuredMap, (f64, f
         scale: f.scale,
     };
     let read = read_measured(path, &options)?;
-    let (pixels, warnings) = read.pixels(f.pixel_size)?;
+    let (pixels, mismatch) = read.pixels(f.pixel_size)?;
     if let Some(out) = &f.export {
         export(out, &read.map, pixels)?;
     }
-    Ok((read, pixels, warnings))
+    Ok((
+        read,
+        pixels,
+        mismatch.iter().map(ToString::to_string).collect(),
+    ))
 }

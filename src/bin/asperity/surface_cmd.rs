@@ -56,7 +56,11 @@ pub fn run(args: &SurfaceArgs) -> crate::CliResult {
     let source = read.source(pixels);
     let (mut out, c) = characterise(read.map, &input).map_err(failed)?;
     out.source = Some(source);
-    warnings.extend(unit_warnings(out.rms_height_m, pixels));
+    warnings.extend(
+        unit_warnings(out.rms_height_m, pixels)
+            .iter()
+            .map(ToString::to_string),
+    );
     warnings.extend(std::mem::take(&mut out.warnings));
     out.warnings = warnings.iter().map(|w| words.words_in(w)).collect();
     if let Some(dir) = &args.out {

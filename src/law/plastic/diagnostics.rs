@@ -58,14 +58,35 @@ pub fn contact_fractions(
     }
 }
 
-/// The warning `summary.json` carries when an elastic law is chosen for a
-/// surface whose plasticity index `psi` exceeds 1; `None` otherwise.
-pub fn elastic_law_warning(law: &str, psi: f64) -> Option<String> {
-    (psi > 1.0).then(|| {
-        format!(
+/// An elastic law chosen for a surface whose plasticity index exceeds 1
+/// (Greenwood & Williamson 1966: `psi = (E*/H) sqrt(sigma/R)`; above 1 most
+/// contacts yield): the warning `summary.json` carries, its sentence by
+/// `Display`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ElasticLawYields {
+    /// The elastic law's name.
+    pub law: String,
+    /// The plasticity index `psi` (> 1).
+    pub psi: f64,
+}
+
+impl std::fmt::Display for ElasticLawYields {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (law, psi) = (&self.law, self.psi);
+        write!(
+            f,
             "plasticity index psi = {psi:.3} > 1: most contacts yield, but the law {law} is \
              elastic (it over-predicts the load at a given area); consider kogut-etsion or \
              jackson-green"
         )
+    }
+}
+
+/// The warning when the elastic law `law` is chosen for a surface whose
+/// plasticity index `psi` exceeds 1; `None` otherwise.
+pub fn elastic_law_warning(law: &str, psi: f64) -> Option<ElasticLawYields> {
+    (psi > 1.0).then(|| ElasticLawYields {
+        law: law.to_string(),
+        psi,
     })
 }

@@ -38,7 +38,7 @@ pub mod zhao_maietta_chang;
 
 pub use adhesion::AdhesivePlastic;
 pub use chang_etsion_bogy::ChangEtsionBogy;
-pub use diagnostics::{contact_fractions, elastic_law_warning, RegimeFractions};
+pub use diagnostics::{contact_fractions, elastic_law_warning, ElasticLawYields, RegimeFractions};
 pub use jackson_green::JacksonGreen;
 pub use kogut_etsion::KogutEtsion;
 pub use unloading::{MaxInterference, Unloading};

@@ -155,8 +155,8 @@ fn map_model_error(out: &mut String, m: &super::summary::ModelErrorSummary) {
 
 /// GW's pull-off on the map against the adhesive boundary elements', or why
 /// it is not measured.
-fn map_pull_off(out: &mut String, p: &super::summary::PullOffMapSummary) {
-    match (p.gw_n, p.exact_n) {
+fn map_pull_off(out: &mut String, p: &crate::study::map_pull_off::MapPullOff) {
+    match (p.gw, p.exact) {
         (Some(gw), Some(exact)) => {
             let _ = writeln!(
                 out,

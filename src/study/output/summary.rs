@@ -206,73 +206,7 @@ pub struct ModelErrorSummary {
     /// (`pull_off` and `reference_pull_off_N` above are its relative
     /// difference and exact pull-off when measured there).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub pull_off_map: Option<PullOffMapSummary>,
-}
-
-/// GW's pull-off on a measured map beside the adhesive boundary elements'
-/// ([`crate::study::map_pull_off`]).
-#[derive(Debug, Clone, Serialize)]
-pub struct PullOffMapSummary {
-    /// GW's pull-off (N, negative tensile; `null` when not measured).
-    #[serde(rename = "gw_N")]
-    pub gw_n: Option<f64>,
-    /// The exact pull-off `p_min A_n` (N, negative tensile).
-    #[serde(rename = "exact_N")]
-    pub exact_n: Option<f64>,
-    /// `(GW - exact)/|exact|`.
-    pub relative: Option<f64>,
-    /// What the exact pull-off is (interaction, tolerance, sweep), or why
-    /// it is not measured.
-    pub reference: String,
-    /// The adhesive solves' stopping residual (dimensionless).
-    pub tolerance: f64,
-    /// What differs between the two models: interaction law, summit
-    /// independence, grid resolution (and the edges of a mirrored map).
-    pub differences: String,
-    /// The work of adhesion `w` (J/m^2) of both.
-    #[serde(rename = "work_of_adhesion_J_m2")]
-    pub work_of_adhesion: f64,
-    /// The exponential interaction's range `rho = 0.9743 z0` (m).
-    #[serde(rename = "range_m")]
-    pub range_m: f64,
-    /// The mean gap (m) of the exact pull-off.
-    #[serde(rename = "gap_m")]
-    pub gap_m: Option<f64>,
-    /// The retraction's step of the mean gap (m).
-    #[serde(rename = "gap_step_m")]
-    pub gap_step_m: Option<f64>,
-    /// The adhesive solves made.
-    pub solves: usize,
-    /// The most conjugate-gradient iterations of one solve.
-    pub max_iterations: usize,
-    /// The conjugate-gradient iterations of all solves.
-    pub iterations: usize,
-    /// The estimated CPU time (s).
-    pub estimate_s: f64,
-    /// The time it took (s, wall; 0 when not measured).
-    pub seconds: f64,
-}
-
-impl PullOffMapSummary {
-    fn new(p: &crate::study::map_pull_off::MapPullOff) -> PullOffMapSummary {
-        PullOffMapSummary {
-            gw_n: p.gw,
-            exact_n: p.exact,
-            relative: p.relative,
-            reference: p.reference.clone(),
-            tolerance: crate::study::map_pull_off::TOLERANCE,
-            differences: p.differences.clone(),
-            work_of_adhesion: p.energy,
-            range_m: p.range,
-            gap_m: p.gap,
-            gap_step_m: p.gap_step,
-            solves: p.solves,
-            max_iterations: p.max_iterations,
-            iterations: p.iterations,
-            estimate_s: p.estimate_s,
-            seconds: p.seconds,
-        }
-    }
+    pub pull_off_map: Option<crate::study::map_pull_off::MapPullOff>,
 }
 
 /// One state of a measured map's model error: GW beside the exact elastic
@@ -342,7 +276,7 @@ impl ModelErrorSummary {
                 .as_ref()
                 .filter(|x| !x.states.is_empty())
                 .map(|x| x.seconds),
-            pull_off_map: m.map_pull_off.as_ref().map(PullOffMapSummary::new),
+            pull_off_map: m.map_pull_off.clone(),
         }
     }
 }

@@ -10,6 +10,14 @@ use crate::study::scene::LawName;
 use std::path::Path;
 
 impl Plan {
+    /// Whether a model-error warning's advice names only `calibrated` (the
+    /// scene's `law.kind` is `auto`, which already gives the full-solver
+    /// law where its analytic law misses `rtol`), rather than `calibrated`
+    /// or `auto`.
+    pub fn advises_calibrated_only(&self) -> bool {
+        self.scene.law.kind == LawName::Auto
+    }
+
     /// For `law.kind = "auto"` whose analytic law missed `rtol` on this
     /// surface (`missed(rtol)`: the headline output furthest above it and
     /// its relative error, as the run measured them): the plan with the

@@ -165,7 +165,7 @@ fn plasticity_decision(
         Vec::new()
     } else {
         crate::law::plastic::elastic_law_warning(&law.name, psi)
-            .map(|text| Warning::ElasticLawYields { psi, text })
+            .map(Warning::ElasticLawYields)
             .into_iter()
             .collect()
     })

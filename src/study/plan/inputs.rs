@@ -35,7 +35,7 @@ pub struct CalibrationInput {
     pub path: PathBuf,
     /// Why the cache's entry was not used (damaged or altered: it failed
     /// its checksum) and was recomputed; a warning of the run.
-    pub note: Option<String>,
+    pub note: Option<crate::study::cache::BadEntry>,
 }
 
 /// What is still to be gathered when a run starts, for a preview.

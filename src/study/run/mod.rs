@@ -87,11 +87,9 @@ pub struct Results {
 }
 
 /// `results` of an `auto` law that missed `rtol` on the surface, kept
-/// because the full-solver law's run failed with `e`.
-fn auto_failed(mut results: Results, e: &crate::Error) -> Results {
-    results.warnings.push(Warning::AutoLawFailed {
-        error: e.to_string(),
-    });
+/// because the full-solver law's run failed with `error`.
+fn auto_failed(mut results: Results, error: crate::Error) -> Results {
+    results.warnings.push(Warning::AutoLawFailed { error });
     results
 }
 
@@ -328,14 +326,14 @@ impl Plan {
         let replanned = match self.auto_replanned(|rtol| auto::missed(&results, rtol)) {
             Ok(Some(plan)) => plan,
             Ok(None) => return Ok(results),
-            Err(e) => return Ok(auto_failed(results, &e)),
+            Err(e) => return Ok(auto_failed(results, e)),
         };
         match replanned.run_unmapped(progress) {
             Ok(mut r) => {
                 r.replanned = Some(Box::new(replanned));
                 Ok(r)
             }
-            Err(e) => Ok(auto_failed(results, &e)),
+            Err(e) => Ok(auto_failed(results, e)),
         }
     }
 
@@ -463,7 +461,7 @@ impl Plan {
             hysteresis_energy,
         )?;
         model_error.measure_map(self, closest, pull_off.map(|p| p.load), max_load, t0)?;
-        warnings.extend(model_error.warnings(&self.law.name, self.scene.law.kind));
+        warnings.extend(model_error.warnings(&self.law.name, self.advises_calibrated_only()));
         if let Some(p) = pull_off.filter(|p| p.at_start) {
             warnings.push(Warning::PullOffAtStart {
                 separation: p.separation,
@@ -588,7 +586,7 @@ impl Plan {
             let loads: Vec<Option<f64>> = r.listed.iter().map(|l| l.state.load()).collect();
             let separations: Vec<f64> = steps.iter().map(|&(d, _)| d).collect();
             m.measure_listed(self, &separations, &loads);
-            let before = m.warnings(&self.law.name, self.scene.law.kind);
+            let before = m.warnings(&self.law.name, self.advises_calibrated_only());
             let listed_state = |w: &Warning| {
                 matches!(
                     w,

@@ -63,7 +63,8 @@ pub(super) fn finish(plan: &Plan, sphere: &RoughSphere, r: &mut Results) -> Resu
         closest
             .warnings
             .iter()
-            .map(|w| crate::study::Warning::RoughSphere(w.clone())),
+            .cloned()
+            .map(crate::study::Warning::RoughSphere),
     );
     r.regimes = plan.regimes_at(closest.central_separation);
     if let Some(law) = plan.elastic_law()? {

@@ -293,16 +293,13 @@ pub fn resolve(scene: &Scene, base_dir: &Path) -> Result<Option<Resolved>> {
     };
     let file = base_dir.join(&spec.path);
     let read = read_measured(&file, &spec)?;
-    let ((dx, dy), pixel_warnings) = topography::pixel_sizes(
+    let ((dx, dy), mismatch) = topography::pixel_sizes(
         read.file_pixels,
         spec.pixel_size,
         "surface.pixel_size",
         read.format,
     )?;
-    let mut warnings: Vec<Warning> = pixel_warnings
-        .into_iter()
-        .map(Warning::MapPixelSize)
-        .collect();
+    let mut warnings: Vec<Warning> = mismatch.into_iter().map(Warning::MapPixelSize).collect();
     let periodic = spec.periodic || read.periodic;
     let topo = Topography::with_pixels(read.map, dx, dy).map_err(|e| match e.field() {
         Some("heights") => e.renamed("surface.height_scale"),
