@@ -7,8 +7,9 @@ The same problem as tamaas_bem.py's 256^2 rows (examples/data/selfaffine-256.npy
 E* = 1 GPa, p = 0.01 E*), one thread each. Tamaas' iteration count is read from its own convergence log
 (log level info, captured from file descriptor 2); its cost of one convolution is `Model.solveNeumann()`
 (the pressure-to-displacement operator, FFT forward and inverse) timed over REPS calls. asperity's
-iterations and CPU come from `bem_rough_time` (its threads' CPU time around the solve). CPU times are
-process CPU (time.process_time / schedstat), medians, the two solvers in turns.
+iterations and CPU come from `bem_rough_time` (the mean CPU of five solves a call: its counter,
+`/proc/self/stat`, ticks every 10 ms). CPU times are process CPU (time.process_time, /proc/self/stat),
+medians over REPS calls, the two solvers in turns.
 """
 import json
 import os
@@ -68,7 +69,8 @@ def tamaas_convolution(n, reps=200):
 
 def asperity_solve(tol):
     env = dict(os.environ, RAYON_NUM_THREADS="1")
-    out = subprocess.run([BIN, "1", repr(tol), MAP, repr(L)], cwd=ROOT, env=env,
+    # Five solves a call: their mean CPU (the counter ticks every 10 ms).
+    out = subprocess.run([BIN, "5", repr(tol), MAP, repr(L)], cwd=ROOT, env=env,
                          capture_output=True, text=True, check=True).stdout
     return json.loads(out)
 
@@ -82,7 +84,7 @@ def main():
             cpu, t_it = tamaas_solve(surface, tol)
             t_cpu.append(cpu)
             a = asperity_solve(tol)
-            a_cpu.append(a["cpu_s_median"])
+            a_cpu.append(a["cpu_s_mean"])
             a_it = a["iterations"]
         tm_med, as_med = float(np.median(t_cpu)), float(np.median(a_cpu))
         rows.append({
