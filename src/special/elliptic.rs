@@ -120,8 +120,9 @@ pub fn ellip_ke_comp(m1: f64) -> (f64, f64) {
 }
 
 /// [`ellip_ke_comp`] of `L` parameters at once, bit for bit (the AGM
-/// lanes together, [`agm_ke_lanes`]; the other cases one by one).
-pub fn ellip_ke_comp_lanes<const L: usize>(m1: &[f64; L]) -> [(f64, f64); L] {
+/// lanes together, their square roots in flight at once; the other cases
+/// one by one).
+pub(crate) fn ellip_ke_comp_lanes<const L: usize>(m1: &[f64; L]) -> [(f64, f64); L] {
     let agm = |m: f64| m >= SERIES_BELOW;
     // lanes outside the AGM's range run it at m1 = 1 and are replaced
     let mut out = agm_ke_lanes(&m1.map(|m| if agm(m) { m } else { 1.0 }));
