@@ -127,17 +127,23 @@ impl<'a> SharedHeights<'a> {
             // loop, or for Gaussian heights the product form's steps).
             shifts.fill(&z, &mut heights, &mut density);
             // The integrand by node, the components in a row (zero outside
-            // the density's support), and the K21 sums of all components
-            // in loops over them.
-            for k in 0..n {
-                for j in 0..21 {
-                    let s = heights[21 * k + j];
-                    let inside = s >= sup_lo && s <= sup_hi;
-                    integrand[n * j + k] = if inside {
-                        load[j] * density[21 * k + j]
-                    } else {
-                        0.0
-                    };
+            // the density's support: a component's heights ascend with the
+            // nodes, so its ends tell whether any is outside), and the K21
+            // sums of all components in loops over them.
+            for (j, row) in integrand.chunks_exact_mut(n).enumerate() {
+                let l = load[j];
+                for (out, d) in row.iter_mut().zip(density[j..].iter().step_by(21)) {
+                    *out = l * d;
+                }
+            }
+            let inside = |s: f64| s >= sup_lo && s <= sup_hi;
+            for (k, hs) in heights.chunks_exact(21).enumerate() {
+                if !(inside(hs[0]) && inside(hs[20])) {
+                    for (j, &s) in hs.iter().enumerate() {
+                        if !inside(s) {
+                            integrand[n * j + k] = 0.0;
+                        }
+                    }
                 }
             }
             kronrod21_sums_columns(

@@ -13,6 +13,7 @@
 
 use crate::error::{Error, Result};
 use crate::numeric::chebyshev::{clenshaw, lobatto_coefficients, lobatto_nodes};
+use std::collections::HashMap;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -51,12 +52,65 @@ fn derivative(c: &[f64; DEG + 1]) -> [f64; DEG + 1] {
     d
 }
 
+/// The Lobatto nodes of `[a, b]` in the order of [`lobatto_nodes`], the
+/// ends and the centre exact (shared with neighbours and halves).
+fn panel_nodes(a: f64, b: f64) -> [f64; DEG + 1] {
+    let nodes: [f64; DEG + 1] = lobatto_nodes();
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    std::array::from_fn(|k| match k {
+        0 => b,
+        DEG => a,
+        _ if 2 * k == DEG => mid,
+        _ => mid + half * nodes[k],
+    })
+}
+
+/// The `DEG` interleaved Chebyshev points of `[-1, 1]` (between the
+/// nodes), where a panel's interpolant is checked.
+fn interleaved() -> [f64; DEG] {
+    std::array::from_fn(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
+}
+
+/// The values found so far, by point.
+#[derive(Default)]
+struct Known {
+    values: HashMap<u64, Vec<f64>>,
+}
+
+impl Known {
+    /// Evaluates `f` at the points of `xs` not yet known, in one call.
+    ///
+    /// # Errors
+    /// `f`'s error.
+    fn fill<'x>(&mut self, xs: impl Iterator<Item = &'x f64>, f: &Many<'_>) -> Result<()> {
+        let mut want: Vec<f64> = Vec::new();
+        for &x in xs {
+            if !self.values.contains_key(&x.to_bits()) && !want.contains(&x) {
+                want.push(x);
+            }
+        }
+        if want.is_empty() {
+            return Ok(());
+        }
+        let ys = f(&want)?;
+        for (x, y) in want.into_iter().zip(ys) {
+            self.values.insert(x.to_bits(), y);
+        }
+        Ok(())
+    }
+
+    /// The values at `x` (evaluated by [`Known::fill`]).
+    fn get(&self, x: f64) -> &[f64] {
+        &self.values[&x.to_bits()]
+    }
+}
+
 impl Table {
     /// Tabulates `f` on `[lo, hi]`, split at `splits` (its known kinks), to
     /// `tol (|f| + scale)`; `f` returns
-    /// `Err` to abort (a failed quadrature). `f` is called on a whole panel
-    /// at once (its `DEG + 1` nodes and `DEG` midpoints) so the caller may
-    /// evaluate them in parallel.
+    /// `Err` to abort (a failed quadrature). `f` is called on the points of
+    /// a panel it has not seen yet, at most 14 at once (the `DEG + 1` nodes
+    /// and three test points), so the caller may evaluate them in parallel.
     ///
     /// # Errors
     /// `f`'s error, or [`Error::NoConvergence`] when more than
@@ -82,6 +136,12 @@ impl Table {
     /// values share their costly part: the retraction pressures of many
     /// closest gaps from one set of law evaluations, `shared_heights.rs`).
     ///
+    /// Each point is evaluated once (panels share their ends, a half its
+    /// ends with its parent), and a panel's test points after its nodes in
+    /// two steps: three of them first, the other seven only when those
+    /// pass (a rejected panel usually fails at the first three; the
+    /// decision is that of all ten, whichever order they are checked in).
+    ///
     /// # Errors
     /// As [`Table::build`].
     pub fn build_many(
@@ -93,7 +153,6 @@ impl Table {
         n: usize,
         f: &Many<'_>,
     ) -> Result<Vec<Self>> {
-        let nodes: [f64; DEG + 1] = lobatto_nodes();
         // Known kinks of the function start their own panels.
         let mut cuts: Vec<f64> = splits
             .iter()
@@ -106,29 +165,30 @@ impl Table {
         cuts.dedup();
         let mut todo: Vec<(f64, f64)> = cuts.windows(2).map(|w| (w[0], w[1])).rev().collect();
         let mut done: Vec<(f64, Vec<[f64; DEG + 1]>)> = Vec::new();
-        let mut evaluations = 0;
-        let tests: Vec<f64> = (0..DEG)
-            .map(|k| (PI * (k as f64 + 0.5) / DEG as f64).cos())
-            .collect();
+        let mut known = Known::default();
         while let Some((a, b)) = todo.pop() {
-            let mid = 0.5 * (a + b);
-            let half = 0.5 * (b - a);
-            let mut xs: Vec<f64> = nodes.iter().map(|t| mid + half * t).collect();
-            xs.extend(tests.iter().map(|t| mid + half * t));
-            let ys = f(&xs)?;
-            evaluations += xs.len();
+            let xs = panel_nodes(a, b);
+            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+            let tests = interleaved().map(|u| (u, mid + half * u));
+            // A few test points first: most rejected panels fail there,
+            // and the others are evaluated only for a panel that passes.
+            let first = [tests[0], tests[DEG / 2], tests[DEG - 1]];
+            known.fill(xs.iter().chain(first.iter().map(|t| &t.1)), f)?;
             let cs: Vec<[f64; DEG + 1]> = (0..n)
-                .map(|i| {
-                    let vals: [f64; DEG + 1] = std::array::from_fn(|k| ys[k][i]);
-                    lobatto_coefficients(&vals)
-                })
+                .map(|i| lobatto_coefficients(&xs.map(|x| known.get(x)[i])))
                 .collect();
-            let ok = cs.iter().enumerate().all(|(i, c)| {
-                tests.iter().zip(&ys[DEG + 1..]).all(|(t, y)| {
-                    let e = (clenshaw(c, *t) - y[i]).abs();
+            let passes = |known: &Known, &(t, x): &(f64, f64)| {
+                let y = known.get(x);
+                cs.iter().enumerate().all(|(i, c)| {
+                    let e = (clenshaw(c, t) - y[i]).abs();
                     e <= tol * (y[i].abs() + scale)
                 })
-            });
+            };
+            let mut ok = first.iter().all(|t| passes(&known, t));
+            if ok {
+                known.fill(tests.iter().map(|t| &t.1), f)?;
+                ok = tests.iter().all(|t| passes(&known, t));
+            }
             if ok || b - a <= MIN_WIDTH * (hi - lo) {
                 done.push((a, cs));
             } else {
@@ -138,7 +198,7 @@ impl Table {
             if done.len() + todo.len() > MAX_PANELS {
                 return Err(Error::NoConvergence {
                     what: "local pressure table".into(),
-                    iterations: evaluations,
+                    iterations: known.values.len(),
                     residual: f64::NAN,
                 });
             }

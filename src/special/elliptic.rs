@@ -45,6 +45,41 @@ fn agm_ke(m1: f64) -> (f64, f64) {
     (k, k * (1.0 - sum))
 }
 
+/// [`agm_ke`] in `L` lanes: the same operations per lane, each lane
+/// frozen after its own last step, so the same bits; the independent
+/// square roots are in flight together instead of one latency-bound chain.
+fn agm_ke_lanes<const L: usize>(m1: &[f64; L]) -> [(f64, f64); L] {
+    let mut a = [1.0f64; L];
+    let mut b = m1.map(f64::sqrt);
+    let mut sum = m1.map(|m| 0.5 * (1.0 - m));
+    let mut active = [true; L];
+    let mut pow2 = 0.5;
+    for _ in 0..40 {
+        pow2 *= 2.0;
+        let mut any = false;
+        for l in 0..L {
+            let c = 0.5 * (a[l] - b[l]);
+            let a_next = 0.5 * (a[l] + b[l]);
+            let b_next = (a[l] * b[l]).sqrt();
+            let s = sum[l] + pow2 * c * c;
+            if active[l] {
+                a[l] = a_next;
+                b[l] = b_next;
+                sum[l] = s;
+                active[l] = !(c.abs() <= 1e-17 * a_next);
+                any |= active[l];
+            }
+        }
+        if !any {
+            break;
+        }
+    }
+    std::array::from_fn(|l| {
+        let k = FRAC_PI_2 / a[l];
+        (k, k * (1.0 - sum[l]))
+    })
+}
+
 /// Log series in `q = m1` (DLMF 19.12.1-2) with `L = ln(1/k') = -ln(q)/2`:
 /// `K = sum a_n q^n (L + d_n)`, `E = 1 + (1/2) sum b_n q^(n+1) (L + d_n - 1/((2n+1)(2n+2)))`,
 /// `a_n = ((1/2)_n/n!)^2`, `b_n = (1/2)_n (3/2)_n / ((2)_n n!)`,
@@ -82,6 +117,21 @@ pub fn ellip_ke_comp(m1: f64) -> (f64, f64) {
     } else {
         agm_ke(m1)
     }
+}
+
+/// [`ellip_ke_comp`] of `L` parameters at once, bit for bit (the AGM
+/// lanes together, their square roots in flight at once; the other cases
+/// one by one).
+pub(crate) fn ellip_ke_comp_lanes<const L: usize>(m1: &[f64; L]) -> [(f64, f64); L] {
+    let agm = |m: f64| m >= SERIES_BELOW;
+    // lanes outside the AGM's range run it at m1 = 1 and are replaced
+    let mut out = agm_ke_lanes(&m1.map(|m| if agm(m) { m } else { 1.0 }));
+    for (o, &m) in out.iter_mut().zip(m1) {
+        if !agm(m) {
+            *o = ellip_ke_comp(m);
+        }
+    }
+    out
 }
 
 /// `(K(m), E(m))` for `m <= 1`; NaN for `m > 1` or NaN.

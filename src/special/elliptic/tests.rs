@@ -93,6 +93,36 @@ fn special_values_and_bad_input() {
     assert!(ellip_k_comp(-1e-300).is_nan());
 }
 
+/// The lanes give the scalar function's bits: both methods, the switch
+/// between them, the ends and bad input.
+#[test]
+fn lanes_are_the_scalar_bits() {
+    let mut m1s: Vec<f64> = rows().iter().map(|r| r.m1).collect();
+    m1s.extend([
+        0.0,
+        0.1,
+        0.1 - 1e-17,
+        1.0,
+        3.5,
+        1e300,
+        -1.0,
+        f64::NAN,
+        1e-300,
+    ]);
+    m1s.extend((0..400).map(|i| (i as f64 * 0.37).sin().abs() * 1.2));
+    let mut compared = 0;
+    for chunk in m1s.chunks(4).filter(|c| c.len() == 4) {
+        let m1: [f64; 4] = chunk.try_into().unwrap();
+        for (got, &m) in ellip_ke_comp_lanes(&m1).iter().zip(&m1) {
+            let want = ellip_ke_comp(m);
+            assert_eq!(got.0.to_bits(), want.0.to_bits(), "K at m1 = {m}");
+            assert_eq!(got.1.to_bits(), want.1.to_bits(), "E at m1 = {m}");
+            compared += 1;
+        }
+    }
+    assert!(compared > 400, "{compared}");
+}
+
 proptest! {
     /// Legendre's relation `E K' + E' K - K K' = pi/2` (DLMF 19.7.1) couples the
     /// two branches of the implementation (m and m1 on opposite sides of 0.1).

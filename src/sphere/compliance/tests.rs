@@ -123,3 +123,18 @@ fn load_weights_integrate_linear_pressure_exactly() {
     let s: f64 = r.iter().zip(&w).map(|(x, w)| w * (1.0 - x / 2.0)).sum();
     assert!((s - 2.0 / 3.0).abs() < 1e-15);
 }
+
+/// The four-radius disc gives the one-radius bits on both branches, at the
+/// centre, at `s = r` and where the elliptic integrals switch method.
+#[test]
+fn disc_lanes_are_the_scalar_bits() {
+    let r = 1.3;
+    let mut s: Vec<f64> = vec![0.0, -1.0, r, r * (1.0 - 0.1f64).sqrt(), 1e-9, 1e3];
+    s.extend((0..398).map(|i| 0.013 * i as f64));
+    for chunk in s.chunks(4).filter(|c| c.len() == 4) {
+        let four: [f64; 4] = chunk.try_into().unwrap();
+        for (got, &si) in disc_lanes(r, &four).iter().zip(&four) {
+            assert_eq!(got.to_bits(), disc(r, si).to_bits(), "s = {si}");
+        }
+    }
+}
