@@ -62,13 +62,24 @@ fn selfaffine() -> HeightMap {
     npy::parse(&std::fs::read("examples/data/selfaffine-256.npy").unwrap()).unwrap()
 }
 
-#[test]
-fn rough_map_matches_its_converged_reference_and_gap_control_agrees() {
+/// The shipped map's stored problem and converged answer: pixel size (m),
+/// mean pressure (Pa), area fraction and mean gap (m) at tolerance 1e-12.
+fn rough_reference() -> (f64, f64, f64, f64) {
     let r = reference();
     let rough = &r["rough"];
-    let dx = rough["pixel_size_m"].as_f64().unwrap();
-    let p = rough["pressure_Pa"].as_f64().unwrap();
     let best = rough["by_tolerance"].as_array().unwrap().last().unwrap();
+    let f = |v: &Value, k: &str| v[k].as_f64().unwrap();
+    (
+        f(rough, "pixel_size_m"),
+        f(rough, "pressure_Pa"),
+        f(best, "area_fraction"),
+        f(best, "mean_gap_m"),
+    )
+}
+
+#[test]
+fn rough_map_matches_its_converged_reference_and_gap_control_agrees() {
+    let (dx, p, a_ref, g_ref) = rough_reference();
     let map = selfaffine();
     let opts = Options {
         tolerance: 1e-8,
@@ -76,8 +87,6 @@ fn rough_map_matches_its_converged_reference_and_gap_control_agrees() {
     };
     let prob = Problem::new(&map, dx, 1e9, true, &opts).unwrap();
     let s = prob.solve_pressure(p, &opts, None).unwrap();
-    let a_ref = best["area_fraction"].as_f64().unwrap();
-    let g_ref = best["mean_gap_m"].as_f64().unwrap();
     // Area stable to 1e-5 between tolerance 1e-8 and the 1e-12 reference.
     assert!(
         (s.area_fraction() - a_ref).abs() < 1e-5,
@@ -111,11 +120,7 @@ fn rough_map_matches_its_converged_reference_and_gap_control_agrees() {
 /// 1e-9 at tolerance 1e-12).
 #[test]
 fn the_preconditioned_iteration_needs_a_third_of_the_plain_iterations() {
-    let r = reference();
-    let rough = &r["rough"];
-    let dx = rough["pixel_size_m"].as_f64().unwrap();
-    let p = rough["pressure_Pa"].as_f64().unwrap();
-    let best = rough["by_tolerance"].as_array().unwrap().last().unwrap();
+    let (dx, p, a_ref, g_ref) = rough_reference();
     let map = selfaffine();
     let solve = |tolerance: f64| {
         let opts = Options {
@@ -129,8 +134,6 @@ fn the_preconditioned_iteration_needs_a_third_of_the_plain_iterations() {
     assert!(s.iterations <= 45, "{} iterations", s.iterations);
     let t = solve(1e-12);
     assert!(t.iterations <= 60, "{} iterations", t.iterations);
-    let a_ref = best["area_fraction"].as_f64().unwrap();
-    let g_ref = best["mean_gap_m"].as_f64().unwrap();
     assert_eq!(t.area_fraction(), a_ref);
     assert!(
         (t.mean_gap / g_ref - 1.0).abs() < 1e-9,
