@@ -99,15 +99,17 @@ def error(answer, ref, size):
         answer["mean_gap_m"] - ref["mean_gap_m"]) / ref["mean_gap_m"]
 
 
-def side_by_side(path, tols):
+def side_by_side(path, tols, tamaas_reference=True):
     """Each tolerance: both solvers in turns, their answers against a 1e-12 reference (asperity's,
-    checked against Tamaas' own at 1e-12 to 1e-9), and, where asperity's mean gap is further from it
+    checked against Tamaas' own at 1e-12 to 1e-9 where `tamaas_reference`: at 1024^2 Tamaas' 1e-12
+    solve takes longer than this script should), and, where asperity's mean gap is further from it
     than Tamaas', asperity again at tighter tolerances until it is not ("matched")."""
     surface = np.load(path)
     ref = asperity_solve(path, 1e-12)
-    _, t_area, t_gap = tamaas_solve(surface, 1e-12)
-    assert abs(t_area - ref["area_fraction"]) * surface.size < 0.5, (t_area, ref)
-    assert abs(t_gap - ref["mean_gap_m"]) / ref["mean_gap_m"] < 1e-9, (t_gap, ref)
+    if tamaas_reference:
+        _, t_area, t_gap = tamaas_solve(surface, 1e-12)
+        assert abs(t_area - ref["area_fraction"]) * surface.size < 0.5, (t_area, ref)
+        assert abs(t_gap - ref["mean_gap_m"]) / ref["mean_gap_m"] < 1e-9, (t_gap, ref)
     rows = []
     for tol in tols:
         t_cpu, a_cpu = [], []
@@ -196,7 +198,7 @@ result = {
     "pressure_Pa": P,
     "threads": 1,
     "reps": REPS,
-    "side_by_side": side_by_side(m256, [1e-6, 1e-8, 1e-12]) + side_by_side(map_1024(), [1e-8]),
+    "side_by_side": side_by_side(m256, [1e-6, 1e-8, 1e-12]) + side_by_side(map_1024(), [1e-8], tamaas_reference=False),
     "adhesion": adhesion(m256),
 }
 print(json.dumps(result, indent=1))

@@ -54,7 +54,7 @@ mod roughness;
 pub use clusters::{Cluster, SizeBin};
 pub use gap_control::Exponential;
 
-use crate::error::{positive, Error, Result};
+use crate::error::{positive, Allowed, Error, Result};
 use crate::numeric::roots::try_brent;
 use crate::surface::{HeightMap, Plane};
 use operator::HalfSpace;
@@ -299,13 +299,31 @@ pub struct Problem {
     hardness: Option<f64>,
 }
 
+/// Pixel sizes (m) of any measured or synthetic map, 1 pm to 1 km: named
+/// when a modulus is out of [`modulus_range`] because the pixel is absurd.
+const PIXEL_SIZES: Allowed = Allowed::open(1e-12, 1e3);
+
+/// The contact moduli (Pa) whose Fourier kernels stay far inside the
+/// normal range of f64 on a `rows x cols` map of `dx x dy` pixels: the
+/// compliance `~ dx/(E* N)` and the stiffness `~ E* L/N` (`N` the FFT
+/// size, `L` the map's side) between 1e-290 and 1e290, so
+/// `E*` in `(1e-290 L N, 1e290 min(dx, dy)/N)`. Beyond it the kernels
+/// would be subnormal (digits lost: the iterations stall at their cap)
+/// or overflow; every physical modulus is far inside.
+fn modulus_range(rows: usize, cols: usize, (dx, dy): (f64, f64), periodic: bool) -> Allowed {
+    let n = (rows * cols) as f64 * if periodic { 1.0 } else { 4.0 };
+    let side = (cols as f64 * dx).max(rows as f64 * dy);
+    Allowed::open(1e-290 * side * n, 1e290 * dx.min(dy) / n)
+}
+
 impl Problem {
     /// The problem for `map` (heights in m, mean plane removed here, only
     /// the mean when `periodic`), square pixels of `pixel_size` m and
     /// contact modulus `contact_modulus` Pa.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] naming `pixel_size` or `contact_modulus`;
+    /// [`Error::OutOfRange`] naming `pixel_size` or `contact_modulus` (also
+    /// beyond the range whose kernels f64 holds, `modulus_range`);
     /// [`Error::Invalid`] named `topography` when the map is flat or when
     /// [`memory_estimate`] exceeds `options.memory_limit` (the message gives
     /// both).
@@ -345,6 +363,13 @@ impl Problem {
         positive("pixel_size_y", pixel_size_y)?;
         positive("contact_modulus", contact_modulus)?;
         let (rows, cols) = (map.rows(), map.cols());
+        let moduli = modulus_range(rows, cols, (pixel_size, pixel_size_y), periodic);
+        if !moduli.contains(contact_modulus) {
+            // The product decides; an absurd pixel size is the one named.
+            PIXEL_SIZES.check("pixel_size", pixel_size)?;
+            PIXEL_SIZES.check("pixel_size_y", pixel_size_y)?;
+            moduli.check("contact_modulus", contact_modulus)?;
+        }
         let need = memory_estimate(rows, cols, periodic);
         if need > options.memory_limit {
             return Err(Error::invalid(
