@@ -127,7 +127,18 @@ pub fn watched<T: Send>(
                     Ok(()) | Err(mpsc::RecvTimeoutError::Disconnected) => true,
                     Err(mpsc::RecvTimeoutError::Timeout) => false,
                 };
-                let polled = Python::attach(|py| py.check_signals().and_then(|()| tick(py)));
+                // Once an error is raised the work is cancelled and `tick`
+                // (a user's callback) is not called again.
+                let polled =
+                    Python::attach(|py| {
+                        py.check_signals().and_then(|()| {
+                            if raised.is_none() {
+                                tick(py)
+                            } else {
+                                Ok(())
+                            }
+                        })
+                    });
                 if let Err(e) = polled {
                     token.cancel();
                     raised.get_or_insert(e);
