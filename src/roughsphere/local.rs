@@ -28,12 +28,15 @@ use crate::gw::{Accuracy, GwModel};
 use crate::loading::{History, LoadingModel, Observables};
 use std::sync::{Arc, Mutex};
 
-/// Tolerance of the tables relative to the solver's: 1 % of it (the local
-/// law's error then adds at most 1 % to the load's), within
-/// [`TABLE_TOL_RANGE`].
-const TABLE_TOL_FRACTION: f64 = 0.01;
+/// Tolerance of the tables relative to the solver's: 10 % of it (the local
+/// law's error then adds at most 10 % to the load's), within
+/// [`TABLE_TOL_RANGE`]. On the plastic bump at rtol 1e-6 (tables at 1e-7)
+/// the outputs are within 1.5e-10 of those with tables at 1e-9 (the pull-off
+/// separation, a flat minimum's argument, within 6.9e-7), for 0.75x the CPU
+/// time of tables at 1e-8.
+const TABLE_TOL_FRACTION: f64 = 0.1;
 /// Bounds of the tables' relative tolerance (against `|p| + 1e-4 |p(0)|`).
-const TABLE_TOL_RANGE: (f64, f64) = (1e-11, 1e-8);
+const TABLE_TOL_RANGE: (f64, f64) = (1e-11, 1e-7);
 /// The model's quadrature is asked this much better than the tables, so
 /// that panels are not split chasing its noise.
 const QUAD_MARGIN: f64 = 0.01;

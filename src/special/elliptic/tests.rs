@@ -123,6 +123,25 @@ fn lanes_are_the_scalar_bits() {
     assert!(compared > 400, "{compared}");
 }
 
+/// The AGM stops once `c` is within rounding of `a`: at most 7 steps over
+/// its range `m1` in [0.1, 1] (parameters whose `a` and `b` stay an ulp
+/// apart ran to the 40-step cap when it asked `|c| <= 1e-17 a`), and with
+/// the same bits as running on to that cap.
+#[test]
+fn agm_stops_at_rounding_with_the_bits_of_running_on() {
+    let mut most = 0;
+    for i in 0..=20_000 {
+        let m1 = 0.1 + 0.9 * (i as f64 / 20_000.0);
+        let (quick, steps) = agm_ke_steps(m1, AGM_DONE);
+        // `c = 0` exactly, or the 40-step cap
+        let (slow, _) = agm_ke_steps(m1, 0.0);
+        assert_eq!(quick.0.to_bits(), slow.0.to_bits(), "K at m1 = {m1}");
+        assert_eq!(quick.1.to_bits(), slow.1.to_bits(), "E at m1 = {m1}");
+        most = most.max(steps);
+    }
+    assert!(most <= 7, "{most} steps");
+}
+
 proptest! {
     /// Legendre's relation `E K' + E' K - K K' = pi/2` (DLMF 19.7.1) couples the
     /// two branches of the implementation (m and m1 on opposite sides of 0.1).
