@@ -38,20 +38,41 @@ impl std::ops::Deref for FileBytes {
 }
 
 /// The bytes of the file at `path`, mapped when it is a non-empty regular
-/// file (all its pages mapped at once: every reader reads the whole file).
+/// file: all its pages at once (every reader reads the whole file) when the
+/// file takes at most half the memory available, lazily otherwise, so that
+/// a reader refusing the map from its header touches no page (an 80 GB
+/// `.npy` was paged in, 16 s of system time and 22 GB resident, before its
+/// header was read and refused).
 ///
 /// # Errors
-/// The file cannot be opened or read.
+/// The file cannot be opened or read; it cannot be mapped and is larger
+/// than the memory available (`OutOfMemory`, naming both sizes).
 pub(crate) fn open(path: &Path) -> std::io::Result<FileBytes> {
     let mut file = std::fs::File::open(path)?;
     let meta = file.metadata()?;
+    let have = crate::study::memory::available();
+    let size = meta.len() as f64;
     if meta.is_file() && meta.len() > 0 {
+        let mut options = memmap2::MmapOptions::new();
+        if have.is_none_or(|have| size <= 0.5 * have) {
+            options.populate();
+        }
         // SAFETY: a private read-only mapping, read only as bytes or f64
         // (see the module's documentation for a file changed meanwhile).
-        let mapped = unsafe { memmap2::MmapOptions::new().populate().map(&file) };
+        let mapped = unsafe { options.map(&file) };
         if let Ok(m) = mapped {
             return Ok(FileBytes::Mapped(Arc::new(m)));
         }
+    }
+    if let Some(have) = have.filter(|&have| size > have) {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::OutOfMemory,
+            format!(
+                "the file's {:.1} GB cannot be mapped and exceed the {:.1} GB of memory available",
+                size / 1e9,
+                have / 1e9
+            ),
+        ));
     }
     let mut v = Vec::new();
     std::io::Read::read_to_end(&mut file, &mut v)?;

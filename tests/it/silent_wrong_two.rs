@@ -379,7 +379,12 @@ fn a_map_beyond_the_memory_is_refused_with_an_estimate() {
     f.set_len(bytes.len() as u64 + 8 * 100_000 * 100_000)
         .unwrap();
     drop(f);
+    // Refused from the header, no page of the 80 GB touched (it was paged
+    // in first: 16 s of system time, 22 GB resident).
+    let started = std::time::Instant::now();
     let (code, _, err) = run(&["surface", "huge.npy", "--pixel-size", "1e-8"], &dir);
+    let took = started.elapsed().as_secs_f64();
+    assert!(took < 5.0, "{took} s");
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("huge.npy"), "{err}");
     assert!(err.contains("160.0 GB"), "{err}");
