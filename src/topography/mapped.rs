@@ -13,7 +13,7 @@
 
 #![allow(unsafe_code)]
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::surface::{npy, HeightMap, HeightSource, Heights};
 use std::path::Path;
 use std::sync::Arc;
@@ -37,19 +37,22 @@ impl std::ops::Deref for FileBytes {
     }
 }
 
-/// The bytes of the file at `path`, mapped when it is a non-empty regular
-/// file: all its pages at once (every reader reads the whole file) when the
-/// file takes at most half the memory available, lazily otherwise, so that
-/// a reader refusing the map from its header touches no page (an 80 GB
-/// `.npy` was paged in, 16 s of system time and 22 GB resident, before its
-/// header was read and refused).
+/// The bytes of the file at `path` (named `shown` in errors), mapped when
+/// it is a non-empty regular file: all its pages at once (every reader
+/// reads the whole file) when the file takes at most half the memory
+/// available, lazily otherwise, so that a reader refusing the map from its
+/// header touches no page (an 80 GB `.npy` was paged in, 16 s of system
+/// time and 22 GB resident, before its header was read and refused).
 ///
 /// # Errors
-/// The file cannot be opened or read; it cannot be mapped and is larger
-/// than the memory available (`OutOfMemory`, naming both sizes).
-pub(crate) fn open(path: &Path) -> std::io::Result<FileBytes> {
-    let mut file = std::fs::File::open(path)?;
-    let meta = file.metadata()?;
+/// [`Error::Invalid`](crate::Error::Invalid) naming `shown` when the file
+/// cannot be opened or read; [`Error::OutOfMemory`](crate::Error::OutOfMemory)
+/// when it cannot be mapped and is larger than the memory available (it
+/// would be read whole).
+pub(crate) fn open(path: &Path, shown: &str) -> Result<FileBytes> {
+    let unreadable = |e: std::io::Error| Error::invalid(shown, format!("cannot read: {e}"));
+    let mut file = std::fs::File::open(path).map_err(unreadable)?;
+    let meta = file.metadata().map_err(unreadable)?;
     let have = crate::study::memory::available();
     let size = meta.len() as f64;
     if meta.is_file() && meta.len() > 0 {
@@ -65,17 +68,16 @@ pub(crate) fn open(path: &Path) -> std::io::Result<FileBytes> {
         }
     }
     if let Some(have) = have.filter(|&have| size > have) {
-        return Err(std::io::Error::new(
-            std::io::ErrorKind::OutOfMemory,
-            format!(
-                "the file's {:.1} GB cannot be mapped and exceed the {:.1} GB of memory available",
-                size / 1e9,
-                have / 1e9
-            ),
-        ));
+        return Err(Error::OutOfMemory {
+            what: shown.into(),
+            doing: "reading the file, which cannot be memory-mapped, into memory".into(),
+            needed: size,
+            available: have,
+            hint: String::new(),
+        });
     }
     let mut v = Vec::new();
-    std::io::Read::read_to_end(&mut file, &mut v)?;
+    std::io::Read::read_to_end(&mut file, &mut v).map_err(unreadable)?;
     Ok(FileBytes::Read(v))
 }
 

@@ -570,8 +570,7 @@ pub fn read(path: &Path, channel: &Channel) -> Result<Measured> {
     if format == Format::Text {
         crate::study::memory::check_map(path)?;
     }
-    let bytes =
-        mapped::open(path).map_err(|e| Error::invalid(&shown, format!("cannot read: {e}")))?;
+    let bytes = mapped::open(path, &shown)?;
     read_bytes(&bytes, format, channel).map_err(|e| match e.field() {
         Some("topography") => e.renamed(&shown),
         _ => e,
@@ -588,8 +587,7 @@ pub fn read(path: &Path, channel: &Channel) -> Result<Measured> {
 /// As [`read`].
 pub fn read_npy(path: &Path) -> Result<HeightMap> {
     let shown = path.display().to_string();
-    let bytes =
-        mapped::open(path).map_err(|e| Error::invalid(&shown, format!("cannot read: {e}")))?;
+    let bytes = mapped::open(path, &shown)?;
     mapped::npy_map(&bytes).map_err(|e| match e.field() {
         Some("topography") => e.renamed(&shown),
         _ => e,

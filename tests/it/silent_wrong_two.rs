@@ -399,6 +399,22 @@ fn a_map_beyond_the_memory_is_refused_with_an_estimate() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("surface.topography"), "{err}");
     assert!(err.contains("240.0 GB"), "{err}");
+    // Under a 4 GB address-space limit the file cannot be mapped: it is
+    // refused with its size, not read whole (it was: an abort on allocation).
+    let out = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v 4000000 && exec '{}' surface huge.npy --pixel-size 1e-8",
+            env!("CARGO_BIN_EXE_asperity")
+        ))
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("huge.npy"), "{err}");
+    assert!(err.contains("cannot be memory-mapped"), "{err}");
+    assert!(err.contains("80.0 GB"), "{err}");
     std::fs::remove_file(&path).unwrap();
 }
 
